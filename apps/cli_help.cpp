@@ -1,0 +1,158 @@
+#include "apps/cli_help.hpp"
+
+#include "generators/models.hpp"
+
+#ifndef TETSMOOTH_VERSION
+#error "TETSMOOTH_VERSION is set by apps/CMakeLists.txt from the project version"
+#endif
+
+namespace tetsmooth::cli {
+namespace {
+
+const char* const kExitCodes = R"(Exit status:
+  0  success
+  1  internal error (a bug, or out of memory)
+  2  usage error: unknown option, bad value, options that do not fit together
+  3  bad input: unreadable or malformed mesh file, invalid mesh
+     (node index out of range, non-finite coordinate, no tets)
+  4  output error: an output file or report cannot be written
+     (no partial file is ever left behind)
+  5  device error: --device cuda without a usable GPU, or CUDA support not built
+)";
+
+const char* const kFormats = R"(Formats (chosen from the file name; --format/--output-format override):
+  .node/.ele  tetgen        TetGen node + element files (give either name, or the base name)
+  .vtu        vtu           VTK XML UnstructuredGrid
+  .vtk        vtk           legacy VTK, ASCII
+  .msh        msh41         Gmsh 4.1 ASCII (reading accepts 2.2 and 4.1, ASCII or binary)
+              msh41-binary  Gmsh 4.1 binary      msh22  Gmsh 2.2 ASCII
+  .mesh       medit         Medit ASCII
+  .tsm        tsm           tetsmooth binary cache
+)";
+
+std::string model_list() {
+  std::string list;
+  for (const std::string& name : paper_model_names()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
+std::string top_level() {
+  return std::string(R"(tetsmooth - adaptive Laplacian smoothing of tetrahedral meshes, on the GPU or CPU
+
+Usage:
+  tetsmooth generate MODEL -o OUT [--seed N]       build a test mesh
+  tetsmooth smooth IN -o OUT [options]             improve a mesh, report quality before/after
+  tetsmooth quality IN [--json] [--worst K]        quality statistics and the worst tets
+  tetsmooth convert IN OUT                         change the file format
+  tetsmooth help COMMAND | COMMAND --help          options of one command
+  tetsmooth --version
+
+Only interior nodes move; boundary nodes and nodes the file pins stay put, so
+the geometry and the boundary surface are unchanged. Quality is the radius
+ratio q = 3 r_in / R: 1 for the regular tet, near 0 for a sliver, negative for
+an inverted tet. Reports and messages go to stderr; `quality` writes to stdout.
+
+)") + kFormats + "\n" + kExitCodes;
+}
+
+std::string generate_help() {
+  return "Usage: tetsmooth generate MODEL -o OUT [--seed N] [--output-format F] [-q]\n\n"
+         "Builds a test mesh and writes it to OUT.\n\n"
+         "MODEL is one of the paper's models (" +
+         model_list() +
+         ", meshed by TetGen)\nor lattice-N: N^3 jittered cubes of 6 tets each, (N+1)^3 nodes.\n\n"
+         "Options:\n"
+         "  -o, --output OUT       where to write the mesh (format from the extension)\n"
+         "  --seed N               random seed; the same seed gives the same mesh (default 1)\n"
+         "  --output-format F      write format F whatever OUT's extension\n"
+         "  -q, --quiet            print nothing but errors\n\n" +
+         kExitCodes;
+}
+
+std::string smooth_help() {
+  return std::string(R"(Usage: tetsmooth smooth IN -o OUT [options]
+
+Moves every interior node towards the centroid of its neighbours. The adaptive
+method keeps a move only if it raises the worst quality of the node's tets, so
+it never makes the mesh worse; the ordinary method always moves and can invert
+tets in concave regions. Prints the quality before and after on stderr.
+
+Options:
+  -o, --output OUT          where to write the smoothed mesh (required)
+  --method adaptive|ordinary   (default adaptive)
+  --form A|B                A: every node from the previous sweep's positions (Jacobi);
+                            B: in place, later nodes see earlier moves (default B, converges faster)
+  --device auto|cpu|cuda    auto picks CUDA when a GPU is usable, else the CPU (default auto)
+  --threads N               CPU threads, 0 = all cores (default 0). --threads 1 is the serial
+                            reference in natural node order; other counts visit nodes colour by
+                            colour, so the result does not depend on the thread count
+  --strategy coloured|multiblock|singleblock
+                            CUDA: how sweeps are launched (default coloured)
+  --layout aos|soa          CUDA: coordinates as xyz triples or three arrays (default aos)
+  --precision float|double  arithmetic of the smoother (default double)
+  --max-iter N              at most N sweeps (default 100)
+  --tol X                   stop when no node moves farther than X times the mean edge
+                            length in a sweep (default 1e-4)
+  --report FILE.json        write options, per-sweep counts, timings and quality before/after
+  --format F                read IN as format F
+  --output-format F         write OUT as format F
+  -q, --quiet               print nothing but errors
+
+VTU, VTK and MSH outputs carry a per-tet field "quality" (radius ratio) and a
+per-node field "boundary" (1 on the boundary surface) for ParaView or Gmsh.
+
+)") + kFormats + "\n" + kExitCodes;
+}
+
+std::string quality_help() {
+  return std::string(R"(Usage: tetsmooth quality IN [--json] [--worst K] [--format F] [-q]
+
+Prints the radius ratio q (min/mean/max, a 10-bin histogram), the number of
+tets with q < 0.1, inverted and degenerate tets, the smallest dihedral angle,
+the mean of the mean-ratio metric, and the K worst tets with their nodes.
+Tet and node indices are 0-based, in file order, whatever the file numbers.
+
+Options:
+  --json            print JSON instead of text (to stdout)
+  --worst K         list the K worst tets (default 10, 0 for none)
+  --format F        read IN as format F
+  -q, --quiet       no warnings on stderr
+
+)") + kExitCodes;
+}
+
+std::string convert_help() {
+  return std::string(R"(Usage: tetsmooth convert IN OUT [--format F] [--output-format F] [-q]
+
+Reads IN and writes it to OUT in the format OUT's extension names. Node
+coordinates and tets are kept exactly; what else survives depends on the
+target format (see the README's table of formats).
+
+Options:
+  --format F          read IN as format F
+  --output-format F   write OUT as format F
+  -q, --quiet         print nothing but errors
+
+)") + kFormats + "\n" + kExitCodes;
+}
+
+}  // namespace
+
+std::string help_text(const std::string& command) {
+  if (command == "generate") return generate_help();
+  if (command == "smooth") return smooth_help();
+  if (command == "quality") return quality_help();
+  if (command == "convert") return convert_help();
+  return top_level();
+}
+
+std::string version_text() {
+#ifdef TETSMOOTH_HAVE_CUDA
+  const char* cuda = "built";
+#else
+  const char* cuda = "not built";
+#endif
+  return std::string("tetsmooth ") + TETSMOOTH_VERSION + " (CUDA backend " + cuda + ")\n";
+}
+
+}  // namespace tetsmooth::cli

@@ -1,0 +1,22 @@
+#include "apps/input_warnings.hpp"
+
+#include "apps/report_text.hpp"
+
+namespace tetsmooth::cli {
+
+std::vector<std::string> input_warnings(const ValidationReport& report, const std::string& source,
+                                        const std::string& inverted_note) {
+  std::vector<std::string> warnings;
+  if (report.inverted > 0)
+    warnings.push_back(source + ": " + with_thousands(report.inverted) + " inverted tets (negative volume)" +
+                       (inverted_note.empty() ? "" : "; " + inverted_note));
+  if (report.degenerate > 0)
+    warnings.push_back(source + ": " + with_thousands(report.degenerate) +
+                       " degenerate tets (zero volume or a repeated node)");
+  if (report.unreferenced > 0)
+    warnings.push_back(source + ": " + with_thousands(report.unreferenced) +
+                       " nodes belong to no tet; they are kept as they are");
+  return warnings;
+}
+
+}  // namespace tetsmooth::cli

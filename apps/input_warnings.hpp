@@ -1,0 +1,17 @@
+#pragma once
+// Warnings about a mesh that was read successfully but deserves a second
+// look: these never stop a command.
+#include <string>
+#include <vector>
+
+#include "mesh/validate.hpp"
+
+namespace tetsmooth::cli {
+
+// One message per kind of problem (inverted, degenerate, unreferenced),
+// naming `source` and the count. `inverted_note` is appended to the
+// inverted-tets message when not empty.
+std::vector<std::string> input_warnings(const ValidationReport& report, const std::string& source,
+                                        const std::string& inverted_note = "");
+
+}  // namespace tetsmooth::cli

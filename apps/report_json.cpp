@@ -1,0 +1,102 @@
+#include "apps/report_json.hpp"
+
+#include "apps/option_names.hpp"
+#include "mesh/io/atomic_file.hpp"
+
+namespace tetsmooth::cli {
+namespace {
+
+nlohmann::json mesh_counts_json(const ValidationReport& v) {
+  return {{"nodes", v.nodes},
+          {"tets", v.tets},
+          {"inverted_tets", v.inverted},
+          {"degenerate_tets", v.degenerate},
+          {"unreferenced_nodes", v.unreferenced}};
+}
+
+nlohmann::json options_json(const SmoothCommand& c) {
+  const SmoothOptions& o = c.options;
+  return {{"method", option_name(o.method)},
+          {"form", option_name(o.form)},
+          {"strategy", option_name(o.strategy)},
+          {"layout", option_name(o.layout)},
+          {"device", option_name(c.device)},
+          {"threads", o.threads},
+          {"precision", option_name(o.precision)},
+          {"cpu_ordering", option_name(o.ordering)},
+          {"max_iterations", o.max_iterations},
+          {"tolerance", o.tolerance}};
+}
+
+}  // namespace
+
+nlohmann::json summary_json(const QualitySummary& s) {
+  nlohmann::json lower_edges = nlohmann::json::array();
+  for (int bin = 0; bin < 10; ++bin) lower_edges.push_back(bin / 10.0);
+  return {{"tets", s.tets},
+          {"min", s.min},
+          {"mean", s.mean},
+          {"max", s.max},
+          {"min_movable", s.min_movable},
+          {"below_0_1", s.below_0_1},
+          {"inverted", s.inverted},
+          {"degenerate", s.degenerate},
+          {"min_dihedral_deg", s.min_dihedral_deg},
+          {"mean_ratio_mean", s.mean_ratio_mean},
+          {"histogram", {{"lower_edges", lower_edges}, {"counts", s.histogram}}}};
+}
+
+nlohmann::json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record) {
+  const SmoothResult& r = record.result;
+  nlohmann::json input = mesh_counts_json(record.input);
+  input["path"] = command.input;
+  input["format"] = format_name(record.input_format);
+  return {{"tool", "tetsmooth"},
+          {"version", TETSMOOTH_VERSION},
+          {"command", "smooth"},
+          {"input", input},
+          {"output", {{"path", command.output}, {"format", format_name(record.output_format)}}},
+          {"options", options_json(command)},
+          {"device", option_name(record.device)},
+          {"backend", r.backend},
+          {"sweeps", r.sweeps},
+          {"stop_reason", to_string(r.stop)},
+          {"accepted_per_sweep", r.accepted_per_sweep},
+          {"max_displacement_per_sweep", r.max_displacement_per_sweep},
+          {"reverted_moves", r.reverted_moves},
+          {"colours", r.num_colours},
+          {"movable_nodes", r.movable_nodes},
+          {"mean_edge_length", r.mean_edge_length},
+          {"timings_ms",
+           {{"read", record.read_ms},
+            {"topology", r.topology_ms},
+            {"colouring", r.colouring_ms},
+            {"smoothing", r.smoothing_ms},
+            {"write", record.write_ms},
+            {"total", record.total_ms}}},
+          {"quality", {{"before", summary_json(r.before)}, {"after", summary_json(r.after)}}},
+          {"warnings", record.warnings}};
+}
+
+nlohmann::json quality_report_json(const QualityCommand& command, const QualityRecord& record) {
+  nlohmann::json worst = nlohmann::json::array();
+  for (const RankedTet& t : record.worst) worst.push_back({{"tet", t.tet}, {"quality", t.quality}, {"nodes", t.nodes}});
+  nlohmann::json input = mesh_counts_json(record.mesh);
+  input["path"] = command.input;
+  input["format"] = format_name(record.format);
+  input["boundary_nodes"] = record.boundary_nodes;
+  input["movable_nodes"] = record.movable_nodes;
+  return {{"tool", "tetsmooth"},
+          {"version", TETSMOOTH_VERSION},
+          {"command", "quality"},
+          {"input", input},
+          {"index_base", 0},
+          {"quality", summary_json(record.summary)},
+          {"worst_tets", worst}};
+}
+
+void write_json_file(const nlohmann::json& doc, const std::string& path) {
+  write_atomically(path, [&](std::ostream& os) { os << doc.dump(2) << '\n'; });
+}
+
+}  // namespace tetsmooth::cli

@@ -1,0 +1,42 @@
+#pragma once
+// Reports for programs: the same content as the text reports, as JSON.
+// Readers should ignore fields they do not know; fields are only added.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/command_line.hpp"
+#include "apps/worst_tets.hpp"
+#include "kernels/smooth_options.hpp"
+#include "mesh/quality_summary.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth::cli {
+
+// Everything a smooth run did besides the smoother's own result.
+struct SmoothRecord {
+  MeshFormat input_format = MeshFormat::Auto, output_format = MeshFormat::Auto;
+  ValidationReport input;   // counts of the mesh as read
+  Device device = Device::Cpu;  // the device that ran (never Auto)
+  SmoothResult result;
+  double read_ms = 0, write_ms = 0, total_ms = 0;
+  std::vector<std::string> warnings;
+};
+
+struct QualityRecord {
+  MeshFormat format = MeshFormat::Auto;
+  ValidationReport mesh;
+  std::size_t boundary_nodes = 0, movable_nodes = 0;
+  QualitySummary summary;
+  std::vector<RankedTet> worst;
+};
+
+nlohmann::json summary_json(const QualitySummary& s);
+nlohmann::json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record);
+nlohmann::json quality_report_json(const QualityCommand& command, const QualityRecord& record);
+
+// Pretty-printed JSON with a final newline, written atomically to `path`.
+void write_json_file(const nlohmann::json& doc, const std::string& path);
+
+}  // namespace tetsmooth::cli

@@ -1,0 +1,24 @@
+// tetsmooth convert: read in one format, write in another.
+#include "apps/commands.hpp"
+#include "apps/input_warnings.hpp"
+#include "apps/output_check.hpp"
+#include "apps/output_fields.hpp"
+#include "apps/report_text.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth::cli {
+
+void run_convert(const ConvertCommand& c, const Console& console) {
+  const MeshFormat input_format = format_from_path(c.input, c.input_format);
+  const MeshFormat output_format = format_from_path(c.output, c.output_format);
+  check_output_location(c.output);
+  const TetMesh mesh = read_mesh(c.input, input_format);
+  for (const std::string& w : input_warnings(validate_mesh(mesh, c.input), c.input)) console.warn(w);
+  write_mesh_with_fields(mesh, c.output, output_format);
+  console.note("wrote " + c.output + ": " + with_thousands(mesh.num_nodes()) + " nodes, " +
+               with_thousands(mesh.num_tets()) + " tets (" + format_name(input_format) + " -> " +
+               format_name(output_format) + ")");
+}
+
+}  // namespace tetsmooth::cli

@@ -1,0 +1,44 @@
+// tetsmooth quality: statistics and the worst tets of one mesh.
+#include <algorithm>
+
+#include "apps/commands.hpp"
+#include "apps/input_warnings.hpp"
+#include "apps/report_json.hpp"
+#include "apps/report_text.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/topology.hpp"
+
+namespace tetsmooth::cli {
+
+void run_quality(const QualityCommand& c, const Console& console) {
+  QualityRecord record;
+  record.format = format_from_path(c.input, c.input_format);
+  const TetMesh mesh = read_mesh(c.input, record.format);
+  record.mesh = validate_mesh(mesh, c.input);
+  for (const std::string& w : input_warnings(record.mesh, c.input)) console.warn(w);
+
+  // The topology tells which tets smoothing could change (min_movable).
+  const Topology topology = build_topology(mesh);
+  record.boundary_nodes = static_cast<std::size_t>(std::count(topology.boundary.begin(), topology.boundary.end(), 1));
+  record.movable_nodes = static_cast<std::size_t>(std::count(topology.movable.begin(), topology.movable.end(), 1));
+  record.summary = summarize_quality(mesh, topology.movable);
+  record.worst = worst_tets(mesh, tet_qualities(mesh), static_cast<std::size_t>(c.worst));
+
+  std::ostream& os = console.out;
+  if (c.json) {
+    os << quality_report_json(c, record).dump(2) << '\n';
+    return;
+  }
+  os << c.input << ": " << with_thousands(record.mesh.nodes) << " nodes (" << with_thousands(record.boundary_nodes)
+     << " on the boundary, " << with_thousands(record.movable_nodes) << " movable), "
+     << with_thousands(record.mesh.tets) << " tets (" << format_name(record.format) << ")\n\n";
+  write_quality_table(os, {{"", &record.summary}});
+  os << '\n';
+  write_histogram(os, {{"", &record.summary}});
+  if (!record.worst.empty()) {
+    os << '\n';
+    write_worst_tets(os, record.worst);
+  }
+}
+
+}  // namespace tetsmooth::cli

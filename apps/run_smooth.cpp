@@ -1,0 +1,145 @@
+// tetsmooth smooth: read, smooth, report before/after, write.
+#include <chrono>
+#include <sstream>
+
+#include "apps/commands.hpp"
+#include "apps/input_warnings.hpp"
+#include "apps/option_names.hpp"
+#include "apps/output_check.hpp"
+#include "apps/output_fields.hpp"
+#include "apps/progress_line.hpp"
+#include "apps/report_json.hpp"
+#include "apps/report_text.hpp"
+#include "kernels/smoother.hpp"
+#include "mesh/errors.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth::cli {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// Auto becomes a concrete device here, before any work, so the run can say
+// which one it used and why.
+Device choose_device(Device requested, std::string& why_not_cuda) {
+  if (requested == Device::Cpu) return Device::Cpu;
+  const bool usable = cuda_available(&why_not_cuda);
+  if (requested == Device::Cuda && !usable) throw DeviceError("--device cuda: " + why_not_cuda);
+  return usable ? Device::Cuda : Device::Cpu;
+}
+
+std::vector<std::string> ignored_option_warnings(const SmoothCommand& c, Device device) {
+  std::vector<std::string> warnings;
+  if (device == Device::Cuda && c.threads_given) warnings.emplace_back("--threads applies to the CPU only; ignored on CUDA");
+  if (device == Device::Cpu) {
+    if (c.strategy_given) warnings.emplace_back("--strategy selects a CUDA launch scheme; ignored on the CPU");
+    if (c.layout_given) warnings.emplace_back("--layout selects the CUDA data layout; ignored on the CPU");
+    if (c.options.precision == Precision::Float)
+      warnings.emplace_back("--precision float is a CUDA variant; the CPU computes in double");
+  }
+  return warnings;
+}
+
+std::string device_line(const SmoothCommand& c, Device device, const std::string& why_not_cuda) {
+  const SmoothOptions& o = c.options;
+  std::ostringstream s;
+  s << "smoothing: " << option_name(o.method) << ", form " << option_name(o.form) << ", on ";
+  if (device == Device::Cuda) {
+    s << "cuda (strategy " << option_name(o.strategy) << ", layout " << option_name(o.layout) << ", "
+      << option_name(o.precision) << ")";
+  } else {
+    s << "cpu (" << (o.threads == 0 ? std::string("all cores") : std::to_string(o.threads) + " thread(s)");
+    if (o.form == Form::B) s << ", " << option_name(o.ordering) << " node order";
+    s << ")";
+    if (c.device == Device::Auto) s << "; no GPU used: " << why_not_cuda;
+  }
+  return s.str();
+}
+
+std::string stop_phrase(StopReason r) {
+  switch (r) {
+    case StopReason::NoMoves: return "no node could improve";
+    case StopReason::Tolerance: return "moves fell below --tol";
+    case StopReason::MaxIterations: return "reached --max-iter; more sweeps may improve further";
+    case StopReason::NotStarted: return "nothing to smooth: no movable nodes";
+  }
+  return "";
+}
+
+void print_report(const Console& console, const SmoothRecord& record) {
+  const SmoothResult& r = record.result;
+  std::ostream& os = console.err;
+  os << "done: " << r.sweeps << " sweep(s), " << stop_phrase(r.stop) << "\n"
+     << "  " << with_thousands(r.movable_nodes) << " of " << with_thousands(record.input.nodes)
+     << " nodes movable";
+  if (r.num_colours > 0) os << ", " << r.num_colours << " colours";
+  if (r.reverted_moves > 0) os << ", " << with_thousands(static_cast<std::size_t>(r.reverted_moves)) << " moves reverted";
+  os << "\n  time (ms): read " << fixed_digits(record.read_ms, 1) << ", topology " << fixed_digits(r.topology_ms, 1)
+     << ", colouring " << fixed_digits(r.colouring_ms, 1) << ", smoothing " << fixed_digits(r.smoothing_ms, 1) << "\n\n";
+  const std::vector<SummaryColumn> columns{{"before", &r.before}, {"after", &r.after}};
+  write_quality_table(os, columns);
+  os << '\n';
+  write_histogram(os, columns);
+  os << '\n';
+}
+
+}  // namespace
+
+void run_smooth(const SmoothCommand& c, const Console& console) {
+  const Clock::time_point start = Clock::now();
+  SmoothRecord record;
+  record.input_format = format_from_path(c.input, c.input_format);
+  record.output_format = format_from_path(c.output, c.output_format);
+  std::string why_not_cuda;
+  record.device = choose_device(c.device, why_not_cuda);
+  check_output_location(c.output);
+  if (!c.report_path.empty()) check_output_location(c.report_path);
+
+  Clock::time_point t0 = Clock::now();
+  TetMesh mesh = read_mesh(c.input, record.input_format);
+  record.read_ms = ms_since(t0);
+  record.input = validate_mesh(mesh, c.input);
+  const char* inverted_note = c.options.method == Method::Adaptive
+                                  ? "continuing: adaptive smoothing never makes them worse"
+                                  : "continuing, but ordinary smoothing may make them worse";
+  record.warnings = input_warnings(record.input, c.input, inverted_note);
+  for (std::string& w : ignored_option_warnings(c, record.device)) record.warnings.push_back(std::move(w));
+  for (const std::string& w : record.warnings) console.warn(w);
+  console.note(c.input + ": " + with_thousands(record.input.nodes) + " nodes, " + with_thousands(record.input.tets) +
+               " tets (" + format_name(record.input_format) + ")");
+  console.note(device_line(c, record.device, why_not_cuda));
+
+  SmoothOptions options = c.options;
+  ProgressLine progress(console.err, console.err_is_terminal && !console.quiet, options.max_iterations);
+  options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
+  try {
+    record.result = smooth(mesh, options, record.device);
+  } catch (...) {
+    progress.finish();
+    throw;
+  }
+  progress.finish();
+
+  const SmoothResult& r = record.result;
+  if (r.after.inverted > r.before.inverted) {
+    record.warnings.push_back("ordinary smoothing inverted " + with_thousands(r.after.inverted - r.before.inverted) +
+                              " tets; --method adaptive never does");
+    console.warn(record.warnings.back());
+  }
+  if (!console.quiet) print_report(console, record);
+
+  t0 = Clock::now();
+  write_mesh_with_fields(mesh, c.output, record.output_format);
+  record.write_ms = ms_since(t0);
+  console.note("wrote " + c.output + " (" + format_name(record.output_format) + ")");
+  if (!c.report_path.empty()) {
+    record.total_ms = ms_since(start);
+    write_json_file(smooth_report_json(c, record), c.report_path);
+    console.note("wrote report " + c.report_path);
+  }
+}
+
+}  // namespace tetsmooth::cli

@@ -1,0 +1,25 @@
+#include "apps/worst_tets.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace tetsmooth::cli {
+
+std::vector<RankedTet> worst_tets(const TetMesh& mesh, const std::vector<double>& qualities, std::size_t k) {
+  std::vector<index_t> order(qualities.size());
+  std::iota(order.begin(), order.end(), index_t{0});
+  k = std::min(k, order.size());
+  // Partial sort: only k of possibly millions of tets are wanted.
+  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
+                    [&](index_t a, index_t b) { return qualities[a] < qualities[b] || (qualities[a] == qualities[b] && a < b); });
+  std::vector<RankedTet> ranked(k);
+  for (std::size_t r = 0; r < k; ++r) {
+    const index_t t = order[r];
+    ranked[r].tet = t;
+    ranked[r].quality = qualities[t];
+    for (int c = 0; c < 4; ++c) ranked[r].nodes[c] = mesh.tets[4 * static_cast<std::size_t>(t) + c];
+  }
+  return ranked;
+}
+
+}  // namespace tetsmooth::cli

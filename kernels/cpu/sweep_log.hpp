@@ -1,0 +1,27 @@
+#pragma once
+// Bookkeeping shared by every backend's sweep loop: records each sweep,
+// applies the one stopping rule (node_update.hpp: sweep_verdict) and calls
+// the progress callback.
+#include "kernels/node_update.hpp"
+#include "kernels/smooth_options.hpp"
+
+namespace tetsmooth {
+
+// Throws UsageError for options no backend accepts.
+void check_smooth_options(const SmoothOptions& opt);
+
+StopReason to_stop_reason(SweepVerdict v);
+
+class SweepLog {
+ public:
+  SweepLog(SmoothResult& result, const SmoothOptions& opt, double tol_abs);
+  bool wants_another_sweep() const { return result_.stop == StopReason::NotStarted; }
+  void record(std::int64_t accepted, double max_displacement);
+
+ private:
+  SmoothResult& result_;
+  const SmoothOptions& opt_;
+  double tol_abs_;
+};
+
+}  // namespace tetsmooth

@@ -1,0 +1,46 @@
+// smooth_cuda(): the library entry point for the CUDA backend. Plain C++
+// around GpuPipeline; the quality summaries are computed on the host.
+#include <cuda_runtime.h>
+
+#include <algorithm>
+
+#include "kernels/cuda/gpu_pipeline.hpp"
+#include "kernels/smoother.hpp"
+#include "mesh/errors.hpp"
+#include "mesh/quality_summary.hpp"
+#include "mesh/topology.hpp"
+
+namespace tetsmooth {
+
+bool cuda_available(std::string* why) {
+  int count = 0;
+  const cudaError_t err = cudaGetDeviceCount(&count);
+  if (err != cudaSuccess) {
+    if (why) *why = std::string("no usable CUDA device: ") + cudaGetErrorString(err);
+    static_cast<void>(cudaGetLastError());  // clear the sticky-free error so later calls start clean
+    return false;
+  }
+  if (count == 0) {
+    if (why) *why = "no CUDA device found";
+    return false;
+  }
+  return true;
+}
+
+SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring) {
+  std::string why;
+  if (!cuda_available(&why)) throw DeviceError(why);
+  // The summaries need the movable flags; the host topology is cheap next to
+  // reading and writing the mesh files around this call.
+  const Topology topo = build_topology(mesh);
+  const QualitySummary before = summarize_quality(mesh, topo.movable);
+  cuda::GpuPipeline pipeline(mesh);
+  pipeline.restore_coordinates(options);
+  SmoothResult r = pipeline.run(options, colouring);
+  mesh.xyz = pipeline.download_xyz();
+  r.before = before;
+  r.after = summarize_quality(mesh, topo.movable);
+  return r;
+}
+
+}  // namespace tetsmooth

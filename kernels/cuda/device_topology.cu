@@ -1,0 +1,207 @@
+// Mesh topology on the GPU, the paper's way (§3.2-3.3): edges and their
+// reversed copies as packed keys, radix sort, unique, CSR offsets; the same
+// for node -> tet incidence; boundary faces by sorting sorted face triples
+// (device_topology_boundary.cu); then the movable flags.
+//
+// Keys (w = bits needed for the node count N, u = bits for the tet count T):
+//   edge      start << w | end, 12 per tet; a self loop of a tet with a repeated
+//             node becomes the sentinel N << w, which sorts last and falls in
+//             no row; the sort visits 2w bits.
+//   incidence node << u | tet, 4 per tet; a repeated node's second entry is a
+//             sentinel N << u, so each (node, tet) appears once, as on the CPU.
+//   face      see device_topology_boundary.cu (64 or 96 bits).
+//
+// Memory, to size a run (bytes per tet T; a lattice has N ~ T / 6):
+//   scratch   two key buffers of 12 keys * 8 B = 192 B/tet, reused by every
+//             phase (the unique edges stay in one of them, the incidence and
+//             face sorts work in the other), plus CUB temp storage for the
+//             DoubleBuffer sorts and the unique pass: O(tiles), well under
+//             1 B per key. topo.scratch.bytes() gives the exact figure.
+//   results   inc 16 B/tet, nbr 4 B per directed edge (~9 B/tet on a lattice,
+//             14 neighbours per node), offsets 8 B/node, flags 2 B/node.
+//   So the 10M-node lattice (~60M tets) needs about 60M * 192 B = 11.5 GB of
+//   scratch and ~1.6 GB of results on top of the mesh itself. colour_device
+//   later reuses the same scratch (it needs ~20 B/node).
+//
+// One host synchronisation, at the end: the unique edge count sizes `nbr`,
+// which is only allocated then; everything else is sized from N and T.
+#include <algorithm>
+
+#include <cub/device/device_radix_sort.cuh>
+#include <cub/device/device_select.cuh>
+
+#include "kernels/cuda/cuda_check.hpp"
+#include "kernels/cuda/device_topology.hpp"
+#include "kernels/cuda/device_topology_detail.cuh"
+
+namespace tetsmooth::cuda {
+namespace {
+
+using detail::blocks_for;
+using detail::kBlock;
+
+// Written by the device, read back once at the end.
+struct BuildCounts {
+  unsigned long long unique_edges;  // sentinel included
+  index_t neighbours;               // nbr_off[N]
+  index_t incidences;               // inc_off[N]
+  unsigned movable;
+};
+
+__global__ void emit_edges(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int w,
+                           std::uint64_t* keys) {
+  const std::size_t t = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (t >= num_tets) return;
+  std::uint64_t v[4];
+  for (int k = 0; k < 4; ++k) v[k] = static_cast<std::uint32_t>(tets[4 * t + k]);
+  std::uint64_t* out = keys + 12 * t;
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) {
+      const bool loop = v[a] == v[b];
+      *out++ = loop ? num_nodes << w : (v[a] << w | v[b]);
+      *out++ = loop ? num_nodes << w : (v[b] << w | v[a]);
+    }
+}
+
+__global__ void emit_incidence(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int u,
+                               std::uint64_t* keys) {
+  const std::size_t t = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (t >= num_tets) return;
+  for (int k = 0; k < 4; ++k) {
+    const std::uint64_t v = static_cast<std::uint32_t>(tets[4 * t + k]);
+    bool repeat = false;
+    for (int j = 0; j < k; ++j) repeat = repeat || tets[4 * t + j] == tets[4 * t + k];
+    keys[4 * t + k] = (repeat ? num_nodes : v) << u | t;
+  }
+}
+
+__global__ void low_bits(const std::uint64_t* keys, std::size_t n, int w, index_t* out) {
+  const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (k < n) out[k] = static_cast<index_t>(keys[k] & ((1ull << w) - 1));
+}
+
+// Launched over whole blocks: __syncthreads_count needs every thread.
+__global__ void mark_movable(std::size_t num_nodes, const index_t* nbr_off, const std::uint8_t* boundary,
+                             const std::uint8_t* fixed, std::uint8_t* movable, unsigned* count) {
+  const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  bool m = false;
+  if (i < num_nodes) {
+    m = !boundary[i] && !(fixed && fixed[i]) && nbr_off[i + 1] > nbr_off[i];
+    movable[i] = m;
+  }
+  const int in_block = __syncthreads_count(m);
+  if (threadIdx.x == 0 && in_block > 0) atomicAdd(count, static_cast<unsigned>(in_block));
+}
+
+// Where the phases keep their data inside topo.scratch.
+struct BuildScratch {
+  BuildCounts* counts;
+  std::uint64_t* keys[2];  // 12 keys per tet each
+  void* temp;
+  std::size_t temp_bytes;
+  std::size_t bytes;  // all of it
+};
+
+BuildScratch carve(unsigned char* base, std::size_t num_tets, std::size_t temp_bytes) {
+  detail::ScratchCarver carver(base);
+  BuildScratch s{};
+  s.counts = carver.take<BuildCounts>(1);
+  s.keys[0] = carver.take<std::uint64_t>(12 * num_tets);
+  s.keys[1] = carver.take<std::uint64_t>(12 * num_tets);
+  s.temp = carver.take<unsigned char>(temp_bytes);
+  s.temp_bytes = temp_bytes;
+  s.bytes = carver.used();
+  return s;
+}
+
+// The largest CUB temp storage any phase needs, for the bit widths used.
+std::size_t cub_temp_bytes(std::size_t num_tets, std::size_t num_nodes, int w, int u) {
+  std::size_t need = detail::face_temp_bytes(num_tets, num_nodes), bytes = 0;
+  cub::DoubleBuffer<std::uint64_t> none(nullptr, nullptr);
+  CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 12 * num_tets, 0, 2 * w));
+  need = std::max(need, bytes);
+  CUDA_CHECK(cub::DeviceSelect::Unique(nullptr, bytes, none.Current(), none.Current(),
+                                       static_cast<unsigned long long*>(nullptr), 12 * num_tets));
+  need = std::max(need, bytes);
+  CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, 0, w + u));
+  return std::max(need, bytes);
+}
+
+}  // namespace
+
+void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes,
+                           const std::uint8_t* d_fixed, cudaStream_t stream) {
+  const std::size_t n = num_nodes, nt = num_tets;
+  const auto rows = static_cast<index_t>(n);
+  const int w = detail::bits_for(n);                     // node indices and the sentinel N
+  const int u = detail::bits_for(nt > 0 ? nt - 1 : 0);  // tet indices
+  topo.num_nodes = n;
+  topo.num_tets = nt;
+  topo.nbr_off.resize(n + 1);
+  topo.inc_off.resize(n + 1);
+  topo.inc.resize(4 * nt);  // an upper bound, trimmed below without reallocating
+  topo.boundary.resize(n);
+  topo.movable.resize(n);
+
+  const std::size_t temp_bytes = cub_temp_bytes(nt, n, w, u);
+  topo.scratch.resize(carve(nullptr, nt, temp_bytes).bytes);
+  const BuildScratch s = carve(topo.scratch.data(), nt, temp_bytes);
+  std::size_t temp_size = s.temp_bytes;
+  CUDA_CHECK(cudaMemsetAsync(s.counts, 0, sizeof(BuildCounts), stream));
+
+  // Neighbours: 12 directed edges per tet, sorted, made unique; rows follow.
+  cub::DoubleBuffer<std::uint64_t> edges(s.keys[0], s.keys[1]);
+  if (nt > 0) {
+    emit_edges<<<blocks_for(nt), kBlock, 0, stream>>>(d_tets, nt, n, w, s.keys[0]);
+    CUDA_CHECK_LAUNCH();
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, edges, 12 * nt, 0, 2 * w, stream));
+    CUDA_CHECK(cub::DeviceSelect::Unique(s.temp, temp_size, edges.Current(), edges.Alternate(),
+                                         &s.counts->unique_edges, 12 * nt, stream));
+  }
+  const std::uint64_t* unique_edges = edges.Alternate();
+  detail::csr_from_sorted<<<blocks_for(12 * nt + 1), kBlock, 0, stream>>>(
+      detail::PackedRows{unique_edges, w}, &s.counts->unique_edges, 12 * nt, rows, topo.nbr_off.data(),
+      static_cast<index_t*>(nullptr));
+  CUDA_CHECK_LAUNCH();
+  // The sorted, non-unique copy is dead now: later phases work in its buffer.
+  std::uint64_t* work = edges.Current();
+
+  // Node -> tets: 4 keys per tet, sorted; row = node, item = tet.
+  cub::DoubleBuffer<std::uint64_t> inc(work, work + 4 * nt);
+  if (nt > 0) {
+    emit_incidence<<<blocks_for(nt), kBlock, 0, stream>>>(d_tets, nt, n, u, inc.Current());
+    CUDA_CHECK_LAUNCH();
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, inc, 4 * nt, 0, w + u, stream));
+  }
+  detail::csr_from_sorted<<<blocks_for(4 * nt + 1), kBlock, 0, stream>>>(
+      detail::PackedRows{inc.Current(), u}, static_cast<const unsigned long long*>(nullptr), 4 * nt, rows,
+      topo.inc_off.data(), topo.inc.data());
+  CUDA_CHECK_LAUNCH();
+
+  detail::mark_boundary_nodes(d_tets, nt, n, work, s.temp, s.temp_bytes, topo.boundary.data(), stream);
+
+  if (n > 0) {
+    mark_movable<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.nbr_off.data(), topo.boundary.data(), d_fixed,
+                                                       topo.movable.data(), &s.counts->movable);
+    CUDA_CHECK_LAUNCH();
+  }
+
+  // The one read-back: the sizes the host must know.
+  CUDA_CHECK(cudaMemcpyAsync(&s.counts->neighbours, topo.nbr_off.data() + n, sizeof(index_t),
+                             cudaMemcpyDeviceToDevice, stream));
+  CUDA_CHECK(cudaMemcpyAsync(&s.counts->incidences, topo.inc_off.data() + n, sizeof(index_t),
+                             cudaMemcpyDeviceToDevice, stream));
+  BuildCounts counts{};
+  CUDA_CHECK(cudaMemcpyAsync(&counts, s.counts, sizeof(BuildCounts), cudaMemcpyDeviceToHost, stream));
+  CUDA_CHECK(cudaStreamSynchronize(stream));
+  topo.movable_count = counts.movable;
+  topo.inc.resize(static_cast<std::size_t>(counts.incidences));
+  topo.nbr.resize(static_cast<std::size_t>(counts.neighbours));
+  if (counts.neighbours > 0) {
+    low_bits<<<blocks_for(counts.neighbours), kBlock, 0, stream>>>(unique_edges, counts.neighbours, w,
+                                                                   topo.nbr.data());
+    CUDA_CHECK_LAUNCH();
+  }
+}
+
+}  // namespace tetsmooth::cuda

@@ -1,0 +1,293 @@
+// The GPU pipeline: device memory for one mesh, and a run = topology +
+// colouring + sweeps, each phase bracketed by CUDA events.
+#include "kernels/cuda/gpu_pipeline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "kernels/cpu/sweep_log.hpp"
+#include "kernels/cuda/cuda_check.hpp"
+#include "kernels/cuda/device_topology.hpp"
+#include "kernels/cuda/sweep_kernels.cuh"
+#include "kernels/cuda/sweep_loop.hpp"
+
+namespace tetsmooth::cuda {
+namespace {
+
+class Event {
+ public:
+  Event() { CUDA_CHECK(cudaEventCreate(&e_)); }
+  ~Event() { CUDA_CHECK_NOTHROW(cudaEventDestroy(e_)); }
+  Event(const Event&) = delete;
+  Event& operator=(const Event&) = delete;
+  void record(cudaStream_t s) { CUDA_CHECK(cudaEventRecord(e_, s)); }
+  float ms_since(const Event& start) const {
+    float ms = 0;
+    CUDA_CHECK(cudaEventElapsedTime(&ms, start.e_, e_));
+    return ms;
+  }
+
+ private:
+  cudaEvent_t e_{};
+};
+
+double bits_to_double(unsigned long long bits) {
+  double d;
+  std::memcpy(&d, &bits, sizeof d);
+  return d;
+}
+
+}  // namespace
+
+struct GpuPipeline::Impl {
+  std::size_t n = 0, t = 0;
+  cudaStream_t stream{};
+  DeviceBuffer<index_t> tets;
+  DeviceBuffer<std::uint8_t> fixed;
+  DeviceBuffer<double> input;           // 3n, AoS, mesh units
+  DeviceBuffer<double> buf0, buf1;      // working coordinates (3n Real)
+  DeviceBuffer<double> old_min;         // n Real
+  DeviceBuffer<std::uint8_t> moved, revert;
+  DeviceBuffer<SweepState> state;
+  DeviceBuffer<unsigned long long> accepted, max_disp2;
+  DeviceBuffer<int> repair_found;
+  DeviceBuffer<double> output;          // 3n, for download
+  SweepState* host_state = nullptr;     // pinned
+  DeviceTopology topo;
+  std::vector<index_t> override_off;
+  DeviceBuffer<index_t> override_nodes;
+  // What restore_coordinates loaded, and where the result of the last run is.
+  Precision precision = Precision::Double;
+  Layout layout = Layout::AoS;
+  double centre[3] = {0, 0, 0};
+  double scale = 1;
+  bool result_in_buf1 = false;
+  GpuRunTimes times;
+
+  ~Impl() {
+    if (host_state) CUDA_CHECK_NOTHROW(cudaFreeHost(host_state));
+    if (stream) CUDA_CHECK_NOTHROW(cudaStreamDestroy(stream));
+  }
+};
+
+DeviceInfo device_info() {
+  int count = 0;
+  CUDA_CHECK(cudaGetDeviceCount(&count));
+  if (count == 0) throw DeviceError("no CUDA device found");
+  int dev = 0;
+  CUDA_CHECK(cudaGetDevice(&dev));
+  cudaDeviceProp p{};
+  CUDA_CHECK(cudaGetDeviceProperties(&p, dev));
+  DeviceInfo info;
+  info.name = p.name;
+  info.sm_count = p.multiProcessorCount;
+  info.cc_major = p.major;
+  info.cc_minor = p.minor;
+  info.memory_bytes = p.totalGlobalMem;
+  CUDA_CHECK(cudaRuntimeGetVersion(&info.runtime_version));
+  CUDA_CHECK(cudaDriverGetVersion(&info.driver_version));
+  return info;
+}
+
+GpuPipeline::GpuPipeline(const TetMesh& mesh) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.n = mesh.num_nodes();
+  m.t = mesh.num_tets();
+  CUDA_CHECK(cudaStreamCreateWithFlags(&m.stream, cudaStreamNonBlocking));
+  CUDA_CHECK(cudaMallocHost(reinterpret_cast<void**>(&m.host_state), sizeof(SweepState)));
+  m.tets.upload(mesh.tets, m.stream);
+  if (!mesh.fixed.empty()) m.fixed.upload(mesh.fixed, m.stream);
+  m.input.upload(mesh.xyz, m.stream);
+  m.buf0.resize(3 * m.n);
+  m.buf1.resize(3 * m.n);
+  m.old_min.resize(m.n);
+  m.moved.resize(m.n);
+  m.revert.resize(m.n);
+  m.output.resize(3 * m.n);
+  m.state.resize(1);
+  m.repair_found.resize(kMaxRepairPasses);
+  // Centre and half-extent of the bounding box: float runs work in [-1, 1].
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (std::size_t i = 0; i < m.n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], mesh.xyz[3 * i + k]);
+      hi[k] = std::max(hi[k], mesh.xyz[3 * i + k]);
+    }
+  double half = 0;
+  for (int k = 0; k < 3; ++k) {
+    m.centre[k] = m.n ? 0.5 * (lo[k] + hi[k]) : 0.0;
+    half = std::max(half, m.n ? 0.5 * (hi[k] - lo[k]) : 0.0);
+  }
+  m.scale = half > 0 ? half : 1.0;
+  CUDA_CHECK(cudaStreamSynchronize(m.stream));
+}
+
+GpuPipeline::~GpuPipeline() = default;
+
+std::size_t GpuPipeline::num_nodes() const { return impl_->n; }
+std::size_t GpuPipeline::num_tets() const { return impl_->t; }
+const GpuRunTimes& GpuPipeline::last_times() const { return impl_->times; }
+
+void GpuPipeline::restore_coordinates(const SmoothOptions& o) {
+  Impl& m = *impl_;
+  m.precision = o.precision;
+  m.layout = o.layout;
+  const index_t n = static_cast<index_t>(m.n);
+  // Double works in mesh units, so it does the CPU's arithmetic; float works
+  // in the unit box around the mesh, where its precision is best.
+  const double identity[3] = {0, 0, 0};
+  const bool is_float = o.precision == Precision::Float;
+  const double* c = is_float ? m.centre : identity;
+  const double inv = is_float ? 1.0 / m.scale : 1.0;
+  for (DeviceBuffer<double>* b : {&m.buf0, &m.buf1}) {
+    if (is_float)
+      load_working_coords<float>(m.input.data(), b->data(), n, o.layout, c, inv, m.stream);
+    else
+      load_working_coords<double>(m.input.data(), b->data(), n, o.layout, c, inv, m.stream);
+  }
+  m.result_in_buf1 = false;
+  CUDA_CHECK(cudaStreamSynchronize(m.stream));
+}
+
+SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring) {
+  check_smooth_options(o);
+  Impl& m = *impl_;
+  if (o.precision != m.precision || o.layout != m.layout)
+    throw UsageError("GpuPipeline::run: restore_coordinates() was called for another precision or layout");
+  if (o.strategy == Strategy::Coloured && o.form == Form::A)
+    throw UsageError("the coloured strategy is an in-place (Form B) scheme; Form A is already race-free");
+  const index_t n = static_cast<index_t>(m.n);
+  const bool is_float = o.precision == Precision::Float;
+  const std::size_t cap = static_cast<std::size_t>(std::max(o.max_iterations, 1));
+  m.accepted.resize(cap);
+  m.max_disp2.resize(cap);
+
+  // Form A continues from whichever buffer holds the latest coordinates.
+  if (m.result_in_buf1) {
+    CUDA_CHECK(cudaMemcpyAsync(m.buf0.data(), m.buf1.data(), m.buf0.bytes(), cudaMemcpyDeviceToDevice, m.stream));
+    m.result_in_buf1 = false;
+  }
+  if (o.form == Form::A)
+    CUDA_CHECK(cudaMemcpyAsync(m.buf1.data(), m.buf0.data(), m.buf0.bytes(), cudaMemcpyDeviceToDevice, m.stream));
+
+  Event e_start, e_topo, e_colour, e_end;
+  e_start.record(m.stream);
+  build_device_topology(m.topo, m.tets.data(), m.t, m.n, m.fixed.size() ? m.fixed.data() : nullptr, m.stream);
+  const MeshView view = m.topo.view(m.tets.data());
+  CUDA_CHECK(cudaMemsetAsync(m.state.data(), 0, sizeof(SweepState), m.stream));
+  CUDA_CHECK(cudaMemsetAsync(m.accepted.data(), 0, m.accepted.bytes(), m.stream));
+  CUDA_CHECK(cudaMemsetAsync(m.max_disp2.data(), 0, m.max_disp2.bytes(), m.stream));
+  CUDA_CHECK(cudaMemsetAsync(m.repair_found.data(), 0, m.repair_found.bytes(), m.stream));
+  CUDA_CHECK(cudaMemsetAsync(m.moved.data(), 0, m.moved.bytes(), m.stream));
+  CUDA_CHECK(cudaMemsetAsync(m.revert.data(), 0, m.revert.bytes(), m.stream));
+  if (is_float)
+    sum_edge_lengths<float>(view, m.buf0.data(), n, o.layout, m.state.data(), m.stream);
+  else
+    sum_edge_lengths<double>(view, m.buf0.data(), n, o.layout, m.state.data(), m.stream);
+  set_tolerance_kernel<<<1, 1, 0, m.stream>>>(m.state.data(), o.tolerance);
+  CUDA_CHECK_LAUNCH();
+  e_topo.record(m.stream);
+
+  const std::vector<index_t>* class_off = nullptr;
+  const index_t* class_nodes = nullptr;
+  int num_colours = 0;
+  if (o.strategy == Strategy::Coloured) {
+    if (colouring) {
+      m.override_off = colouring->classes.offsets;
+      m.override_nodes.upload(colouring->classes.items, m.stream);
+      class_off = &m.override_off;
+      class_nodes = m.override_nodes.data();
+      num_colours = colouring->num_colours;
+    } else {
+      colour_device(m.topo, m.stream);
+      class_off = &m.topo.class_off_host;
+      class_nodes = m.topo.class_nodes.data();
+      num_colours = m.topo.num_colours;
+    }
+  }
+  e_colour.record(m.stream);
+
+  SweepLoopArgs a;
+  a.view = view;
+  a.n = n;
+  a.num_tets = static_cast<index_t>(m.t);
+  a.movable = m.topo.movable.data();
+  a.buf0 = m.buf0.data();
+  a.buf1 = m.buf1.data();
+  a.old_min = m.old_min.data();
+  a.moved = m.moved.data();
+  a.revert = m.revert.data();
+  a.state = m.state.data();
+  a.host_state = m.host_state;
+  a.counters = SweepCounters{m.accepted.data(), m.max_disp2.data(), m.repair_found.data()};
+  a.class_nodes = class_nodes;
+  a.class_off = class_off;
+  a.stream = m.stream;
+  const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
+  e_end.record(m.stream);
+  CUDA_CHECK(cudaMemcpyAsync(m.host_state, m.state.data(), sizeof(SweepState), cudaMemcpyDeviceToHost, m.stream));
+  CUDA_CHECK(cudaStreamSynchronize(m.stream));
+
+  m.times.topology_ms = e_topo.ms_since(e_start);
+  m.times.colouring_ms = e_colour.ms_since(e_topo);
+  m.times.smoothing_ms = e_end.ms_since(e_colour);
+  m.times.total_ms = e_end.ms_since(e_start);
+  m.times.launches = loop.launches;
+  m.times.host_checks = loop.host_checks;
+
+  const SweepState st = *m.host_state;
+  SmoothResult r;
+  r.backend = "cuda";
+  r.sweeps = st.sweep;
+  r.stop = o.max_iterations == 0 ? StopReason::MaxIterations : to_stop_reason(static_cast<SweepVerdict>(st.verdict));
+  r.reverted_moves = static_cast<std::int64_t>(st.reverted);
+  r.num_colours = num_colours;
+  r.movable_nodes = m.topo.movable_count;
+  r.mean_edge_length = (st.edge_count ? st.edge_sum / static_cast<double>(st.edge_count) : 0.0) * (is_float ? m.scale : 1.0);
+  r.topology_ms = m.times.topology_ms;
+  r.colouring_ms = m.times.colouring_ms;
+  r.smoothing_ms = m.times.smoothing_ms;
+  if (r.sweeps > 0) {
+    std::vector<unsigned long long> acc(r.sweeps), d2(r.sweeps);
+    CUDA_CHECK(cudaMemcpy(acc.data(), m.accepted.data(), acc.size() * sizeof(acc[0]), cudaMemcpyDeviceToHost));
+    CUDA_CHECK(cudaMemcpy(d2.data(), m.max_disp2.data(), d2.size() * sizeof(d2[0]), cudaMemcpyDeviceToHost));
+    for (int s = 0; s < r.sweeps; ++s) {
+      r.accepted_per_sweep.push_back(static_cast<std::int64_t>(acc[s]));
+      r.max_displacement_per_sweep.push_back(std::sqrt(bits_to_double(d2[s])) * (is_float ? m.scale : 1.0));
+    }
+  }
+  m.result_in_buf1 = o.form == Form::A && (r.sweeps & 1);
+  return r;
+}
+
+std::vector<double> GpuPipeline::download_xyz() const {
+  Impl& m = *impl_;
+  if (m.topo.movable.size() != m.n)
+    throw UsageError("GpuPipeline::download_xyz: run() has not been called");
+  const index_t n = static_cast<index_t>(m.n);
+  const double identity[3] = {0, 0, 0};
+  const bool is_float = m.precision == Precision::Float;
+  const void* src = m.result_in_buf1 ? m.buf1.data() : m.buf0.data();
+  CUDA_CHECK(cudaMemcpyAsync(m.output.data(), m.input.data(), m.input.bytes(), cudaMemcpyDeviceToDevice, m.stream));
+  if (is_float)
+    store_movable_coords<float>(src, m.output.data(), m.topo.movable.data(), n, m.layout, m.centre, m.scale, m.stream);
+  else
+    store_movable_coords<double>(src, m.output.data(), m.topo.movable.data(), n, m.layout, identity, 1.0, m.stream);
+  return m.output.download(m.stream);
+}
+
+double measure_copy_bandwidth(std::size_t bytes, int repetitions) {
+  DeviceBuffer<unsigned char> a(bytes), b(bytes);
+  CUDA_CHECK(cudaMemset(a.data(), 1, bytes));
+  CUDA_CHECK(cudaMemcpy(b.data(), a.data(), bytes, cudaMemcpyDeviceToDevice));  // warm-up
+  Event start, stop;
+  start.record(nullptr);
+  for (int r = 0; r < repetitions; ++r) CUDA_CHECK(cudaMemcpyAsync(b.data(), a.data(), bytes, cudaMemcpyDeviceToDevice));
+  stop.record(nullptr);
+  CUDA_CHECK(cudaDeviceSynchronize());
+  const double seconds = stop.ms_since(start) / 1000.0;
+  return 2.0 * static_cast<double>(bytes) * repetitions / seconds;
+}
+
+}  // namespace tetsmooth::cuda

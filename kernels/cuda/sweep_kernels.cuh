@@ -1,0 +1,252 @@
+#pragma once
+// The smoothing kernels: one per-node body (smooth_node, around the shared
+// evaluate_node) used by every strategy.
+//   MultiBlock: one thread per node, a launch per sweep (the paper's).
+//   Coloured:   MultiBlock over one colour class at a time; nodes of one
+//               colour share no tet, so in-place updates are race-free.
+//   SingleBlock: one block of 1024 threads runs every sweep in one launch,
+//               __syncthreads() between sweeps.
+// Form A (Jacobi) reads `read` and writes `write`; Form B reads and writes
+// `read` in place (racy under MultiBlock and SingleBlock, as in the paper).
+#include <cuda_runtime.h>
+
+#include "kernels/cuda/sweep_state.cuh"
+#include "kernels/node_update.hpp"
+#include "kernels/smooth_options.hpp"
+
+namespace tetsmooth::cuda {
+
+inline constexpr int kSingleBlockThreads = 1024;
+
+// Evaluates node i and applies the move; returns whether it moved.
+template <class Real, bool kAdaptive, Form F, class Coords>
+__device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& read, const Coords& write, index_t i,
+                                            Real* old_min, std::uint8_t* moved, double& disp2) {
+  const NodeMove<Real> mv = evaluate_node<Real, kAdaptive>(m, read, i);
+  const bool take = mv.accept && mv.displacement2 > Real(0);
+  if (F == Form::A) {
+    write.set(i, take ? mv.target : read.get(i));
+    moved[i] = take;
+    if (take) old_min[i] = mv.old_min;
+  } else if (take) {
+    read.set(i, mv.target);
+  }
+  if (take) disp2 = static_cast<double>(mv.displacement2);
+  return take;
+}
+
+// One sweep (MultiBlock: nodes == nullptr, all N nodes) or one colour class.
+// Form A leaves the counting to count_moves_kernel, after the repair.
+template <class Real, bool kAdaptive, Form F, class Coords>
+__global__ void sweep_kernel(MeshView m, Coords read, Coords write, const index_t* nodes, index_t count,
+                             const std::uint8_t* movable, Real* old_min, std::uint8_t* moved, SweepState* st,
+                             SweepCounters c) {
+  if (st->done) return;
+  const index_t k = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  unsigned accepted = 0;
+  double disp2 = 0;
+  if (k < count) {
+    const index_t i = nodes ? nodes[k] : k;
+    if (nodes || movable[i]) accepted = smooth_node<Real, kAdaptive, F>(m, read, write, i, old_min, moved, disp2);
+  }
+  if (F == Form::B) add_sweep_stats(c, st->sweep, accepted, disp2);
+}
+
+// Form A conflict repair, pass `pass` (see node_update.hpp): flag the movers
+// of objecting tets. Skipped when the previous pass found nothing.
+template <class Real, class Coords>
+__global__ void repair_check_kernel(const index_t* tets, index_t num_tets, Coords before, Coords after,
+                                    const std::uint8_t* moved, const Real* old_min, std::uint8_t* revert,
+                                    SweepState* st, SweepCounters c, int pass) {
+  if (st->done || (pass > 0 && !c.repair_found[pass - 1])) return;
+  const index_t t = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  if (t >= num_tets || !tet_rejects_movers(tets + 4 * t, before, after, moved, old_min)) return;
+  for (int k = 0; k < 4; ++k)
+    if (moved[tets[4 * t + k]]) revert[tets[4 * t + k]] = 1;
+  c.repair_found[pass] = 1;
+}
+
+template <class Coords>
+__global__ void repair_apply_kernel(index_t n, Coords before, Coords after, std::uint8_t* moved, std::uint8_t* revert,
+                                    SweepState* st, SweepCounters c, int pass) {
+  if (st->done || !c.repair_found[pass]) return;
+  const bool undo_all = pass == kMaxRepairPasses - 1;
+  const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  unsigned reverted = 0;
+  if (i < n && moved[i] && (revert[i] || undo_all)) {
+    after.set(i, before.get(i));
+    moved[i] = 0;
+    reverted = 1;
+  }
+  if (i < n) revert[i] = 0;
+  for (int offset = 16; offset > 0; offset >>= 1) reverted += __shfl_down_sync(0xffffffffu, reverted, offset);
+  if ((threadIdx.x & 31) == 0 && reverted) atomicAdd(&st->reverted, static_cast<unsigned long long>(reverted));
+}
+
+// Form A: count the moves that survived the repair.
+template <class Coords>
+__global__ void count_moves_kernel(index_t n, Coords before, Coords after, const std::uint8_t* moved, SweepState* st,
+                                   SweepCounters c) {
+  if (st->done) return;
+  const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  unsigned accepted = 0;
+  double disp2 = 0;
+  if (i < n && moved[i]) {
+    accepted = 1;
+    disp2 = static_cast<double>(norm2(after.get(i) - before.get(i)));
+  }
+  add_sweep_stats(c, st->sweep, accepted, disp2);
+}
+
+// Applies the stopping rule to the sweep just finished (one thread) and
+// clears the repair flags for the next sweep. `static`: each translation
+// unit that launches it keeps its own copy.
+static __global__ void verdict_kernel(SweepState* st, SweepCounters c, int max_iterations) {
+  if (st->done) return;
+  const int s = st->sweep;
+  const double disp = sqrt(__longlong_as_double(static_cast<long long>(c.max_disp2_bits[s])));
+  const SweepVerdict v =
+      sweep_verdict(s + 1, static_cast<long long>(c.accepted[s]), disp, st->tol_abs, max_iterations);
+  st->sweep = s + 1;
+  st->verdict = static_cast<int>(v);
+  st->done = v != SweepVerdict::Continue;
+  for (int k = 0; k < kMaxRepairPasses; ++k) c.repair_found[k] = 0;
+}
+
+// tol_abs = tolerance x mean edge length, once the edge sums are in.
+static __global__ void set_tolerance_kernel(SweepState* st, double tolerance) {
+  st->tol_abs = st->edge_count ? tolerance * st->edge_sum / static_cast<double>(st->edge_count) : 0.0;
+}
+
+// The whole sweep loop in one block (SingleBlock). The per-node body and the
+// repair are the same functions the other strategies use; only the loops
+// and barriers differ.
+template <class Real, bool kAdaptive, Form F, class Coords>
+__global__ void __launch_bounds__(kSingleBlockThreads)
+    single_block_kernel(MeshView m, Coords buf0, Coords buf1, index_t n, index_t num_tets,
+                        const std::uint8_t* movable, Real* old_min, std::uint8_t* moved, std::uint8_t* revert,
+                        SweepState* st, SweepCounters c, int max_iterations) {
+  __shared__ unsigned long long s_accepted;
+  __shared__ double s_disp2;
+  __shared__ int s_flag;
+  for (int s = 0; s < max_iterations; ++s) {
+    const Coords read = (F == Form::A && (s & 1)) ? buf1 : buf0;
+    const Coords write = (F == Form::A && (s & 1)) ? buf0 : buf1;
+    if (threadIdx.x == 0) {
+      s_accepted = 0;
+      s_disp2 = 0;
+    }
+    __syncthreads();
+    unsigned accepted = 0;
+    double disp2 = 0;
+    for (index_t i = threadIdx.x; i < n; i += blockDim.x) {
+      if (!movable[i]) continue;
+      double d2 = 0;
+      if (smooth_node<Real, kAdaptive, F>(m, read, write, i, old_min, moved, d2)) {
+        ++accepted;
+        disp2 = fmax(disp2, d2);
+      }
+    }
+    if (F == Form::A) {
+      __syncthreads();
+      for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
+        if (threadIdx.x == 0) s_flag = 0;
+        __syncthreads();
+        for (index_t t = threadIdx.x; t < num_tets; t += blockDim.x)
+          if (tet_rejects_movers(m.tets + 4 * t, read, write, moved, old_min)) {
+            for (int k = 0; k < 4; ++k)
+              if (moved[m.tets[4 * t + k]]) revert[m.tets[4 * t + k]] = 1;
+            atomicOr(&s_flag, 1);
+          }
+        __syncthreads();
+        const int found = s_flag;
+        if (!found) break;
+        const bool undo_all = pass == kMaxRepairPasses - 1;
+        unsigned reverted = 0;
+        for (index_t i = threadIdx.x; i < n; i += blockDim.x) {
+          if (moved[i] && (revert[i] || undo_all)) {
+            write.set(i, read.get(i));
+            moved[i] = 0;
+            ++reverted;
+          }
+          revert[i] = 0;
+        }
+        if (reverted) atomicAdd(&st->reverted, static_cast<unsigned long long>(reverted));
+        __syncthreads();
+      }
+      accepted = 0;
+      disp2 = 0;
+      for (index_t i = threadIdx.x; i < n; i += blockDim.x)
+        if (moved[i]) {
+          ++accepted;
+          disp2 = fmax(disp2, static_cast<double>(norm2(write.get(i) - read.get(i))));
+        }
+    }
+    if (accepted) {
+      atomicAdd(&s_accepted, static_cast<unsigned long long>(accepted));
+      atomicMax(reinterpret_cast<unsigned long long*>(&s_disp2), static_cast<unsigned long long>(__double_as_longlong(disp2)));
+    }
+    __syncthreads();
+    if (threadIdx.x == 0) {
+      c.accepted[s] = s_accepted;
+      c.max_disp2_bits[s] = static_cast<unsigned long long>(__double_as_longlong(s_disp2));
+      const SweepVerdict v = sweep_verdict(s + 1, static_cast<long long>(s_accepted), sqrt(s_disp2), st->tol_abs,
+                                           max_iterations);
+      st->sweep = s + 1;
+      st->verdict = static_cast<int>(v);
+      st->done = v != SweepVerdict::Continue;
+      s_flag = st->done;
+    }
+    __syncthreads();
+    if (s_flag) break;
+    __syncthreads();
+  }
+}
+
+// Input (double AoS, mesh units) -> working coordinates: (x - centre) * inv_scale.
+template <class Real, class Coords>
+__global__ void load_coords_kernel(const double* in, Coords out, index_t n, double cx, double cy, double cz,
+                                   double inv_scale) {
+  const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  if (i >= n) return;
+  out.set(i, Vec3<Real>{static_cast<Real>((in[3 * i] - cx) * inv_scale), static_cast<Real>((in[3 * i + 1] - cy) * inv_scale),
+                        static_cast<Real>((in[3 * i + 2] - cz) * inv_scale)});
+}
+
+// Only movable nodes are written back, so the others keep their input bits
+// even when the working precision is float.
+template <class Real, class Coords>
+__global__ void store_coords_kernel(Coords in, double* out, const std::uint8_t* movable, index_t n, double cx,
+                                    double cy, double cz, double scale) {
+  const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  if (i >= n || !movable[i]) return;
+  const Vec3<Real> v = in.get(i);
+  out[3 * i] = static_cast<double>(v.x) * scale + cx;
+  out[3 * i + 1] = static_cast<double>(v.y) * scale + cy;
+  out[3 * i + 2] = static_cast<double>(v.z) * scale + cz;
+}
+
+// Sum of unique edge lengths (row i, neighbour j > i) in working units.
+template <class Real, class Coords>
+__global__ void edge_length_kernel(MeshView m, Coords xyz, index_t n, SweepState* st) {
+  const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  double sum = 0;
+  unsigned count = 0;
+  if (i < n)
+    for (index_t k = m.nbr_off[i]; k < m.nbr_off[i + 1]; ++k) {
+      const index_t j = m.nbr[k];
+      if (j <= i) continue;
+      sum += sqrt(static_cast<double>(norm2(xyz.get(j) - xyz.get(i))));
+      ++count;
+    }
+  for (int offset = 16; offset > 0; offset >>= 1) {
+    sum += __shfl_down_sync(0xffffffffu, sum, offset);
+    count += __shfl_down_sync(0xffffffffu, count, offset);
+  }
+  if ((threadIdx.x & 31) == 0 && count) {
+    atomicAdd(&st->edge_sum, sum);
+    atomicAdd(&st->edge_count, static_cast<unsigned long long>(count));
+  }
+}
+
+}  // namespace tetsmooth::cuda

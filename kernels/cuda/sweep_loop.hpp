@@ -1,0 +1,51 @@
+#pragma once
+// The host side of the sweep loop: launches sweeps per strategy and reads
+// the device's stop flag every `check_every` sweeps.
+#include <cuda_runtime.h>
+
+#include <vector>
+
+#include "kernels/cuda/sweep_state.cuh"
+#include "kernels/node_update.hpp"
+#include "kernels/smooth_options.hpp"
+
+namespace tetsmooth::cuda {
+
+struct SweepLoopArgs {
+  MeshView view;
+  index_t n = 0, num_tets = 0;
+  const std::uint8_t* movable = nullptr;
+  void* buf0 = nullptr;  // working coordinates (3 * n Real), both layouts
+  void* buf1 = nullptr;  // Form A's second buffer
+  void* old_min = nullptr;  // n Real
+  std::uint8_t* moved = nullptr;
+  std::uint8_t* revert = nullptr;
+  SweepState* state = nullptr;
+  SweepState* host_state = nullptr;  // pinned
+  SweepCounters counters{};
+  const index_t* class_nodes = nullptr;
+  const std::vector<index_t>* class_off = nullptr;  // host copy, num_colours + 1
+  cudaStream_t stream = nullptr;
+};
+
+struct SweepLoopStats {
+  int launches = 0;
+  int host_checks = 0;
+};
+
+// Runs sweeps until the device says stop; Real is float or double.
+template <class Real>
+SweepLoopStats run_sweep_loop(const SweepLoopArgs& args, const SmoothOptions& options);
+
+// Loads the input (double AoS) into a working buffer, and back.
+template <class Real>
+void load_working_coords(const double* input, void* buf, index_t n, Layout layout, const double centre[3],
+                         double inv_scale, cudaStream_t stream);
+template <class Real>
+void store_movable_coords(const void* buf, double* out, const std::uint8_t* movable, index_t n, Layout layout,
+                          const double centre[3], double scale, cudaStream_t stream);
+template <class Real>
+void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout layout, SweepState* state,
+                      cudaStream_t stream);
+
+}  // namespace tetsmooth::cuda

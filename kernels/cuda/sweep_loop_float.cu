@@ -1,0 +1,5 @@
+#include "kernels/cuda/sweep_loop_impl.cuh"
+
+namespace tetsmooth::cuda {
+TETSMOOTH_INSTANTIATE_SWEEP_LOOP(float)
+}

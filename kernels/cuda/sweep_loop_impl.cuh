@@ -1,0 +1,200 @@
+#pragma once
+// Template bodies of sweep_loop.hpp, instantiated once per precision in
+// sweep_loop_float.cu and sweep_loop_double.cu (splitting keeps nvcc's
+// translation units small).
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "kernels/cuda/cuda_check.hpp"
+#include "kernels/cuda/sweep_kernels.cuh"
+#include "kernels/cuda/sweep_loop.hpp"
+#include "mesh/errors.hpp"
+
+namespace tetsmooth::cuda {
+namespace detail {
+
+constexpr int kBlock = 256;
+inline unsigned blocks_for(index_t count) { return static_cast<unsigned>((count + kBlock - 1) / kBlock); }
+
+template <class Real, Layout L>
+struct CoordsFor;
+template <class Real>
+struct CoordsFor<Real, Layout::AoS> {
+  using type = AosCoords<Real>;
+  static type make(void* p, index_t) { return {static_cast<Real*>(p)}; }
+};
+template <class Real>
+struct CoordsFor<Real, Layout::SoA> {
+  using type = SoaCoords<Real>;
+  static type make(void* p, index_t n) {
+    Real* r = static_cast<Real*>(p);
+    return {r, r + n, r + 2 * static_cast<std::size_t>(n)};
+  }
+};
+
+template <class Real, Layout L, bool kAdaptive, Form F>
+class SweepLauncher {
+  using Make = CoordsFor<Real, L>;
+  using Coords = typename Make::type;
+
+ public:
+  SweepLauncher(const SweepLoopArgs& a, const SmoothOptions& o)
+      : a_(a), o_(o), c0_(Make::make(a.buf0, a.n)), c1_(Make::make(F == Form::A ? a.buf1 : a.buf0, a.n)) {}
+
+  SweepLoopStats run() {
+    if (o_.max_iterations == 0) return stats_;
+    if (o_.strategy == Strategy::SingleBlock) {
+      single_block_kernel<Real, kAdaptive, F><<<1, kSingleBlockThreads, 0, a_.stream>>>(
+          a_.view, c0_, c1_, a_.n, a_.num_tets, a_.movable, old_min(), a_.moved, a_.revert, a_.state, a_.counters,
+          o_.max_iterations);
+      CUDA_CHECK_LAUNCH();
+      ++stats_.launches;
+      return stats_;
+    }
+    for (int s = 0; s < o_.max_iterations;) {
+      const int chunk = std::min(o_.check_every, o_.max_iterations - s);
+      for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
+      CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
+      CUDA_CHECK(cudaStreamSynchronize(a_.stream));
+      ++stats_.host_checks;
+      if (o_.progress) report_progress();
+      if (a_.host_state->done) break;
+    }
+    return stats_;
+  }
+
+ private:
+  Real* old_min() const { return static_cast<Real*>(a_.old_min); }
+
+  void launch_sweep(int s) {
+    const Coords& read = (F == Form::A && (s & 1)) ? c1_ : c0_;
+    const Coords& write = (F == Form::A && (s & 1)) ? c0_ : c1_;
+    if (o_.strategy == Strategy::Coloured) {
+      const std::vector<index_t>& off = *a_.class_off;
+      for (std::size_t c = 0; c + 1 < off.size(); ++c) {
+        const index_t count = off[c + 1] - off[c];
+        if (count == 0) continue;
+        sweep_kernel<Real, kAdaptive, F><<<blocks_for(count), kBlock, 0, a_.stream>>>(
+            a_.view, read, write, a_.class_nodes + off[c], count, a_.movable, old_min(), a_.moved, a_.state,
+            a_.counters);
+        launched();
+      }
+    } else {
+      sweep_kernel<Real, kAdaptive, F><<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(
+          a_.view, read, write, nullptr, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
+      launched();
+    }
+    if (F == Form::A) {
+      for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
+        repair_check_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(
+            a_.view.tets, a_.num_tets, read, write, a_.moved, old_min(), a_.revert, a_.state, a_.counters, pass);
+        launched();
+        repair_apply_kernel<<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(a_.n, read, write, a_.moved, a_.revert,
+                                                                         a_.state, a_.counters, pass);
+        launched();
+      }
+      count_moves_kernel<<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(a_.n, read, write, a_.moved, a_.state,
+                                                                      a_.counters);
+      launched();
+    }
+    verdict_kernel<<<1, 1, 0, a_.stream>>>(a_.state, a_.counters, o_.max_iterations);
+    launched();
+  }
+
+  void launched() {
+    CUDA_CHECK_LAUNCH();
+    ++stats_.launches;
+  }
+
+  // Reports the sweeps finished since the last check (host_state is fresh).
+  void report_progress() {
+    const int done = a_.host_state->sweep;
+    if (done <= reported_) return;
+    std::vector<unsigned long long> acc(done), d2(done);
+    CUDA_CHECK(cudaMemcpy(acc.data(), a_.counters.accepted, done * sizeof(unsigned long long), cudaMemcpyDeviceToHost));
+    CUDA_CHECK(cudaMemcpy(d2.data(), a_.counters.max_disp2_bits, done * sizeof(unsigned long long),
+                          cudaMemcpyDeviceToHost));
+    for (int s = reported_; s < done; ++s) {
+      double disp2;
+      static_assert(sizeof disp2 == sizeof d2[s]);
+      std::memcpy(&disp2, &d2[s], sizeof disp2);
+      o_.progress(SweepProgress{s + 1, static_cast<std::int64_t>(acc[s]), std::sqrt(disp2)});
+    }
+    reported_ = done;
+  }
+
+  const SweepLoopArgs& a_;
+  const SmoothOptions& o_;
+  Coords c0_, c1_;
+  SweepLoopStats stats_;
+  int reported_ = 0;
+};
+
+template <class Real, Layout L, bool kAdaptive>
+SweepLoopStats run_form(const SweepLoopArgs& a, const SmoothOptions& o) {
+  return o.form == Form::A ? SweepLauncher<Real, L, kAdaptive, Form::A>(a, o).run()
+                           : SweepLauncher<Real, L, kAdaptive, Form::B>(a, o).run();
+}
+
+template <class Real, Layout L>
+SweepLoopStats run_method(const SweepLoopArgs& a, const SmoothOptions& o) {
+  return o.method == Method::Adaptive ? run_form<Real, L, true>(a, o) : run_form<Real, L, false>(a, o);
+}
+
+template <class Real, class Fn>
+void with_layout(Layout layout, void* buf, index_t n, Fn&& fn) {
+  if (layout == Layout::AoS)
+    fn(CoordsFor<Real, Layout::AoS>::make(buf, n));
+  else
+    fn(CoordsFor<Real, Layout::SoA>::make(buf, n));
+}
+
+}  // namespace detail
+
+template <class Real>
+SweepLoopStats run_sweep_loop(const SweepLoopArgs& a, const SmoothOptions& o) {
+  if (o.strategy == Strategy::Coloured && o.form == Form::A)
+    throw UsageError("the coloured strategy is an in-place (Form B) scheme; Form A is already race-free");
+  return o.layout == Layout::AoS ? detail::run_method<Real, Layout::AoS>(a, o)
+                                 : detail::run_method<Real, Layout::SoA>(a, o);
+}
+
+template <class Real>
+void load_working_coords(const double* input, void* buf, index_t n, Layout layout, const double centre[3],
+                         double inv_scale, cudaStream_t stream) {
+  detail::with_layout<Real>(layout, buf, n, [&](auto coords) {
+    load_coords_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(input, coords, n, centre[0],
+                                                                                   centre[1], centre[2], inv_scale);
+    CUDA_CHECK_LAUNCH();
+  });
+}
+
+template <class Real>
+void store_movable_coords(const void* buf, double* out, const std::uint8_t* movable, index_t n, Layout layout,
+                          const double centre[3], double scale, cudaStream_t stream) {
+  detail::with_layout<Real>(layout, const_cast<void*>(buf), n, [&](auto coords) {
+    store_coords_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(coords, out, movable, n, centre[0],
+                                                                                    centre[1], centre[2], scale);
+    CUDA_CHECK_LAUNCH();
+  });
+}
+
+template <class Real>
+void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout layout, SweepState* state,
+                      cudaStream_t stream) {
+  detail::with_layout<Real>(layout, const_cast<void*>(buf), n, [&](auto coords) {
+    edge_length_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(view, coords, n, state);
+    CUDA_CHECK_LAUNCH();
+  });
+}
+
+#define TETSMOOTH_INSTANTIATE_SWEEP_LOOP(Real)                                                                     \
+  template SweepLoopStats run_sweep_loop<Real>(const SweepLoopArgs&, const SmoothOptions&);                       \
+  template void load_working_coords<Real>(const double*, void*, index_t, Layout, const double*, double,           \
+                                          cudaStream_t);                                                           \
+  template void store_movable_coords<Real>(const void*, double*, const std::uint8_t*, index_t, Layout,            \
+                                           const double*, double, cudaStream_t);                                   \
+  template void sum_edge_lengths<Real>(const MeshView&, const void*, index_t, Layout, SweepState*, cudaStream_t);
+
+}  // namespace tetsmooth::cuda

@@ -1,0 +1,72 @@
+#pragma once
+// What a caller asks of a smoother, and what it gets back. Shared by the CPU
+// and CUDA backends and by the CLI and the benchmarks.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesh/quality_summary.hpp"
+
+namespace tetsmooth {
+
+enum class Method { Adaptive, Ordinary };
+// A: Jacobi, every node computed from sweep q's coordinates (double buffered).
+// B: in place, a node sees the neighbours already moved in this sweep.
+enum class Form { A, B };
+// Data layout of the coordinates on the device.
+enum class Layout { AoS, SoA };
+// How sweeps are launched on the GPU (see kernels/cuda/).
+enum class Strategy { SingleBlock, MultiBlock, Coloured };
+enum class Precision { Float, Double };
+enum class Device { Auto, Cpu, Cuda };
+// Node order of CPU Form B: the natural order 0..N-1 (the paper's serial
+// version) or colour by colour (race-free in parallel, same result for any
+// thread count).
+enum class Ordering { Natural, Coloured };
+
+enum class StopReason { NoMoves, Tolerance, MaxIterations, NotStarted };
+
+struct SweepProgress {
+  int sweep = 0;
+  std::int64_t accepted = 0;
+  double max_displacement = 0;
+};
+
+struct SmoothOptions {
+  Method method = Method::Adaptive;
+  Form form = Form::B;
+  Layout layout = Layout::AoS;
+  Strategy strategy = Strategy::Coloured;
+  Precision precision = Precision::Double;
+  Ordering ordering = Ordering::Natural;
+  int threads = 1;                // CPU threads; 0 = all cores
+  int max_iterations = 100;
+  double tolerance = 1e-4;        // relative to the mean edge length
+  int check_every = 4;            // CUDA: sweeps between host checks of the stop flag
+  // Called after each sweep when set (CPU: every sweep; CUDA: at each check).
+  std::function<void(const SweepProgress&)> progress;
+};
+
+struct SmoothResult {
+  int sweeps = 0;
+  StopReason stop = StopReason::NotStarted;
+  std::vector<std::int64_t> accepted_per_sweep;
+  std::vector<double> max_displacement_per_sweep;
+  std::int64_t reverted_moves = 0;  // Form A: accepted moves undone by the conflict repair
+  int num_colours = 0;
+  std::size_t movable_nodes = 0;
+  double mean_edge_length = 0;
+  double topology_ms = 0, colouring_ms = 0, smoothing_ms = 0;
+  QualitySummary before, after;
+  std::string backend;  // "cpu-serial", "cpu-threads", "cuda"
+};
+
+const char* to_string(Method m);
+const char* to_string(Form f);
+const char* to_string(Layout l);
+const char* to_string(Strategy s);
+const char* to_string(Precision p);
+const char* to_string(StopReason r);
+
+}  // namespace tetsmooth

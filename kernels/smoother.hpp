@@ -1,0 +1,28 @@
+#pragma once
+// Entry points of the smoothers. Each updates mesh.xyz in place and returns
+// what it did. Boundary nodes, nodes the file pins (mesh.fixed) and nodes in
+// no tet never move.
+#include <string>
+
+#include "kernels/smooth_options.hpp"
+#include "mesh/colouring.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+// The CPU smoother: options.threads == 1 is the serial reference; more
+// threads run Form A over nodes in parallel and Form B colour by colour.
+// `colouring` overrides the computed one (for tests against the GPU).
+SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring = nullptr);
+
+// The CUDA smoother. Throws DeviceError when CUDA support is not built or no
+// device is usable.
+SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring = nullptr);
+
+// True when a CUDA device can be used; otherwise `why` says why not.
+bool cuda_available(std::string* why = nullptr);
+
+// Picks the backend: Auto means CUDA when available, else CPU.
+SmoothResult smooth(TetMesh& mesh, const SmoothOptions& options, Device device);
+
+}  // namespace tetsmooth

@@ -1,0 +1,71 @@
+#include "mesh/colouring.hpp"
+
+#include <numeric>
+
+namespace tetsmooth {
+
+Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable) {
+  const std::size_t n = neighbours.rows();
+  Colouring result;
+  result.colour.assign(n, -1);
+  std::vector<index_t> pending;
+  for (std::size_t i = 0; i < n; ++i)
+    if (movable[i]) pending.push_back(static_cast<index_t>(i));
+
+  std::vector<index_t> winners;
+  std::vector<std::uint8_t> used;  // colours seen around one node
+  while (!pending.empty()) {
+    // A round's winners are decided on the colours of earlier rounds only.
+    winners.clear();
+    std::vector<index_t> still;
+    for (index_t i : pending) {
+      bool wins = true;
+      for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i) && wins; ++j)
+        if (movable[*j] && result.colour[*j] < 0 && colours_before(*j, i)) wins = false;
+      (wins ? winners : still).push_back(i);
+    }
+    for (index_t i : winners) {
+      used.assign(used.size(), 0);
+      for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j) {
+        const int c = result.colour[*j];
+        if (c < 0) continue;
+        if (static_cast<std::size_t>(c) >= used.size()) used.resize(c + 1, 0);
+        used[c] = 1;
+      }
+      int c = 0;
+      while (static_cast<std::size_t>(c) < used.size() && used[c]) ++c;
+      result.colour[i] = c;
+      result.num_colours = std::max(result.num_colours, c + 1);
+    }
+    pending.swap(still);
+    ++result.rounds;
+  }
+  result.classes = colour_classes(result.colour, result.num_colours);
+  return result;
+}
+
+Csr colour_classes(const std::vector<std::int32_t>& colour, int num_colours) {
+  Csr classes;
+  classes.offsets.assign(static_cast<std::size_t>(num_colours) + 1, 0);
+  for (std::int32_t c : colour)
+    if (c >= 0) ++classes.offsets[static_cast<std::size_t>(c) + 1];
+  std::partial_sum(classes.offsets.begin(), classes.offsets.end(), classes.offsets.begin());
+  classes.items.resize(classes.offsets.back());
+  std::vector<index_t> fill(classes.offsets.begin(), classes.offsets.end() - 1);
+  for (std::size_t i = 0; i < colour.size(); ++i)
+    if (colour[i] >= 0) classes.items[fill[colour[i]]++] = static_cast<index_t>(i);
+  return classes;
+}
+
+bool is_valid_colouring(const Csr& neighbours, const std::vector<std::uint8_t>& movable,
+                        const std::vector<std::int32_t>& colour) {
+  for (std::size_t i = 0; i < neighbours.rows(); ++i) {
+    if (!movable[i]) continue;
+    if (colour[i] < 0) return false;
+    for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j)
+      if (movable[*j] && colour[*j] == colour[i]) return false;
+  }
+  return true;
+}
+
+}  // namespace tetsmooth

@@ -1,0 +1,52 @@
+#pragma once
+// Graph colouring of the movable nodes so that no two neighbours share a
+// colour: nodes of one colour can move at once without a race.
+//
+// Jones-Plassmann with first fit: every node has the priority
+// colouring_priority(i); in each round every uncoloured node whose priority
+// beats all its uncoloured movable neighbours takes the smallest colour no
+// coloured neighbour has. The nodes of a round are independent, so the
+// result does not depend on the order they are processed in: the CUDA
+// version produces exactly the same colouring.
+#include <cstdint>
+#include <vector>
+
+#include "mesh/csr.hpp"
+#include "mesh/hd.hpp"
+
+namespace tetsmooth {
+
+// A fixed hash of the node index (splitmix-like); ties broken by index.
+TS_HD std::uint32_t colouring_priority(std::uint32_t i) {
+  std::uint32_t x = i * 0x9E3779B9u + 0x7F4A7C15u;
+  x ^= x >> 16;
+  x *= 0x85EBCA6Bu;
+  x ^= x >> 13;
+  x *= 0xC2B2AE35u;
+  x ^= x >> 16;
+  return x;
+}
+
+// True when node a goes before node b (higher priority, then lower index).
+TS_HD bool colours_before(std::uint32_t a, std::uint32_t b) {
+  const std::uint32_t pa = colouring_priority(a), pb = colouring_priority(b);
+  return pa > pb || (pa == pb && a < b);
+}
+
+struct Colouring {
+  std::vector<std::int32_t> colour;  // per node; -1 for nodes that never move
+  int num_colours = 0;
+  int rounds = 0;                    // Jones-Plassmann rounds taken
+  Csr classes;                       // colour -> its nodes, ascending
+};
+
+Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable);
+
+// Builds `classes` from a per-node colour array (-1 = uncoloured).
+Csr colour_classes(const std::vector<std::int32_t>& colour, int num_colours);
+
+// True when no two neighbours share a colour and every movable node has one.
+bool is_valid_colouring(const Csr& neighbours, const std::vector<std::uint8_t>& movable,
+                        const std::vector<std::int32_t>& colour);
+
+}  // namespace tetsmooth

@@ -1,0 +1,45 @@
+#pragma once
+// What a mesh file carries besides node coordinates and tets, kept so that a
+// read-smooth-write round trip loses nothing. The smoother never looks here.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tetsmooth {
+
+// A block of non-tet elements passed through unchanged (triangles, lines,
+// points, ...). Their nodes are fixed by the reader (TetMesh::fixed).
+struct PassThroughBlock {
+  std::string kind;            // "triangle", "line", "vertex", "quad", ...
+  int nodes_per_element = 0;
+  std::vector<std::int32_t> connectivity;  // 0-based node indices
+  std::vector<int> tags;       // per element: physical/region tag, or empty
+  std::vector<int> entity_tags;  // per element: geometric entity tag (Gmsh), or empty
+};
+
+struct FileExtras {
+  std::vector<long long> node_tags;   // original node ids (sparse Gmsh tags), or empty
+  std::vector<int> tet_tags;          // per tet: physical/region attribute, or empty
+  std::vector<int> tet_entity_tags;   // per tet: geometric entity tag (Gmsh), or empty
+  std::vector<PassThroughBlock> blocks;
+  // Format sections reproduced verbatim on write (e.g. "$Entities", "$PhysicalNames"
+  // bodies for Gmsh), keyed by section name.
+  std::vector<std::pair<std::string, std::string>> raw_sections;
+  // TetGen .node boundary markers (one per node) and node attributes
+  // (node_attribute_count per node, row-major), or empty.
+  std::vector<int> node_markers;
+  int node_attribute_count = 0;
+  std::vector<double> node_attributes;
+  // Gmsh MSH 4.1: the model entity (dimension, tag) each node is classified
+  // on, one pair per node, or empty. Medit vertex references go to
+  // node_markers, the same per-node label as TetGen's boundary markers.
+  std::vector<int> node_entity_dims;
+  std::vector<int> node_entity_tags;
+  // Medit RequiredVertices and Corners: 0-based node indices, kept apart
+  // from TetMesh::fixed (which also holds the nodes of pass-through
+  // elements) so that a Medit file is written back as it was read.
+  std::vector<std::int32_t> required_nodes;
+  std::vector<std::int32_t> corner_nodes;
+};
+
+}  // namespace tetsmooth

@@ -1,0 +1,34 @@
+#pragma once
+// Writing files so that a reader never sees a half-written one: the body is
+// written to a temporary file beside the target (same directory, so the
+// rename cannot cross file systems), flushed to disk, and renamed over the
+// target. On any failure the temporary is removed and OutputError names the
+// path and the reason (strerror). Exceptions thrown by the body itself are
+// passed on unchanged, after the same clean-up.
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace tetsmooth {
+
+using StreamBody = std::function<void(std::ostream&)>;
+
+// `binary` states the body's intent; on POSIX both modes write the bytes as
+// given (no newline translation), so it only matters on platforms with a
+// text mode.
+void write_atomically(const std::string& path, const StreamBody& body, bool binary = false);
+
+// One file of a set written together (TetGen X.node + X.ele).
+struct AtomicPart {
+  std::string path;
+  StreamBody body;
+};
+
+// Writes every part to its temporary first and renames only when all of
+// them are complete, so a failure in any body leaves every target as it was.
+// (Renames are atomic one by one, not as a set: if a rename itself fails
+// after an earlier one succeeded, the earlier target is already replaced.)
+void write_atomically(const std::vector<AtomicPart>& parts, bool binary = false);
+
+}  // namespace tetsmooth

@@ -1,0 +1,64 @@
+#pragma once
+// Internals shared by the Gmsh MSH reader and writer (not a public API):
+// the element types this library handles and the model entities of an MSH 4
+// $Entities section.
+#include <cstddef>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tetsmooth::gmsh {
+
+// A first-order element type. `kind` is the PassThroughBlock::kind used for
+// it (meshio's cell type names), `dim` the dimension of the entity it lives on.
+struct ElementType {
+  int id;
+  const char* kind;
+  int nodes;
+  int dim;
+};
+
+inline constexpr int kTetType = 4;
+
+const ElementType* element_type(int id);                    // nullptr if not handled
+const ElementType* element_type_of_kind(const std::string& kind);  // nullptr if none
+// "unsupported element type 11 (10-node tetrahedron)"; the name is left out
+// for ids Gmsh does not define either.
+std::string unsupported_element_type(int id);
+
+// A model entity. Points (dim 0) carry their coordinates in box[0..2]; the
+// others a bounding box min x,y,z then max x,y,z. `bounding` lists the tags
+// of the entities of dimension dim-1 on its boundary, signed by orientation.
+struct Entity {
+  int dim = 0;
+  int tag = 0;
+  double box[6] = {0, 0, 0, 0, 0, 0};
+  std::vector<int> physicals;
+  std::vector<int> bounding;
+};
+
+// The entities of a file, in file order (points, curves, surfaces, volumes).
+class Entities {
+ public:
+  // False if (dim, tag) is already present: the file declares it twice.
+  bool add(Entity entity);
+  const Entity* find(int dim, int tag) const;
+  const std::vector<Entity>& list() const { return list_; }
+  std::size_t count(int dim) const;
+
+ private:
+  std::vector<Entity> list_;
+  std::map<std::pair<int, int>, std::size_t> index_;
+};
+
+// The first physical tag of entity (dim, tag), 0 when it has none or the
+// entity is unknown: the one physical tag an element carries in MSH 2.
+int first_physical(const Entities& entities, int dim, int tag);
+
+// The body of an ASCII $Entities section, parsed (throws InputError naming
+// `source` and the line) and written back.
+Entities parse_entities_text(const std::string& body, const std::string& source);
+std::string format_entities_text(const Entities& entities);
+
+}  // namespace tetsmooth::gmsh

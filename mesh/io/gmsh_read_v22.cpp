@@ -1,0 +1,118 @@
+// MSH 2.2 $Nodes and $Elements. The binary encoding is not the ASCII one
+// written in bytes: counts stay text and elements come in typed runs.
+#include <limits>
+
+#include "mesh/io/gmsh_source.hpp"
+
+namespace tetsmooth::gmsh {
+namespace {
+
+// MSH 2 gives each element its tags directly: the first is the physical
+// group, the second the elementary (entity) tag; partition tags follow.
+void add_element(ReadState& state, const ElementType& type, const std::vector<index_t>& nodes, int physical,
+                 int elementary) {
+  FileExtras& extras = state.mesh.extras;
+  if (type.id == kTetType) {
+    state.mesh.tets.insert(state.mesh.tets.end(), nodes.begin(), nodes.end());
+    extras.tet_tags.push_back(physical);
+    extras.tet_entity_tags.push_back(elementary);
+    return;
+  }
+  PassThroughBlock& block = state.block_for(type);
+  block.connectivity.insert(block.connectivity.end(), nodes.begin(), nodes.end());
+  block.tags.push_back(physical);
+  block.entity_tags.push_back(elementary);
+}
+
+template <class Source>
+const ElementType& checked_type(Source& src, int type_id) {
+  const ElementType* type = element_type(type_id);
+  if (type == nullptr) src.fail(unsupported_element_type(type_id));
+  return *type;
+}
+
+}  // namespace
+
+template <class Source>
+void read_nodes_v22(Source& src, ReadState& state) {
+  const std::uint64_t total = src.text_count("number of nodes");
+  if (total > static_cast<std::uint64_t>(std::numeric_limits<index_t>::max()))
+    src.fail(std::to_string(total) + " nodes exceed the 32-bit index range");
+  const std::size_t expected = src.reservable(total, 4 + 24);
+  TetMesh& mesh = state.mesh;
+  mesh.xyz.reserve(3 * expected);
+  mesh.extras.node_tags.reserve(expected);
+  for (std::uint64_t i = 0; i < total; ++i) {
+    long long tag = 0;
+    if constexpr (Source::kBinary) {
+      tag = src.int_value("node tag");
+      if (tag < 0) src.fail("negative node tag " + std::to_string(tag));
+    } else {
+      const std::uint64_t value = src.size_value("node tag");
+      if (value > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
+        src.fail("node tag " + std::to_string(value) + " is too large");
+      tag = static_cast<long long>(value);
+    }
+    mesh.extras.node_tags.push_back(tag);
+    for (int k = 0; k < 3; ++k) mesh.xyz.push_back(src.real_value("node coordinate"));
+  }
+  const long long repeated = state.lookup.build(mesh.extras.node_tags);
+  if (repeated >= 0) src.fail("node tag " + std::to_string(repeated) + " occurs twice in $Nodes");
+}
+
+template void read_nodes_v22<AsciiSource>(AsciiSource&, ReadState&);
+template void read_nodes_v22<BinarySource>(BinarySource&, ReadState&);
+
+void read_elements_v22(AsciiSource& src, ReadState& state) {
+  const std::uint64_t total = src.size_value("number of elements");
+  std::vector<index_t> nodes;
+  for (std::uint64_t e = 0; e < total; ++e) {
+    src.size_value("element tag");
+    const ElementType& type = checked_type(src, src.int_value("element type"));
+    const std::uint64_t tags = src.size_value("number of element tags");
+    int physical = 0, elementary = 0;
+    for (std::uint64_t k = 0; k < tags; ++k) {
+      const int value = src.int_value("element tag value");
+      if (k == 0) physical = value;
+      if (k == 1) elementary = value;
+    }
+    nodes.resize(static_cast<std::size_t>(type.nodes));
+    for (index_t& n : nodes) n = node_index(src, state, src.size_value("node tag"));
+    add_element(state, type, nodes, physical, elementary);
+  }
+}
+
+void read_elements_v22(BinarySource& src, ReadState& state) {
+  const std::uint64_t total = src.text_count("number of elements");
+  src.reservable(total, 8);  // at least an element number and one node
+  std::vector<index_t> nodes;
+  for (std::uint64_t seen = 0; seen < total;) {
+    const ElementType& type = checked_type(src, src.int_value("element type"));
+    const int count = src.int_value("number of elements following");
+    const int tags = src.int_value("number of element tags");
+    if (count <= 0 || static_cast<std::uint64_t>(count) > total - seen)
+      src.fail("a run of " + std::to_string(count) + " elements does not fit the " + std::to_string(total - seen) +
+               " still to come");
+    if (tags < 0) src.fail("negative number of element tags " + std::to_string(tags));
+    src.reservable(static_cast<std::uint64_t>(count), 4 * (1 + static_cast<std::size_t>(tags) + type.nodes));
+    nodes.resize(static_cast<std::size_t>(type.nodes));
+    for (int e = 0; e < count; ++e) {
+      src.int_value("element number");
+      int physical = 0, elementary = 0;
+      for (int k = 0; k < tags; ++k) {
+        const int value = src.int_value("element tag value");
+        if (k == 0) physical = value;
+        if (k == 1) elementary = value;
+      }
+      for (index_t& n : nodes) {
+        const int tag = src.int_value("node tag");
+        if (tag < 0) src.fail("negative node tag " + std::to_string(tag));
+        n = node_index(src, state, static_cast<std::uint64_t>(tag));
+      }
+      add_element(state, type, nodes, physical, elementary);
+    }
+    seen += static_cast<std::uint64_t>(count);
+  }
+}
+
+}  // namespace tetsmooth::gmsh

@@ -1,0 +1,157 @@
+#pragma once
+// The values of an MSH file read one at a time, either as text tokens (ASCII
+// files) or as raw bytes (binary files), so that one parser per section
+// serves both encodings. Both sources name the file and the line (ASCII) or
+// byte offset (binary) in every error. Internal to the Gmsh reader.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "mesh/io/gmsh_detail.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::gmsh {
+
+class AsciiSource {
+ public:
+  static constexpr bool kBinary = false;
+
+  explicit AsciiSource(TextLines& lines) : lines_(lines) {}
+
+  // Section framing: the next "$Name" line, or an empty view at the end of
+  // the file; and the check of the "$EndName" that must close a section.
+  std::string_view next_section();
+  void expect_end(std::string_view end_name);
+  // Skips an unknown section up to and including its end line.
+  void skip_section(std::string_view end_name);
+
+  // The next whole line (trimmed); for the text parts of a section.
+  std::string_view line(const char* what);
+
+  std::uint64_t size_value(const char* what);  // a count or tag, >= 0
+  int int_value(const char* what);
+  double real_value(const char* what);  // finite values only
+  // A count the MSH 2 binary encoding writes as text; here it is any count.
+  std::uint64_t text_count(const char* what) { return size_value(what); }
+
+  // How many items to reserve room for when a header announces `count` of
+  // them. Text gives no bound on what is left, so the reservation is capped
+  // and the containers grow as the items are actually read.
+  std::size_t reservable(std::uint64_t count, std::size_t /*min_bytes_each*/) const {
+    return count < kReserveCap ? static_cast<std::size_t>(count) : kReserveCap;
+  }
+
+  // While recording, every line that is started is appended (trimmed, with a
+  // newline) to the record: how a section body is kept verbatim.
+  void start_recording();
+  std::string stop_recording();
+
+  std::string where() const { return lines_.where(); }
+  [[noreturn]] void fail(const std::string& what) const { lines_.fail(what); }
+
+ private:
+  static constexpr std::size_t kReserveCap = std::size_t{1} << 16;
+
+  bool advance();  // to the next line holding a token; false at the end
+  std::string_view token(const char* what);
+  std::string_view current_line() const;
+
+  TextLines& lines_;
+  std::size_t taken_ = 0;  // tokens of the current line already used
+  bool started_ = false;
+  bool recording_ = false;
+  std::string record_;
+};
+
+class BinarySource {
+ public:
+  static constexpr bool kBinary = true;
+
+  // `data` holds the file from byte `base` on; `swap` when the file was
+  // written with the other byte order.
+  BinarySource(std::string data, std::size_t base, bool swap, std::string source)
+      : data_(std::move(data)), base_(base), swap_(swap), source_(std::move(source)) {}
+
+  std::string_view next_section();
+  void expect_end(std::string_view end_name);
+  void skip_section(std::string_view end_name);
+
+  std::string_view line(const char* what);
+
+  std::uint64_t size_value(const char* what);
+  int int_value(const char* what);
+  double real_value(const char* what);
+  std::uint64_t text_count(const char* what);
+
+  // Fails unless `count` items of at least `min_bytes_each` bytes fit in
+  // what is left of the file: a corrupted count must not allocate.
+  std::size_t reservable(std::uint64_t count, std::size_t min_bytes_each) const;
+
+  std::string where() const;
+  [[noreturn]] void fail(const std::string& what) const;
+
+ private:
+  void read_raw(void* out, std::size_t bytes, const char* what);
+  void skip_blank();
+  std::string_view raw_line();
+
+  std::string data_;
+  std::size_t pos_ = 0;
+  std::size_t base_;
+  bool swap_;
+  std::string source_;
+};
+
+// The body of a $Entities section (MSH 4.1), either encoding.
+template <class Source>
+Entities read_entities(Source& src);
+
+// Node tag -> 0-based index, for tags dense or sparse.
+class NodeLookup {
+ public:
+  // Returns a tag that occurs twice, or -1 when all are distinct.
+  long long build(const std::vector<long long>& tags);
+  index_t find(long long tag) const;  // -1 when absent
+
+ private:
+  std::vector<index_t> dense_;                        // by tag, when tags are dense enough
+  std::vector<std::pair<long long, index_t>> sparse_;  // sorted by tag, otherwise
+};
+
+// What the section parsers build up while reading one file.
+struct ReadState {
+  int major = 0;  // MSH version, 2 or 4
+  TetMesh mesh;
+  NodeLookup lookup;
+  bool has_nodes = false;
+  bool has_elements = false;
+  bool has_entities = false;
+  Entities entities;
+  std::vector<std::pair<int, std::size_t>> block_of_type;  // element type id -> index in mesh.extras.blocks
+
+  PassThroughBlock& block_for(const ElementType& type);
+};
+
+// The 0-based index of node `tag`; fails naming the tag when it is unknown.
+template <class Source>
+index_t node_index(Source& src, const ReadState& state, std::uint64_t tag) {
+  const index_t i = tag > static_cast<std::uint64_t>(INT64_MAX) ? -1 : state.lookup.find(static_cast<long long>(tag));
+  if (i < 0) src.fail("element refers to node tag " + std::to_string(tag) + ", which is not in $Nodes");
+  return i;
+}
+
+// Section bodies, read after their "$Name" line and up to their "$EndName".
+template <class Source>
+void read_nodes_v41(Source& src, ReadState& state);
+template <class Source>
+void read_elements_v41(Source& src, ReadState& state);
+template <class Source>
+void read_nodes_v22(Source& src, ReadState& state);
+void read_elements_v22(AsciiSource& src, ReadState& state);
+void read_elements_v22(BinarySource& src, ReadState& state);
+
+}  // namespace tetsmooth::gmsh

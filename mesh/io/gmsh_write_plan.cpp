@@ -1,0 +1,182 @@
+#include "mesh/io/gmsh_write_plan.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <numeric>
+
+#include "mesh/errors.hpp"
+
+namespace tetsmooth::gmsh {
+namespace {
+
+const std::string* raw_section(const FileExtras& extras, const char* name) {
+  for (const auto& [key, body] : extras.raw_sections)
+    if (key == name) return &body;
+  return nullptr;
+}
+
+// The file's own node tags when they can be written back: one per node,
+// positive and distinct; otherwise 1..N.
+std::vector<long long> output_node_tags(const TetMesh& mesh) {
+  const std::vector<long long>& tags = mesh.extras.node_tags;
+  if (tags.size() == mesh.num_nodes()) {
+    std::vector<long long> sorted(tags);
+    std::sort(sorted.begin(), sorted.end());
+    if ((sorted.empty() || sorted.front() > 0) && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
+      return tags;
+  }
+  std::vector<long long> fresh(mesh.num_nodes());
+  std::iota(fresh.begin(), fresh.end(), 1LL);
+  return fresh;
+}
+
+// Groups with the entity and physical tags the mesh gives, or empty arrays
+// where it gives none.
+std::vector<ElementGroup> given_groups(const TetMesh& mesh) {
+  const FileExtras& extras = mesh.extras;
+  std::vector<ElementGroup> groups;
+  ElementGroup& tets = groups.emplace_back();
+  tets.type = element_type(kTetType);
+  tets.connectivity = mesh.tets.data();
+  tets.count = mesh.num_tets();
+  if (extras.tet_entity_tags.size() == tets.count) tets.entity = extras.tet_entity_tags;
+  if (extras.tet_tags.size() == tets.count) tets.physical = extras.tet_tags;
+  for (const PassThroughBlock& block : extras.blocks) {
+    const ElementType* type = element_type_of_kind(block.kind);
+    if (type == nullptr || type->id == kTetType || type->nodes != block.nodes_per_element)
+      throw OutputError("MSH output cannot hold the pass-through '" + block.kind + "' block (" +
+                        std::to_string(block.nodes_per_element) + " nodes per element)");
+    ElementGroup& g = groups.emplace_back();
+    g.type = type;
+    g.connectivity = block.connectivity.data();
+    g.count = block.connectivity.size() / static_cast<std::size_t>(type->nodes);
+    if (block.entity_tags.size() == g.count) g.entity = block.entity_tags;
+    if (block.tags.size() == g.count) g.physical = block.tags;
+  }
+  return groups;
+}
+
+// Keeps the file's $Entities if every element still refers to one of them.
+bool adopt_file_entities(const FileExtras& extras, std::vector<ElementGroup>& groups, WritePlan& plan) {
+  const std::string* raw = raw_section(extras, "$Entities");
+  if (raw == nullptr) return false;
+  Entities entities;
+  try {
+    entities = parse_entities_text(*raw, "$Entities");
+  } catch (const InputError&) {
+    return false;  // not what the reader stored: make entities up instead
+  }
+  for (const ElementGroup& g : groups) {
+    if (g.entity.size() != g.count) return false;
+    for (int tag : g.entity)
+      if (entities.find(g.type->dim, tag) == nullptr) return false;
+  }
+  // The physical tags follow from the entities, so that MSH 2.2 output
+  // agrees with MSH 4.1 output.
+  for (ElementGroup& g : groups) {
+    g.physical.resize(g.count);
+    for (std::size_t e = 0; e < g.count; ++e) g.physical[e] = first_physical(entities, g.type->dim, g.entity[e]);
+  }
+  plan.entities = std::move(entities);
+  plan.entities_text = *raw;
+  return true;
+}
+
+void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, WritePlan& plan) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<Entity> made;
+  std::map<std::pair<int, int>, std::size_t> at;
+  for (ElementGroup& g : groups) {
+    const int dim = g.type->dim;
+    const int nodes = g.type->nodes;
+    std::vector<int> entity(g.count), physical(g.count);
+    for (std::size_t e = 0; e < g.count; ++e) {
+      const int p = g.physical.empty() ? 0 : std::max(g.physical[e], 0);
+      const int given = g.entity.empty() ? 0 : g.entity[e];
+      const int tag = given > 0 ? given : (p > 0 ? p : 1);
+      entity[e] = tag;
+      physical[e] = p;
+      const auto [it, fresh] = at.emplace(std::make_pair(dim, tag), made.size());
+      if (fresh) {
+        Entity& x = made.emplace_back();
+        x.dim = dim;
+        x.tag = tag;
+        std::fill(x.box, x.box + 3, kInf);
+        std::fill(x.box + 3, x.box + 6, -kInf);
+      }
+      Entity& x = made[it->second];
+      if (p > 0 && std::find(x.physicals.begin(), x.physicals.end(), p) == x.physicals.end()) x.physicals.push_back(p);
+      for (int k = 0; k < nodes; ++k) {
+        const double* xyz = &mesh.xyz[3 * static_cast<std::size_t>(g.connectivity[e * nodes + k])];
+        for (int c = 0; c < 3; ++c) {
+          x.box[c] = std::min(x.box[c], xyz[c]);
+          x.box[c + 3] = std::max(x.box[c + 3], xyz[c]);
+        }
+      }
+    }
+    g.entity = std::move(entity);
+    g.physical = std::move(physical);
+  }
+  for (Entity& x : made) plan.entities.add(std::move(x));
+  plan.entities_text = format_entities_text(plan.entities);
+}
+
+void classify_nodes(const TetMesh& mesh, const std::vector<ElementGroup>& groups, WritePlan& plan) {
+  const FileExtras& extras = mesh.extras;
+  const std::size_t n = mesh.num_nodes();
+  if (extras.node_entity_dims.size() == n && extras.node_entity_tags.size() == n) {
+    bool known = true;
+    for (std::size_t i = 0; i < n && known; ++i)
+      known = plan.entities.find(extras.node_entity_dims[i], extras.node_entity_tags[i]) != nullptr;
+    if (known) {
+      plan.node_dims = extras.node_entity_dims;
+      plan.node_entities = extras.node_entity_tags;
+      return;
+    }
+  }
+  // Nodes in no element go with the first tet's volume.
+  plan.node_dims.assign(n, 3);
+  plan.node_entities.assign(n, groups.front().entity.front());
+  std::vector<int> best(n, 4);
+  for (const ElementGroup& g : groups) {
+    const std::size_t entries = g.count * static_cast<std::size_t>(g.type->nodes);
+    for (std::size_t k = 0; k < entries; ++k) {
+      const auto node = static_cast<std::size_t>(g.connectivity[k]);
+      if (g.type->dim < best[node]) {
+        best[node] = g.type->dim;
+        plan.node_dims[node] = g.type->dim;
+        plan.node_entities[node] = g.entity[k / static_cast<std::size_t>(g.type->nodes)];
+      }
+    }
+  }
+}
+
+void check_indices(const TetMesh& mesh, const std::vector<ElementGroup>& groups) {
+  for (const ElementGroup& g : groups) {
+    const std::size_t entries = g.count * static_cast<std::size_t>(g.type->nodes);
+    for (std::size_t k = 0; k < entries; ++k)
+      if (g.connectivity[k] < 0 || static_cast<std::size_t>(g.connectivity[k]) >= mesh.num_nodes())
+        throw OutputError(std::string("a ") + g.type->kind + " element refers to node " +
+                          std::to_string(g.connectivity[k]) + ", outside the " + std::to_string(mesh.num_nodes()) +
+                          " nodes");
+  }
+}
+
+}  // namespace
+
+WritePlan plan_gmsh_output(const TetMesh& mesh) {
+  if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
+  WritePlan plan;
+  std::vector<ElementGroup> groups = given_groups(mesh);
+  check_indices(mesh, groups);
+  if (!adopt_file_entities(mesh.extras, groups, plan)) make_entities(mesh, groups, plan);
+  classify_nodes(mesh, groups, plan);
+  plan.node_tags = output_node_tags(mesh);
+  if (const std::string* names = raw_section(mesh.extras, "$PhysicalNames")) plan.physical_names = *names;
+  for (const ElementGroup& g : groups) plan.element_count += g.count;
+  plan.groups = std::move(groups);
+  return plan;
+}
+
+}  // namespace tetsmooth::gmsh

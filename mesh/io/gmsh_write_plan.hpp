@@ -1,0 +1,47 @@
+#pragma once
+// What every MSH flavour writes, worked out once from a TetMesh: node tags,
+// the model entities and each element's entity and physical tag. Internal
+// to the Gmsh writer.
+//
+// A mesh read from MSH 4.1 keeps its $Entities (verbatim) and its node and
+// element classification, as long as every entity an element or node refers
+// to is still declared. Any other mesh gets entities made up from what it
+// carries: each element's entity tag, else its physical tag (region
+// attribute, Medit reference), else 1; each entity lists the positive
+// physical tags of its elements. Nodes are then classified on the
+// lowest-dimensional entity of an element that uses them, as Gmsh does.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/io/gmsh_detail.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::gmsh {
+
+// The tets, or one pass-through block: `count` elements of `type` with
+// `type->nodes` 0-based indices each from `connectivity`.
+struct ElementGroup {
+  const ElementType* type = nullptr;
+  const index_t* connectivity = nullptr;
+  std::size_t count = 0;
+  std::vector<int> entity;    // per element
+  std::vector<int> physical;  // per element, 0 for none
+};
+
+struct WritePlan {
+  std::vector<long long> node_tags;  // per node, positive and distinct
+  std::vector<int> node_dims;        // per node: the entity it is classified on
+  std::vector<int> node_entities;
+  Entities entities;
+  std::string entities_text;   // $Entities body as written in ASCII
+  std::string physical_names;  // $PhysicalNames body, or empty
+  std::vector<ElementGroup> groups;  // tets first; element tags run 1, 2, ... in this order
+  std::size_t element_count = 0;
+};
+
+// Throws OutputError for pass-through blocks that MSH cannot hold.
+WritePlan plan_gmsh_output(const TetMesh& mesh);
+
+}  // namespace tetsmooth::gmsh

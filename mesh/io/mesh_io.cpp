@@ -1,0 +1,116 @@
+#include "mesh/io/mesh_io.hpp"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cctype>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/gmsh_io.hpp"
+#include "mesh/io/medit_io.hpp"
+#include "mesh/io/tetgen_io.hpp"
+#include "mesh/io/tsm_cache.hpp"
+#include "mesh/io/vtk_legacy.hpp"
+#include "mesh/io/vtu_io.hpp"
+
+namespace tetsmooth {
+namespace {
+
+struct FormatName {
+  const char* name;
+  MeshFormat format;
+};
+// The first name of each format is the one format_name gives.
+constexpr FormatName kNames[] = {
+    {"auto", MeshFormat::Auto},          {"tetgen", MeshFormat::TetGen}, {"vtu", MeshFormat::Vtu},
+    {"vtk", MeshFormat::Vtk},            {"msh41", MeshFormat::Msh41},   {"msh", MeshFormat::Msh41},
+    {"msh41-binary", MeshFormat::Msh41Binary}, {"msh22", MeshFormat::Msh22}, {"medit", MeshFormat::Medit},
+    {"tsm", MeshFormat::Cache},
+};
+
+struct Extension {
+  const char* ext;
+  MeshFormat format;
+};
+constexpr Extension kExtensions[] = {
+    {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},
+    {".vtk", MeshFormat::Vtk},     {".msh", MeshFormat::Msh41},  {".mesh", MeshFormat::Medit},
+    {".tsm", MeshFormat::Cache},
+};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+std::string extension_of(const std::string& path) {
+  const std::size_t slash = path.rfind('/');
+  const std::size_t dot = path.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  return lower(path.substr(dot));
+}
+
+bool is_file(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
+}
+
+}  // namespace
+
+MeshFormat parse_format(const std::string& name) {
+  const std::string key = lower(name);
+  for (const FormatName& f : kNames)
+    if (key == f.name) return f.format;
+  throw UsageError("unknown mesh format '" + name +
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit or tsm)");
+}
+
+const char* format_name(MeshFormat f) {
+  for (const FormatName& n : kNames)
+    if (n.format == f) return n.name;
+  return "unknown";
+}
+
+MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
+  if (requested != MeshFormat::Auto) return requested;
+  const std::string ext = extension_of(path);
+  for (const Extension& e : kExtensions)
+    if (ext == e.ext) return e.format;
+  throw UsageError("cannot tell the mesh format of '" + path +
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh or .tsm, or give the format");
+}
+
+TetMesh read_mesh(const std::string& path, MeshFormat format) {
+  // A TetGen base name ("box" for box.node + box.ele) has no extension.
+  if (format == MeshFormat::Auto && extension_of(path).empty() && is_file(path + ".node"))
+    format = MeshFormat::TetGen;
+  switch (format_from_path(path, format)) {
+    case MeshFormat::TetGen: return read_tetgen(path);
+    case MeshFormat::Vtu: return read_vtu_file(path);
+    case MeshFormat::Vtk: return read_vtk_file(path);
+    case MeshFormat::Msh41:
+    case MeshFormat::Msh41Binary:
+    case MeshFormat::Msh22: return read_gmsh_file(path);
+    case MeshFormat::Medit: return read_medit_file(path);
+    case MeshFormat::Cache: return read_cache_file(path);
+    case MeshFormat::Auto: break;
+  }
+  throw UsageError("no reader for format " + std::string(format_name(format)));
+}
+
+void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format, const MeshFields& fields) {
+  switch (format_from_path(path, format)) {
+    case MeshFormat::TetGen: return write_tetgen(mesh, path);
+    case MeshFormat::Vtu: return write_vtu_file(mesh, path, fields);
+    case MeshFormat::Vtk: return write_vtk_file(mesh, path, fields);
+    case MeshFormat::Msh41: return write_gmsh_file(mesh, path, MshFlavour::V41Ascii, fields);
+    case MeshFormat::Msh41Binary: return write_gmsh_file(mesh, path, MshFlavour::V41Binary, fields);
+    case MeshFormat::Msh22: return write_gmsh_file(mesh, path, MshFlavour::V22Ascii, fields);
+    case MeshFormat::Medit: return write_medit_file(mesh, path);
+    case MeshFormat::Cache: return write_cache_file(mesh, path);
+    case MeshFormat::Auto: break;
+  }
+  throw UsageError("no writer for format " + std::string(format_name(format)));
+}
+
+}  // namespace tetsmooth

@@ -1,0 +1,181 @@
+#include "mesh/io/tetgen_io.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/atomic_file.hpp"
+#include "mesh/io/input_file.hpp"
+#include "mesh/io/number_text.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth {
+namespace {
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// A header count, bounded so that a corrupt header cannot ask for more
+// entries than 32-bit indices can address.
+std::size_t count_field(const TextLines& lines, std::size_t i, const char* what) {
+  const long long n = lines.integer(i, what);
+  if (n < 0 || n > std::numeric_limits<index_t>::max()) lines.fail(std::string("invalid ") + what + " " + std::to_string(n));
+  return static_cast<std::size_t>(n);
+}
+
+// Reserving for a claimed count, capped: a truncated or lying header must end
+// in a clean "unexpected end of file", not an allocation failure.
+std::size_t capped(std::size_t n) { return std::min<std::size_t>(n, std::size_t{1} << 20); }
+
+}  // namespace
+
+std::string tetgen_base(const std::string& path) {
+  for (const char* ext : {".node", ".ele"})
+    if (ends_with(path, ext)) return path.substr(0, path.size() - std::char_traits<char>::length(ext));
+  return path;
+}
+
+int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh) {
+  TextLines lines(in, source);
+  lines.require_line("the .node header \"<#nodes> 3 <#attributes> <markers 0|1>\"");
+  const std::size_t count = count_field(lines, 0, "node count");
+  if (count == 0) lines.fail("the .node file declares no nodes");
+  if (lines.size() > 1 && lines.integer(1, "dimension") != 3)
+    lines.fail("dimension " + std::string(lines.token(1, "dimension")) + " is not supported, only 3");
+  const std::size_t attrs = lines.size() > 2 ? count_field(lines, 2, "attribute count") : 0;
+  const long long markers = lines.size() > 3 ? lines.integer(3, "boundary marker flag") : 0;
+  if (markers != 0 && markers != 1) lines.fail("boundary marker flag must be 0 or 1, found " + std::to_string(markers));
+
+  mesh.xyz.clear();
+  mesh.xyz.reserve(3 * capped(count));
+  mesh.extras.node_attribute_count = static_cast<int>(attrs);
+  mesh.extras.node_attributes.clear();
+  mesh.extras.node_markers.clear();
+  long long first = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    lines.require_line("node " + std::to_string(i + 1) + " of " + std::to_string(count));
+    const long long number = lines.integer(0, "node number");
+    if (i == 0) {
+      if (number != 0 && number != 1) lines.fail("the first node number must be 0 or 1, found " + std::to_string(number));
+      first = number;
+    } else if (number != first + static_cast<long long>(i)) {
+      lines.fail("node number " + std::to_string(number) + " out of sequence, expected " +
+                 std::to_string(first + static_cast<long long>(i)));
+    }
+    for (std::size_t k = 0; k < 3; ++k) mesh.xyz.push_back(lines.real(1 + k, "coordinate"));
+    for (std::size_t k = 0; k < attrs; ++k) mesh.extras.node_attributes.push_back(lines.real(4 + k, "node attribute"));
+    if (markers != 0) {
+      const long long marker = lines.integer(4 + attrs, "boundary marker");
+      if (marker < std::numeric_limits<int>::min() || marker > std::numeric_limits<int>::max())
+        lines.fail("boundary marker " + std::to_string(marker) + " out of range");
+      mesh.extras.node_markers.push_back(static_cast<int>(marker));
+    }
+  }
+  return static_cast<int>(first);
+}
+
+void read_tetgen_ele(std::istream& in, const std::string& source, int first_index, TetMesh& mesh) {
+  TextLines lines(in, source);
+  lines.require_line("the .ele header \"<#tets> 4 <region attribute 0|1>\"");
+  const std::size_t count = count_field(lines, 0, "tet count");
+  if (count == 0) lines.fail("the .ele file declares no tets");
+  const long long per_tet = lines.size() > 1 ? lines.integer(1, "nodes per tet") : 4;
+  if (per_tet == 10) lines.fail("second-order tets (10 nodes per tet) are not supported");
+  if (per_tet != 4) lines.fail("nodes per tet must be 4, found " + std::to_string(per_tet));
+  const long long attrs = lines.size() > 2 ? lines.integer(2, "region attribute count") : 0;
+  if (attrs != 0 && attrs != 1) lines.fail("at most one region attribute per tet is supported, found " + std::to_string(attrs));
+
+  const long long num_nodes = static_cast<long long>(mesh.num_nodes());
+  mesh.tets.clear();
+  mesh.tets.reserve(4 * capped(count));
+  mesh.extras.tet_tags.clear();
+  for (std::size_t t = 0; t < count; ++t) {
+    lines.require_line("tet " + std::to_string(t + 1) + " of " + std::to_string(count));
+    lines.integer(0, "tet number");
+    for (std::size_t k = 0; k < 4; ++k) {
+      const long long node = lines.integer(1 + k, "node number");
+      if (node < first_index || node - first_index >= num_nodes)
+        lines.fail("node number " + std::to_string(node) + " out of range [" + std::to_string(first_index) + ", " +
+                   std::to_string(num_nodes + first_index) + ")");
+      mesh.tets.push_back(static_cast<index_t>(node - first_index));
+    }
+    if (attrs == 1) {
+      const double region = lines.real(5, "region attribute");
+      if (region != std::floor(region) || std::abs(region) > std::numeric_limits<int>::max())
+        lines.fail("region attribute " + std::string(lines.token(5, "")) + " is not an integer");
+      mesh.extras.tet_tags.push_back(static_cast<int>(region));
+    }
+  }
+}
+
+TetMesh read_tetgen(std::istream& node, const std::string& node_source, std::istream& ele,
+                    const std::string& ele_source) {
+  TetMesh mesh;
+  const int first = read_tetgen_node(node, node_source, mesh);
+  read_tetgen_ele(ele, ele_source, first, mesh);
+  validate_mesh(mesh, node_source);
+  return mesh;
+}
+
+TetMesh read_tetgen(const std::string& path) {
+  const std::string base = tetgen_base(path);
+  std::ifstream node = open_input(base + ".node");
+  std::ifstream ele = open_input(base + ".ele");
+  return read_tetgen(node, base + ".node", ele, base + ".ele");
+}
+
+void write_tetgen_node(const TetMesh& mesh, std::ostream& out) {
+  const std::size_t n = mesh.num_nodes();
+  const FileExtras& ex = mesh.extras;
+  const std::size_t attrs = static_cast<std::size_t>(std::max(ex.node_attribute_count, 0));
+  const bool has_attrs = attrs > 0 && ex.node_attributes.size() == attrs * n;
+  const bool has_markers = ex.node_markers.size() == n;
+  out << n << " 3 " << (has_attrs ? attrs : 0) << ' ' << (has_markers ? 1 : 0) << '\n';
+  for (std::size_t i = 0; i < n; ++i) {
+    put_integer(out, static_cast<long long>(i) + 1);
+    for (int k = 0; k < 3; ++k) {
+      out << ' ';
+      put_real(out, mesh.xyz[3 * i + k]);
+    }
+    for (std::size_t k = 0; has_attrs && k < attrs; ++k) {
+      out << ' ';
+      put_real(out, ex.node_attributes[attrs * i + k]);
+    }
+    if (has_markers) {
+      out << ' ';
+      put_integer(out, ex.node_markers[i]);
+    }
+    out << '\n';
+  }
+  out << "# Generated by tetsmooth\n";
+}
+
+void write_tetgen_ele(const TetMesh& mesh, std::ostream& out) {
+  const std::size_t t = mesh.num_tets();
+  const bool has_tags = mesh.extras.tet_tags.size() == t;
+  out << t << " 4 " << (has_tags ? 1 : 0) << '\n';
+  for (std::size_t e = 0; e < t; ++e) {
+    put_integer(out, static_cast<long long>(e) + 1);
+    for (int k = 0; k < 4; ++k) {
+      out << ' ';
+      put_integer(out, static_cast<long long>(mesh.tets[4 * e + k]) + 1);
+    }
+    if (has_tags) {
+      out << ' ';
+      put_integer(out, mesh.extras.tet_tags[e]);
+    }
+    out << '\n';
+  }
+  out << "# Generated by tetsmooth\n";
+}
+
+void write_tetgen(const TetMesh& mesh, const std::string& path) {
+  const std::string base = tetgen_base(path);
+  write_atomically({{base + ".node", [&](std::ostream& out) { write_tetgen_node(mesh, out); }},
+                    {base + ".ele", [&](std::ostream& out) { write_tetgen_ele(mesh, out); }}});
+}
+
+}  // namespace tetsmooth

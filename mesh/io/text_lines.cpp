@@ -1,0 +1,128 @@
+#include "mesh/io/text_lines.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include "mesh/errors.hpp"
+
+namespace tetsmooth {
+namespace {
+
+std::string_view strip_plus(std::string_view token) {
+  // from_chars rejects a leading '+', which Fortran-style writers emit.
+  if (token.size() > 1 && token[0] == '+' && token[1] != '-' && token[1] != '+') token.remove_prefix(1);
+  return token;
+}
+
+std::string quoted(std::string_view token) {
+  constexpr std::size_t kMax = 40;  // a binary blob must not flood the message
+  std::string s(token.substr(0, kMax));
+  if (token.size() > kMax) s += "...";
+  return "'" + s + "'";
+}
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+}  // namespace
+
+bool parse_integer(std::string_view token, long long& value) {
+  token = strip_plus(token);
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  return ec == std::errc() && ptr == end && !token.empty();
+}
+
+bool parse_real(std::string_view token, double& value) {
+  token = strip_plus(token);
+  const char* end = token.data() + token.size();
+  const auto [ptr, ec] = std::from_chars(token.data(), end, value);
+  // Out of range (1e999) is reported as such by from_chars; treat it as bad.
+  return ec == std::errc() && ptr == end && !token.empty();
+}
+
+TextLines::TextLines(std::istream& in, std::string source, char comment)
+    : in_(in), source_(std::move(source)), comment_(comment) {}
+
+bool TextLines::read_raw_line() {
+  if (!std::getline(in_, line_)) {
+    if (in_.bad()) fail("read error");
+    line_.clear();
+    tokens_.clear();
+    cursor_ = 0;
+    return false;
+  }
+  ++line_no_;
+  tokens_.clear();
+  cursor_ = 0;
+  std::string_view rest(line_);
+  if (comment_ != '\0') rest = rest.substr(0, rest.find(comment_));
+  std::size_t i = 0;
+  while (i < rest.size()) {
+    while (i < rest.size() && is_space(rest[i])) ++i;
+    const std::size_t start = i;
+    while (i < rest.size() && !is_space(rest[i])) ++i;
+    if (i > start) tokens_.push_back(rest.substr(start, i - start));
+  }
+  return true;
+}
+
+bool TextLines::next_line() {
+  while (read_raw_line())
+    if (!tokens_.empty()) return true;
+  return false;
+}
+
+void TextLines::require_line(const std::string& what) {
+  if (!next_line()) fail("unexpected end of file, expected " + what);
+}
+
+std::string_view TextLines::token(std::size_t i, const char* what) const {
+  if (i >= tokens_.size())
+    fail(std::string("expected ") + what + " (value " + std::to_string(i + 1) + " on the line), found only " +
+         std::to_string(tokens_.size()) + " values");
+  return tokens_[i];
+}
+
+long long TextLines::to_integer(std::string_view token, const char* what) const {
+  long long value = 0;
+  if (!parse_integer(token, value)) fail(std::string("expected an integer ") + what + ", found " + quoted(token));
+  return value;
+}
+
+double TextLines::to_real(std::string_view token, const char* what) const {
+  double value = 0;
+  if (!parse_real(token, value)) fail(std::string("expected a number ") + what + ", found " + quoted(token));
+  if (!std::isfinite(value)) fail(std::string("non-finite ") + what + " " + quoted(token));
+  return value;
+}
+
+long long TextLines::integer(std::size_t i, const char* what) const { return to_integer(token(i, what), what); }
+double TextLines::real(std::size_t i, const char* what) const { return to_real(token(i, what), what); }
+
+bool TextLines::at_end() {
+  while (cursor_ >= tokens_.size())
+    if (!read_raw_line()) return true;
+  return false;
+}
+
+std::string_view TextLines::next_token(const char* what) {
+  if (at_end()) fail(std::string("unexpected end of file, expected ") + what);
+  return tokens_[cursor_++];
+}
+
+std::string_view TextLines::peek_token() { return at_end() ? std::string_view() : tokens_[cursor_]; }
+
+long long TextLines::next_integer(const char* what) { return to_integer(next_token(what), what); }
+double TextLines::next_real(const char* what) { return to_real(next_token(what), what); }
+
+void TextLines::skip_past_blank_line() {
+  while (read_raw_line()) {
+    if (line_.find_first_not_of(" \t\r\v\f") == std::string::npos) return;
+  }
+}
+
+std::string TextLines::where() const { return source_ + ":" + std::to_string(line_no_); }
+
+void TextLines::fail(const std::string& what) const { throw InputError(where(), what); }
+
+}  // namespace tetsmooth

@@ -1,0 +1,76 @@
+#pragma once
+// Tokenizing of line-oriented text mesh formats (TetGen, legacy VTK, Medit,
+// MSH ASCII), keeping the line number so that every error reads
+// "file:line: what". Tokens are separated by spaces, tabs and CR (so CRLF
+// files read like LF files); a comment character cuts a line short.
+#include <cstddef>
+#include <istream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tetsmooth {
+
+// Parse a whole token (a leading '+' allowed); false if anything is left over
+// or the value does not fit. parse_real accepts "nan" and "inf": the caller
+// decides whether non-finite values are acceptable.
+bool parse_integer(std::string_view token, long long& value);
+bool parse_real(std::string_view token, double& value);
+
+class TextLines {
+ public:
+  // comment: a character that starts a comment running to the end of the
+  // line, or '\0' for formats without comments.
+  TextLines(std::istream& in, std::string source, char comment = '#');
+
+  // Line mode: moves to the next line with at least one token; false at the
+  // end of the input.
+  bool next_line();
+  // next_line(), or InputError "unexpected end of file, expected <what>".
+  void require_line(const std::string& what);
+  // Moves to the next line even if it is blank (free-text lines such as a
+  // legacy VTK title); false at the end of the input.
+  bool next_raw_line() { return read_raw_line(); }
+  const std::string& line() const { return line_; }
+
+  std::size_t size() const { return tokens_.size(); }
+  // Token i of the current line; InputError if the line is shorter.
+  std::string_view token(std::size_t i, const char* what) const;
+  long long integer(std::size_t i, const char* what) const;
+  double real(std::size_t i, const char* what) const;  // finite values only
+
+  // Token mode, for formats whose values may wrap across lines at will
+  // (legacy VTK): the tokens after the ones already taken, line by line.
+  bool at_end();
+  std::string_view next_token(const char* what);
+  // The token next_token would return, without taking it; empty at the end.
+  std::string_view peek_token();
+  // Whether the current line has tokens not yet taken (optional trailing
+  // values, such as the component count of a VTK SCALARS line).
+  bool line_has_more() const { return cursor_ < tokens_.size(); }
+  long long next_integer(const char* what);
+  double next_real(const char* what);  // finite values only
+  // Drops the rest of the current line and every following line up to and
+  // including the next blank one (sections terminated by an empty line).
+  void skip_past_blank_line();
+
+  const std::string& source() const { return source_; }
+  std::size_t line_number() const { return line_no_; }
+  std::string where() const;  // "source:line"
+  [[noreturn]] void fail(const std::string& what) const;
+
+ private:
+  bool read_raw_line();
+  long long to_integer(std::string_view token, const char* what) const;
+  double to_real(std::string_view token, const char* what) const;
+
+  std::istream& in_;
+  std::string source_;
+  char comment_;
+  std::string line_;
+  std::vector<std::string_view> tokens_;  // views into line_
+  std::size_t cursor_ = 0;                // next token for token mode
+  std::size_t line_no_ = 0;
+};
+
+}  // namespace tetsmooth

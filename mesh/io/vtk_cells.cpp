@@ -1,0 +1,164 @@
+#include "mesh/io/vtk_cells.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include "mesh/errors.hpp"
+
+namespace tetsmooth {
+namespace {
+
+constexpr std::uint8_t kVtkTetra = 10;
+
+struct PassThroughType {
+  std::uint8_t vtk;
+  const char* kind;  // PassThroughBlock::kind, as the other readers name it
+  int nodes;
+};
+constexpr PassThroughType kPassThrough[] = {{1, "vertex", 1}, {3, "line", 2}, {5, "triangle", 3}, {9, "quad", 4}};
+
+const PassThroughType* by_vtk(long long type) {
+  for (const auto& p : kPassThrough)
+    if (p.vtk == type) return &p;
+  return nullptr;
+}
+
+const PassThroughType* by_kind(const std::string& kind, int nodes) {
+  for (const auto& p : kPassThrough)
+    if (kind == p.kind && nodes == p.nodes) return &p;
+  return nullptr;
+}
+
+int to_int(long long v, const std::string& where, std::size_t cell) {
+  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
+    throw InputError(where, "cell " + std::to_string(cell) + ": tag " + std::to_string(v) + " out of range");
+  return static_cast<int>(v);
+}
+
+}  // namespace
+
+std::string vtk_cell_type_name(long long type) {
+  switch (type) {
+    case 1: return "vertex";
+    case 2: return "poly-vertex";
+    case 3: return "line";
+    case 4: return "poly-line";
+    case 5: return "triangle";
+    case 6: return "triangle strip";
+    case 7: return "polygon";
+    case 8: return "pixel";
+    case 9: return "quad";
+    case 10: return "tetra";
+    case 11: return "voxel";
+    case 12: return "hexahedron";
+    case 13: return "wedge";
+    case 14: return "pyramid";
+    case 21: return "quadratic edge";
+    case 22: return "quadratic triangle";
+    case 23: return "quadratic quad";
+    case 24: return "quadratic tetra";
+    case 25: return "quadratic hexahedron";
+    case 42: return "polyhedron";
+    default: return "type " + std::to_string(type);
+  }
+}
+
+void check_vtk_blocks(const TetMesh& mesh, const std::string& where) {
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (!by_kind(b.kind, b.nodes_per_element))
+      throw OutputError(where + ": pass-through " + b.kind + " elements with " + std::to_string(b.nodes_per_element) +
+                        " nodes have no VTK cell type supported here (vertex, line, triangle, quad)");
+}
+
+VtkCells vtk_cells_of(const TetMesh& mesh) {
+  check_vtk_blocks(mesh, "VTK output");
+  VtkCells cells;
+  const FileExtras& ex = mesh.extras;
+  bool tagged = ex.tet_tags.size() == mesh.num_tets();
+  std::size_t total = mesh.num_tets();
+  for (const PassThroughBlock& b : ex.blocks) {
+    total += b.connectivity.size() / b.nodes_per_element;
+    tagged = tagged || !b.tags.empty();
+  }
+  cells.connectivity.reserve(mesh.tets.size());
+  cells.offsets.reserve(total + 1);
+  cells.types.reserve(total);
+  cells.offsets.push_back(0);
+  cells.connectivity = mesh.tets;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    cells.offsets.push_back(static_cast<std::int64_t>(4 * (t + 1)));
+    cells.types.push_back(kVtkTetra);
+  }
+  if (tagged) {
+    cells.tags = ex.tet_tags;
+    cells.tags.resize(mesh.num_tets(), 0);
+  }
+  for (const PassThroughBlock& b : ex.blocks) {
+    const std::size_t count = b.connectivity.size() / b.nodes_per_element;
+    const std::uint8_t type = by_kind(b.kind, b.nodes_per_element)->vtk;
+    cells.connectivity.insert(cells.connectivity.end(), b.connectivity.begin(), b.connectivity.end());
+    for (std::size_t e = 0; e < count; ++e) {
+      cells.offsets.push_back(cells.offsets.back() + b.nodes_per_element);
+      cells.types.push_back(type);
+      if (tagged) cells.tags.push_back(b.tags.empty() ? 0 : b.tags[e]);
+    }
+  }
+  return cells;
+}
+
+void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
+                         const std::vector<long long>& offsets, const std::vector<long long>& types,
+                         const std::vector<long long>& tags, const std::string& where) {
+  const std::size_t count = types.size();
+  const auto fail = [&](std::size_t cell, const std::string& what) {
+    throw InputError(where, "cell " + std::to_string(cell) + ": " + what);
+  };
+  if (offsets.size() != count + 1 || offsets.front() != 0)
+    throw InputError(where, "cell offsets do not match the " + std::to_string(count) + " cell types");
+  if (!tags.empty() && tags.size() != count)
+    throw InputError(where, std::string(kVtkTagArray) + " has " + std::to_string(tags.size()) + " values for " +
+                                std::to_string(count) + " cells");
+  const long long num_nodes = static_cast<long long>(mesh.num_nodes());
+  std::vector<std::size_t> block_of_type(256, SIZE_MAX);
+  mesh.tets.clear();
+  mesh.extras.tet_tags.clear();
+  mesh.extras.blocks.clear();
+  for (std::size_t c = 0; c < count; ++c) {
+    const long long begin = offsets[c], end = offsets[c + 1];
+    if (end < begin || end > static_cast<long long>(connectivity.size()))
+      fail(c, "offset " + std::to_string(end) + " outside the connectivity array of " +
+                  std::to_string(connectivity.size()));
+    for (long long k = begin; k < end; ++k)
+      if (connectivity[k] < 0 || connectivity[k] >= num_nodes)
+        fail(c, "node " + std::to_string(connectivity[k]) + " out of range [0, " + std::to_string(num_nodes) + ")");
+    const long long type = types[c];
+    const PassThroughType* pass = by_vtk(type);
+    const long long expected = type == kVtkTetra ? 4 : pass ? pass->nodes : -1;
+    if (expected < 0) {
+      fail(c, "unsupported VTK cell type " + std::to_string(type) + " (" + vtk_cell_type_name(type) +
+                  "); only tetra, and triangle, quad, line and vertex passed through, are read");
+    }
+    if (end - begin != expected)
+      fail(c, vtk_cell_type_name(type) + " with " + std::to_string(end - begin) + " nodes instead of " +
+                  std::to_string(expected));
+    if (type == kVtkTetra) {
+      for (long long k = begin; k < end; ++k) mesh.tets.push_back(static_cast<index_t>(connectivity[k]));
+      if (!tags.empty()) mesh.extras.tet_tags.push_back(to_int(tags[c], where, c));
+      continue;
+    }
+    std::size_t& slot = block_of_type[static_cast<std::size_t>(type)];
+    if (slot == SIZE_MAX) {
+      slot = mesh.extras.blocks.size();
+      mesh.extras.blocks.push_back(PassThroughBlock{pass->kind, pass->nodes, {}, {}, {}});
+    }
+    PassThroughBlock& block = mesh.extras.blocks[slot];
+    for (long long k = begin; k < end; ++k) block.connectivity.push_back(static_cast<index_t>(connectivity[k]));
+    if (!tags.empty()) block.tags.push_back(to_int(tags[c], where, c));
+  }
+  if (mesh.extras.blocks.empty()) return;
+  mesh.fixed.resize(mesh.num_nodes(), 0);
+  for (const PassThroughBlock& block : mesh.extras.blocks)
+    for (index_t n : block.connectivity) mesh.fixed[static_cast<std::size_t>(n)] = 1;
+}
+
+}  // namespace tetsmooth

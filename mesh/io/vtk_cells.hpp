@@ -1,0 +1,45 @@
+#pragma once
+// The VTK view of a TetMesh's cells, shared by the VTU and legacy VTK
+// readers and writers: tets (VTK_TETRA = 10) first, then the pass-through
+// blocks in order, as vertices (1), lines (3), triangles (5) or quads (9).
+// Tags travel in a per-cell integer array named kVtkTagArray and fixed nodes
+// in a per-point 0/1 array named kVtkFixedArray.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+inline constexpr const char* kVtkTagArray = "tetsmooth:tag";
+inline constexpr const char* kVtkFixedArray = "tetsmooth:fixed";
+
+// Name of a VTK cell type for messages ("hexahedron", "quadratic tetra", ...).
+std::string vtk_cell_type_name(long long type);
+
+struct VtkCells {
+  std::vector<index_t> connectivity;
+  std::vector<std::int64_t> offsets;  // #cells + 1 entries, offsets[0] = 0
+  std::vector<std::uint8_t> types;
+  std::vector<int> tags;  // one per cell (0 where absent), or empty when the mesh has no tags
+  std::size_t size() const { return types.size(); }
+};
+
+// Throws OutputError "<where>: ..." for a pass-through block of a kind VTK
+// cannot hold here; file writers call it first, naming the file.
+void check_vtk_blocks(const TetMesh& mesh, const std::string& where);
+
+// Checks the blocks as above (where = "VTK output").
+VtkCells vtk_cells_of(const TetMesh& mesh);
+
+// Splits cells read from a file into mesh.tets and mesh.extras.blocks (one
+// block per cell type, in order of first appearance) and fixes the nodes of
+// the blocks. mesh.xyz must be filled; offsets has #cells + 1 entries from 0;
+// tags is one per cell or empty. Errors are InputErrors at `where`, naming
+// the cell.
+void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
+                         const std::vector<long long>& offsets, const std::vector<long long>& types,
+                         const std::vector<long long>& tags, const std::string& where);
+
+}  // namespace tetsmooth

@@ -1,0 +1,32 @@
+#pragma once
+// Legacy VTK (.vtk), ASCII, DATASET UNSTRUCTURED_GRID.
+//
+// Writing: version 4.2 layout ("CELLS n size" with a count before each
+// cell's nodes), cells as in vtk_cells.hpp, coordinates in the shortest form
+// that reads back exactly. MeshFields become SCALARS double in POINT_DATA and
+// CELL_DATA (NaN on pass-through cells, as in VTU); tags and fixed nodes
+// become "tetsmooth:tag" / "tetsmooth:fixed" int SCALARS when present. Names
+// are percent-encoded where VTK requires it (spaces, '%', non-printables).
+//
+// Reading: versions up to 5.1, including 5.1's OFFSETS/CONNECTIVITY cells;
+// FIELD, SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES,
+// COLOR_SCALARS, LOOKUP_TABLE and METADATA sections are skipped, except the
+// two tetsmooth arrays. BINARY files are rejected (use .vtu).
+#include <istream>
+#include <ostream>
+#include <string>
+
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+TetMesh read_vtk(std::istream& in, const std::string& source);
+TetMesh read_vtk_file(const std::string& path);
+
+// Throws std::invalid_argument for fields of the wrong size, OutputError for
+// a block kind VTK cannot hold.
+void write_vtk(const TetMesh& mesh, std::ostream& out, const MeshFields& fields);
+void write_vtk_file(const TetMesh& mesh, const std::string& path, const MeshFields& fields);
+
+}  // namespace tetsmooth

@@ -1,0 +1,222 @@
+#include <algorithm>
+#include <cctype>
+#include <limits>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/input_file.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/io/vtk_cells.hpp"
+#include "mesh/io/vtk_legacy.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth {
+namespace {
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Undoes the writer's percent-encoding of names ("%20" for a space).
+std::string decode_name(std::string_view s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s[i] == '%' && i + 2 < s.size() && std::isxdigit(static_cast<unsigned char>(s[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(s[i + 2]))) {
+      out += static_cast<char>(std::stoi(std::string(s.substr(i + 1, 2)), nullptr, 16));
+      i += 2;
+    } else {
+      out += s[i];
+    }
+  }
+  return out;
+}
+
+class LegacyReader {
+ public:
+  LegacyReader(std::istream& in, const std::string& source) : lines_(in, source, '\0') {}
+
+  TetMesh read() {
+    header();
+    while (!lines_.at_end()) section(upper(lines_.next_token("a section keyword")));
+    if (!have_points_) lines_.fail("no POINTS section");
+    if (!have_cells_) lines_.fail("no CELLS section");
+    if (!have_types_) lines_.fail("no CELL_TYPES section");
+    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, tags_, types_where_);
+    if (!fixed_.empty()) {
+      mesh_.fixed.resize(mesh_.num_nodes(), 0);
+      for (std::size_t i = 0; i < fixed_.size(); ++i) mesh_.fixed[i] = mesh_.fixed[i] || fixed_[i] != 0;
+    }
+    validate_mesh(mesh_, lines_.source());
+    return std::move(mesh_);
+  }
+
+ private:
+  enum class Attach { None, Points, Cells };
+
+  void header() {
+    lines_.require_line("the header \"# vtk DataFile Version x.y\"");
+    const bool ok = lines_.size() >= 5 && lines_.token(0, "") == "#" && upper(lines_.token(1, "")) == "VTK" &&
+                    upper(lines_.token(2, "")) == "DATAFILE" && upper(lines_.token(3, "")) == "VERSION";
+    if (!ok) lines_.fail("not a legacy VTK file: the first line must be \"# vtk DataFile Version x.y\"");
+    long long major = 0;
+    const std::string_view version = lines_.token(4, "version");
+    if (!parse_integer(version.substr(0, version.find('.')), major)) lines_.fail("bad version '" + std::string(version) + "'");
+    major_ = major;
+    if (!lines_.next_raw_line()) lines_.fail("unexpected end of file, expected the title line");
+    lines_.require_line("ASCII or BINARY");
+    const std::string mode = upper(lines_.token(0, "ASCII or BINARY"));
+    if (mode == "BINARY") lines_.fail("binary legacy VTK files are not supported; use ASCII or .vtu");
+    if (mode != "ASCII") lines_.fail("expected ASCII or BINARY, found '" + mode + "'");
+    if (upper(lines_.next_token("DATASET")) != "DATASET") lines_.fail("expected DATASET");
+    const std::string type = upper(lines_.next_token("the dataset type"));
+    if (type != "UNSTRUCTURED_GRID") lines_.fail("DATASET " + type + " is not supported, only UNSTRUCTURED_GRID");
+  }
+
+  std::size_t count(const char* what) {
+    const long long n = lines_.next_integer(what);
+    if (n < 0 || n > std::numeric_limits<std::int32_t>::max())
+      lines_.fail(std::string("invalid ") + what + " " + std::to_string(n));
+    return static_cast<std::size_t>(n);
+  }
+
+  void skip_values(std::size_t n, const char* what) {
+    for (std::size_t i = 0; i < n; ++i) lines_.next_token(what);
+  }
+
+  std::vector<long long> integers(std::size_t n, const char* what) {
+    std::vector<long long> v;
+    v.reserve(std::min<std::size_t>(n, 1 << 20));  // a lying count ends at end of file, not in allocation
+    for (std::size_t i = 0; i < n; ++i) v.push_back(lines_.next_integer(what));
+    return v;
+  }
+
+  void section(const std::string& kw) {
+    if (kw == "POINTS") return points();
+    if (kw == "CELLS") return cells();
+    if (kw == "CELL_TYPES") {
+      types_where_ = lines_.where();
+      have_types_ = true;
+      types_ = integers(count("cell type count"), "cell type");
+      return;
+    }
+    if (kw == "POINT_DATA" || kw == "CELL_DATA") {
+      attach_ = kw == "POINT_DATA" ? Attach::Points : Attach::Cells;
+      tuples_ = count("data count");
+      return;
+    }
+    if (kw == "FIELD") return field();
+    if (kw == "METADATA") return lines_.skip_past_blank_line();
+    if (kw == "LOOKUP_TABLE") {
+      lines_.next_token("table name");
+      return skip_values(4 * count("table size"), "table value");
+    }
+    if (attach_ == Attach::None) lines_.fail("unknown or misplaced keyword '" + kw + "'");
+    if (kw == "SCALARS") return scalars();
+    const bool known = kw == "VECTORS" || kw == "NORMALS" || kw == "TENSORS" || kw == "TENSORS6" ||
+                       kw == "TEXTURE_COORDINATES" || kw == "COLOR_SCALARS";
+    if (!known) lines_.fail("unknown keyword '" + kw + "'");
+    lines_.next_token("array name");
+    const std::size_t per_tuple = kw == "VECTORS" || kw == "NORMALS" ? 3
+                                  : kw == "TENSORS"                  ? 9
+                                  : kw == "TENSORS6"                 ? 6
+                                  : kw == "TEXTURE_COORDINATES"      ? count("dimension")
+                                                                     : count("component count");
+    if (kw != "COLOR_SCALARS") lines_.next_token("type");
+    skip_values(per_tuple * tuples_, "value");
+  }
+
+  void points() {
+    const std::size_t n = count("point count");
+    lines_.next_token("point type");
+    mesh_.xyz.reserve(3 * std::min<std::size_t>(n, 1 << 20));
+    for (std::size_t i = 0; i < 3 * n; ++i) mesh_.xyz.push_back(lines_.next_real("coordinate"));
+    have_points_ = true;
+  }
+
+  void cells() {
+    have_cells_ = true;
+    const std::size_t first = count("cell count");
+    const std::size_t second = count("cell array size");
+    offsets_.clear();
+    if (major_ >= 5) {
+      // 5.x: "CELLS <#offsets> <#connectivity>", then OFFSETS and CONNECTIVITY arrays.
+      if (upper(lines_.next_token("OFFSETS")) != "OFFSETS") lines_.fail("expected OFFSETS");
+      lines_.next_token("offset type");
+      offsets_ = integers(first, "offset");
+      if (upper(lines_.next_token("CONNECTIVITY")) != "CONNECTIVITY") lines_.fail("expected CONNECTIVITY");
+      lines_.next_token("connectivity type");
+      connectivity_ = integers(second, "node index");
+      if (offsets_.empty()) lines_.fail("OFFSETS needs at least the leading 0");
+      return;
+    }
+    // Up to 4.2: "CELLS <#cells> <size>", each cell its node count then nodes.
+    offsets_.push_back(0);
+    connectivity_.clear();
+    for (std::size_t c = 0; c < first; ++c) {
+      const std::size_t k = count("cell node count");
+      if (connectivity_.size() + c + 1 + k > second)
+        lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) + " values that CELLS declared");
+      for (std::size_t i = 0; i < k; ++i) connectivity_.push_back(lines_.next_integer("node index"));
+      offsets_.push_back(static_cast<long long>(connectivity_.size()));
+    }
+    if (connectivity_.size() + first != second)
+      lines_.fail("CELLS declared " + std::to_string(second) + " values, the cells hold " +
+                  std::to_string(connectivity_.size() + first));
+  }
+
+  void scalars() {
+    const std::string name = decode_name(lines_.next_token("array name"));
+    lines_.next_token("type");
+    const std::size_t components = lines_.line_has_more() ? count("component count") : 1;
+    if (upper(lines_.peek_token()) == "LOOKUP_TABLE") {
+      lines_.next_token("LOOKUP_TABLE");
+      lines_.next_token("table name");
+    }
+    const bool tags = attach_ == Attach::Cells && name == kVtkTagArray;
+    const bool fixed = attach_ == Attach::Points && name == kVtkFixedArray;
+    if ((tags || fixed) && components == 1) {
+      if (fixed && tuples_ != mesh_.num_nodes()) lines_.fail("POINT_DATA count differs from the number of points");
+      (tags ? tags_ : fixed_) = integers(tuples_, name.c_str());
+      return;
+    }
+    skip_values(components * tuples_, "value");
+  }
+
+  void field() {
+    lines_.next_token("field name");
+    const std::size_t arrays = count("array count");
+    for (std::size_t a = 0; a < arrays; ++a) {
+      if (upper(lines_.next_token("array name")) == "NULL_ARRAY") continue;
+      const std::size_t components = count("component count");
+      const std::size_t tuples = count("tuple count");
+      lines_.next_token("type");
+      skip_values(components * tuples, "value");
+      if (upper(lines_.peek_token()) == "METADATA") {
+        lines_.next_token("METADATA");
+        lines_.skip_past_blank_line();
+      }
+    }
+  }
+
+  TextLines lines_;
+  long long major_ = 0;
+  TetMesh mesh_;
+  std::vector<long long> connectivity_, offsets_, types_, tags_, fixed_;
+  bool have_points_ = false, have_cells_ = false, have_types_ = false;
+  std::string types_where_;
+  Attach attach_ = Attach::None;
+  std::size_t tuples_ = 0;
+};
+
+}  // namespace
+
+TetMesh read_vtk(std::istream& in, const std::string& source) { return LegacyReader(in, source).read(); }
+
+TetMesh read_vtk_file(const std::string& path) {
+  std::ifstream in = open_input(path);
+  return read_vtk(in, path);
+}
+
+}  // namespace tetsmooth

@@ -1,0 +1,36 @@
+#pragma once
+// VTK XML UnstructuredGrid (.vtu).
+//
+// Writing: version 1.0, header_type UInt64, little-endian, every array in one
+// raw appended block. Points Float64; connectivity Int32, offsets Int64,
+// types UInt8 (tetra 10, then pass-through blocks as vertex 1, line 3,
+// triangle 5, quad 9; see vtk_cells.hpp). MeshFields::node_scalars become
+// Float64 PointData, tet_scalars Float64 CellData holding NaN on the
+// pass-through cells (NaN, not 0, so a viewer shows "no value" rather than a
+// plausible one). Tags are written as Int32 CellData "tetsmooth:tag" and
+// fixed nodes as UInt8 PointData "tetsmooth:fixed" when the mesh has any.
+//
+// Reading: one Piece; DataArrays in ascii, binary (base64) or appended
+// (raw or base64) form, header_type UInt32 or UInt64, either byte order,
+// any numeric type. Compressed files are rejected with a message saying
+// so. Cells must be tetra, or vertex/line/triangle/quad, which are passed
+// through with their nodes fixed. Other arrays are ignored, except the two
+// tetsmooth arrays above, which restore tags and fixed nodes.
+#include <istream>
+#include <ostream>
+#include <string>
+
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+TetMesh read_vtu(std::istream& in, const std::string& source);
+TetMesh read_vtu_file(const std::string& path);
+
+// Throws std::invalid_argument when a field does not have one value per node
+// (per tet), OutputError for a block kind VTK cannot hold.
+void write_vtu(const TetMesh& mesh, std::ostream& out, const MeshFields& fields);
+void write_vtu_file(const TetMesh& mesh, const std::string& path, const MeshFields& fields);
+
+}  // namespace tetsmooth

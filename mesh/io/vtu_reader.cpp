@@ -1,0 +1,176 @@
+#include <iterator>
+#include <limits>
+#include <sstream>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/input_file.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/io/vtk_cells.hpp"
+#include "mesh/io/vtu_data_array.hpp"
+#include "mesh/io/vtu_io.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth {
+namespace {
+
+// What the XML part of a .vtu holds that the reader needs.
+struct VtuLayout {
+  VtuEncoding encoding;
+  long long points = -1, cells = -1;
+  std::size_t piece_at = 0;
+  const VtuDataArray* points_array = nullptr;
+  const VtuDataArray* connectivity = nullptr;
+  const VtuDataArray* offsets = nullptr;
+  const VtuDataArray* types = nullptr;
+  const VtuDataArray* tags = nullptr;
+  const VtuDataArray* fixed = nullptr;
+  std::vector<VtuDataArray> arrays;  // stable once scanning is done
+};
+
+long long count_attribute(const XmlScanner& xml, const XmlTag& tag, const char* key) {
+  const std::string* v = tag.attribute(key);
+  long long n = -1;
+  if (!v || !parse_integer(*v, n) || n < 0) xml.fail(tag.begin, std::string("missing or bad ") + key + " in <Piece>");
+  return n;
+}
+
+void read_vtkfile_tag(const XmlScanner& xml, const XmlTag& tag, VtuEncoding& enc) {
+  if (tag.name != "VTKFile") xml.fail(tag.begin, "not a VTK XML file: the first element is <" + tag.name + ">");
+  const std::string* type = tag.attribute("type");
+  if (!type || *type != "UnstructuredGrid")
+    xml.fail(tag.begin, "VTK XML type '" + (type ? *type : std::string()) + "' is not UnstructuredGrid");
+  if (const std::string* c = tag.attribute("compressor"); c && !c->empty())
+    xml.fail(tag.begin, "compressed VTU data (" + *c +
+                            ") is not supported; write the file uncompressed (ParaView: Compressor Type None; "
+                            "meshio: compression=None)");
+  if (const std::string* order = tag.attribute("byte_order")) {
+    if (*order != "LittleEndian" && *order != "BigEndian") xml.fail(tag.begin, "unknown byte_order '" + *order + "'");
+    enc.big_endian = *order == "BigEndian";
+  }
+  if (const std::string* h = tag.attribute("header_type")) {
+    if (*h != "UInt32" && *h != "UInt64") xml.fail(tag.begin, "header_type '" + *h + "' is neither UInt32 nor UInt64");
+    enc.header_bytes = *h == "UInt64" ? 8 : 4;
+  }
+}
+
+// Reads the DataArray element whose start tag is `open`: for a non-empty
+// element its text runs from the end of the last nested element (VTK puts
+// <InformationKey> elements first) to </DataArray>.
+VtuDataArray read_data_array(XmlScanner& xml, const XmlTag& open) {
+  VtuDataArray a{open, open.end, open.end};
+  if (open.kind == XmlTag::Kind::Empty) return a;
+  XmlTag tag;
+  int depth = 0;
+  while (xml.next(tag)) {
+    if (tag.kind == XmlTag::Kind::Open) ++depth;
+    if (tag.kind == XmlTag::Kind::Close && depth-- == 0) {
+      if (tag.name != "DataArray") xml.fail(tag.begin, "</" + tag.name + "> closes <DataArray>");
+      a.content_end = tag.begin;
+      return a;
+    }
+    a.content_begin = tag.end;
+  }
+  xml.fail(open.begin, "unterminated <DataArray>");
+}
+
+VtuLayout scan(std::string_view text, XmlScanner& xml) {
+  VtuLayout layout;
+  XmlTag tag;
+  if (!xml.next(tag)) xml.fail(0, "empty file, expected <VTKFile type=\"UnstructuredGrid\">");
+  read_vtkfile_tag(xml, tag, layout.encoding);
+  std::vector<std::pair<std::string, std::string>> roles;  // (parent, name) per array
+  std::vector<std::string> stack{"VTKFile"};
+  int pieces = 0;
+  while (xml.next(tag)) {
+    if (tag.kind == XmlTag::Kind::Close) {
+      if (stack.empty() || stack.back() != tag.name)
+        xml.fail(tag.begin, "</" + tag.name + "> does not match <" + (stack.empty() ? "" : stack.back()) + ">");
+      stack.pop_back();
+      continue;
+    }
+    if (tag.name == "AppendedData") {
+      const std::string* enc = tag.attribute("encoding");
+      if (!enc || (*enc != "raw" && *enc != "base64"))
+        xml.fail(tag.begin, "AppendedData encoding '" + (enc ? *enc : std::string()) + "' is neither raw nor base64");
+      std::size_t i = tag.end;
+      while (i < text.size() && (text[i] == ' ' || text[i] == '\n' || text[i] == '\r' || text[i] == '\t')) ++i;
+      if (i >= text.size() || text[i] != '_') xml.fail(i, "AppendedData must start with '_'");
+      layout.encoding.has_appended = true;
+      layout.encoding.appended_base64 = *enc == "base64";
+      layout.encoding.appended_begin = i + 1;
+      break;  // raw bytes follow: no more XML to scan
+    }
+    if (tag.name == "Piece" && ++pieces > 1) xml.fail(tag.begin, "files with several pieces are not supported");
+    if (tag.name == "Piece") {
+      layout.points = count_attribute(xml, tag, "NumberOfPoints");
+      layout.cells = count_attribute(xml, tag, "NumberOfCells");
+      layout.piece_at = tag.begin;
+    }
+    if (tag.name == "DataArray") {
+      const std::string parent = stack.size() >= 2 && stack[stack.size() - 2] == "Piece" ? stack.back() : "";
+      const std::string* name = tag.attribute("Name");
+      layout.arrays.push_back(read_data_array(xml, tag));
+      roles.emplace_back(parent, name ? *name : "");
+      continue;
+    }
+    if (tag.kind == XmlTag::Kind::Open) stack.push_back(tag.name);
+  }
+  if (pieces == 0) xml.fail(text.size(), "no <Piece> element");
+  for (std::size_t i = 0; i < layout.arrays.size(); ++i) {
+    const auto& [parent, name] = roles[i];
+    const VtuDataArray* a = &layout.arrays[i];
+    if (parent == "Points" && !layout.points_array) layout.points_array = a;
+    if (parent == "Cells" && name == "connectivity") layout.connectivity = a;
+    if (parent == "Cells" && name == "offsets") layout.offsets = a;
+    if (parent == "Cells" && name == "types") layout.types = a;
+    if (parent == "CellData" && name == kVtkTagArray) layout.tags = a;
+    if (parent == "PointData" && name == kVtkFixedArray) layout.fixed = a;
+  }
+  const auto require = [&](const VtuDataArray* a, const char* what) {
+    if (!a) xml.fail(layout.piece_at, std::string("the piece has no ") + what + " array");
+  };
+  require(layout.points_array, "Points");
+  require(layout.connectivity, "Cells connectivity");
+  require(layout.offsets, "Cells offsets");
+  require(layout.types, "Cells types");
+  return layout;
+}
+
+}  // namespace
+
+TetMesh read_vtu(std::istream& in, const std::string& source) {
+  const std::string text(std::istreambuf_iterator<char>(in), {});
+  if (in.bad()) throw InputError(source, "read error");
+  XmlScanner xml(text, source);
+  const VtuLayout layout = scan(text, xml);
+  const VtuArrayDecoder decode(text, xml, source, layout.encoding);
+  const auto points = static_cast<std::size_t>(layout.points);
+  const auto cells = static_cast<std::size_t>(layout.cells);
+
+  TetMesh mesh;
+  mesh.xyz = decode.reals(*layout.points_array, points, 3, "Points");
+  std::vector<long long> offsets = decode.integers(*layout.offsets, cells, "offsets");
+  offsets.insert(offsets.begin(), 0);  // VTK XML stores only the end of each cell
+  const long long conn_size = offsets.back();
+  if (conn_size < 0) xml.fail(layout.offsets->tag.begin, "negative cell offset");
+  const std::vector<long long> connectivity =
+      decode.integers(*layout.connectivity, static_cast<std::size_t>(conn_size), "connectivity");
+  const std::vector<long long> types = decode.integers(*layout.types, cells, "types");
+  const std::vector<long long> tags =
+      layout.tags ? decode.integers(*layout.tags, cells, kVtkTagArray) : std::vector<long long>{};
+  mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, xml.where(layout.types->tag.begin));
+  if (layout.fixed) {
+    const std::vector<long long> fixed = decode.integers(*layout.fixed, points, kVtkFixedArray);
+    mesh.fixed.resize(points, 0);
+    for (std::size_t i = 0; i < points; ++i) mesh.fixed[i] = mesh.fixed[i] || fixed[i] != 0;
+  }
+  validate_mesh(mesh, source);
+  return mesh;
+}
+
+TetMesh read_vtu_file(const std::string& path) {
+  std::ifstream in = open_input(path);
+  return read_vtu(in, path);
+}
+
+}  // namespace tetsmooth

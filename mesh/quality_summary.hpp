@@ -1,0 +1,34 @@
+#pragma once
+// Whole-mesh quality statistics over the radius ratio q (tet_quality.hpp).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+struct QualitySummary {
+  std::size_t tets = 0;
+  double min = 0, mean = 0, max = 0;  // radius ratio
+  // 10 bins of width 0.1 over [0,1]; bin k holds 0.1k <= q < 0.1(k+1), q = 1
+  // goes to bin 9 and inverted tets (q < 0) to bin 0.
+  std::array<std::size_t, 10> histogram{};
+  std::size_t below_0_1 = 0;   // tets with q < 0.1, inverted included
+  std::size_t inverted = 0;    // signed volume < 0
+  std::size_t degenerate = 0;  // signed volume == 0
+  // Minimum q over tets with at least one movable node: the part of the mesh
+  // smoothing can change (1 when no tet has a movable node).
+  double min_movable = 1;
+  double min_dihedral_deg = 0;  // over all tets
+  double mean_ratio_mean = 0;   // mean of the mean-ratio metric
+};
+
+// Radius ratio per tet.
+std::vector<double> tet_qualities(const TetMesh& mesh);
+
+// `movable` may be empty (then min_movable is the overall min).
+QualitySummary summarize_quality(const TetMesh& mesh, const std::vector<std::uint8_t>& movable = {});
+
+}  // namespace tetsmooth

@@ -1,0 +1,78 @@
+#pragma once
+// Per-tet quality metrics, built by the host compiler and by nvcc alike.
+//
+// All metrics are signed: positive for a positively oriented tet
+// ((b-a)·((c-a)×(d-a)) > 0), negative for an inverted one, 0 for a
+// degenerate one, and 1 for the regular tet. They are invariant under
+// translation, rotation and uniform scaling (up to rounding).
+#include <cmath>
+
+#include "mesh/hd.hpp"
+#include "mesh/vec3.hpp"
+
+namespace tetsmooth {
+
+// Six times the signed volume.
+template <class Real>
+TS_HD Real signed_volume6(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
+  return dot(b - a, cross(c - a, d - a));
+}
+
+// Radius ratio q = 3 r_in / R (the paper's "aspect ratio", scaled by 3).
+// With r_in = 3V/S and R = sqrt(P)/(24V), where P is the Heron-like product
+// over the three products of opposite edge lengths, q = 216 V^2 / (S sqrt P)
+// = 6 V6^2 / (S sqrt P) with V6 = 6V; the sign of V6 is carried over.
+template <class Real>
+TS_HD Real radius_ratio(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
+  using std::sqrt;
+  const Vec3<Real> ab = b - a, ac = c - a, ad = d - a, bc = c - b, bd = d - b, cd = d - c;
+  const Real v6 = dot(ab, cross(ac, ad));
+  const Real area2 = sqrt(norm2(cross(ab, ac))) + sqrt(norm2(cross(ab, ad))) +
+                     sqrt(norm2(cross(ac, ad))) + sqrt(norm2(cross(bc, bd)));  // 2 S
+  const Real p1 = sqrt(norm2(ab) * norm2(cd));
+  const Real p2 = sqrt(norm2(ac) * norm2(bd));
+  const Real p3 = sqrt(norm2(ad) * norm2(bc));
+  const Real heron = (p1 + p2 + p3) * (p1 + p2 - p3) * (p1 + p3 - p2) * (p2 + p3 - p1);
+  if (!(area2 > Real(0)) || !(heron > Real(0))) return Real(0);
+  // 6 V6^2 / (S sqrt P) with S = area2 / 2.
+  return Real(12) * v6 * (v6 < Real(0) ? -v6 : v6) / (area2 * sqrt(heron));
+}
+
+// Mean ratio eta = 12 (3|V|)^(2/3) / sum(l^2), signed like the volume.
+template <class Real>
+TS_HD Real mean_ratio(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
+  using std::cbrt;
+  const Real v6 = signed_volume6(a, b, c, d);
+  const Real l2 = norm2(b - a) + norm2(c - a) + norm2(d - a) + norm2(c - b) + norm2(d - b) + norm2(d - c);
+  if (!(l2 > Real(0))) return Real(0);
+  const Real v3 = (v6 < Real(0) ? -v6 : v6) / Real(2);  // 3|V|
+  const Real cb = cbrt(v3);
+  const Real eta = Real(12) * cb * cb / l2;
+  return v6 < Real(0) ? -eta : eta;
+}
+
+// Smallest of the six dihedral angles, in degrees (0 for a degenerate tet).
+// The angle at an edge is pi minus the angle between the outward normals of
+// the two faces that meet there; orientation does not change it.
+template <class Real>
+TS_HD Real min_dihedral_deg(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
+  using std::acos;
+  using std::sqrt;
+  // Normals of the faces opposite a, b, c, d (all outward, or all inward).
+  const Vec3<Real> n[4] = {cross(c - b, d - b), cross(d - a, c - a), cross(b - a, d - a), cross(c - a, b - a)};
+  Real len[4];
+  for (int f = 0; f < 4; ++f) {
+    len[f] = sqrt(norm2(n[f]));
+    if (!(len[f] > Real(0))) return Real(0);
+  }
+  Real max_cos = Real(-1);
+  for (int f = 0; f < 4; ++f)
+    for (int g = f + 1; g < 4; ++g) {
+      const Real cosang = -dot(n[f], n[g]) / (len[f] * len[g]);
+      max_cos = cosang > max_cos ? cosang : max_cos;
+    }
+  if (max_cos > Real(1)) max_cos = Real(1);
+  return acos(max_cos) * Real(57.29577951308232);
+}
+
+}  // namespace tetsmooth

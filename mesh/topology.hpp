@@ -1,0 +1,43 @@
+#pragma once
+// Mesh topology on the CPU, built the way the paper builds it (§3.2-3.3) so
+// the CUDA version can be checked against it item by item.
+#include <cstdint>
+#include <vector>
+
+#include "mesh/csr.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+// Node -> neighbour nodes (nodes sharing an edge), each row sorted ascending,
+// no self loops. Built from the tets' 6 edges, a reversed copy appended, a
+// sort by (start, end), unique, and an exclusive scan of the row counts.
+Csr build_neighbours(const std::vector<index_t>& tets, std::size_t num_nodes);
+
+// Node -> incident tets, each row sorted ascending.
+Csr build_node_tets(const std::vector<index_t>& tets, std::size_t num_nodes);
+
+// 1 for nodes on a boundary face: each tet's 4 faces are stored with sorted
+// node indices, all faces sorted, and a face that appears once is on the
+// boundary. Nodes in no tet are not boundary nodes (they have no faces);
+// they never move because they have no neighbours.
+std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes);
+
+// A node may move when it is not on the boundary, not pinned by the file
+// (mesh.fixed) and has at least one neighbour.
+std::vector<std::uint8_t> movable_nodes(const TetMesh& mesh, const std::vector<std::uint8_t>& boundary,
+                                        const Csr& neighbours);
+
+struct Topology {
+  Csr neighbours;
+  Csr node_tets;
+  std::vector<std::uint8_t> boundary;
+  std::vector<std::uint8_t> movable;
+};
+
+Topology build_topology(const TetMesh& mesh);
+
+// Mean length of the unique edges (each row pair i<j counted once).
+double mean_edge_length(const std::vector<double>& xyz, const Csr& neighbours);
+
+}  // namespace tetsmooth

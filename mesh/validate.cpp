@@ -1,0 +1,113 @@
+#include "mesh/validate.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "mesh/errors.hpp"
+#include "mesh/tet_quality.hpp"
+
+namespace tetsmooth {
+namespace {
+
+[[noreturn]] void fail(const std::string& source, const std::string& what) { throw InputError(source, what); }
+
+void check_shapes(const TetMesh& mesh, const std::string& source) {
+  if (mesh.xyz.size() % 3 != 0)
+    fail(source, "coordinate array holds " + std::to_string(mesh.xyz.size()) + " values, not a multiple of 3");
+  if (mesh.tets.size() % 4 != 0)
+    fail(source, "tet array holds " + std::to_string(mesh.tets.size()) + " indices, not a multiple of 4");
+  if (mesh.num_nodes() > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
+    fail(source, std::to_string(mesh.num_nodes()) + " nodes exceed the 32-bit index range");
+  if (mesh.num_tets() == 0) fail(source, "the mesh has no tetrahedra");
+
+  const auto per_node = [&](std::size_t size, const char* name) {
+    if (size != 0 && size != mesh.num_nodes())
+      fail(source, std::string(name) + " has " + std::to_string(size) + " entries for " +
+                       std::to_string(mesh.num_nodes()) + " nodes");
+  };
+  const auto per_tet = [&](std::size_t size, const char* name) {
+    if (size != 0 && size != mesh.num_tets())
+      fail(source, std::string(name) + " has " + std::to_string(size) + " entries for " +
+                       std::to_string(mesh.num_tets()) + " tets");
+  };
+  per_node(mesh.fixed.size(), "the fixed-node flag array");
+  per_node(mesh.extras.node_tags.size(), "the node tag array");
+  per_node(mesh.extras.node_markers.size(), "the node marker array");
+  const std::size_t attrs = static_cast<std::size_t>(std::max(mesh.extras.node_attribute_count, 0));
+  if (mesh.extras.node_attributes.size() != attrs * mesh.num_nodes() && !mesh.extras.node_attributes.empty())
+    fail(source, "node attribute array has " + std::to_string(mesh.extras.node_attributes.size()) +
+                     " values, expected " + std::to_string(attrs) + " per node");
+  per_tet(mesh.extras.tet_tags.size(), "the tet tag array");
+  per_tet(mesh.extras.tet_entity_tags.size(), "the tet entity tag array");
+}
+
+void check_coordinates(const TetMesh& mesh, const std::string& source) {
+  for (std::size_t i = 0; i < mesh.xyz.size(); ++i)
+    if (!std::isfinite(mesh.xyz[i]))
+      fail(source, "node " + std::to_string(i / 3) + " has a non-finite coordinate " + "xyz"[i % 3] + " = " +
+                       std::to_string(mesh.xyz[i]));
+}
+
+void check_indices(const std::vector<index_t>& conn, std::size_t per_element, std::size_t nodes,
+                   const std::string& source, const std::string& element) {
+  for (std::size_t i = 0; i < conn.size(); ++i)
+    if (conn[i] < 0 || static_cast<std::size_t>(conn[i]) >= nodes)
+      fail(source, element + " " + std::to_string(i / per_element) + " refers to node " + std::to_string(conn[i]) +
+                       ", outside [0, " + std::to_string(nodes) + ")");
+}
+
+void check_blocks(const TetMesh& mesh, const std::string& source) {
+  for (const PassThroughBlock& block : mesh.extras.blocks) {
+    const std::string name = block.kind + " element";
+    if (block.nodes_per_element <= 0 || block.connectivity.size() % block.nodes_per_element != 0)
+      fail(source, "the " + block.kind + " block holds " + std::to_string(block.connectivity.size()) +
+                       " indices, not a multiple of " + std::to_string(block.nodes_per_element));
+    const std::size_t count = block.connectivity.size() / block.nodes_per_element;
+    if ((!block.tags.empty() && block.tags.size() != count) ||
+        (!block.entity_tags.empty() && block.entity_tags.size() != count))
+      fail(source, "the " + block.kind + " block has a tag array that does not match its " + std::to_string(count) +
+                       " elements");
+    check_indices(block.connectivity, block.nodes_per_element, mesh.num_nodes(), source, name);
+  }
+}
+
+bool has_repeated_node(const index_t* t) {
+  return t[0] == t[1] || t[0] == t[2] || t[0] == t[3] || t[1] == t[2] || t[1] == t[3] || t[2] == t[3];
+}
+
+}  // namespace
+
+ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source) {
+  check_shapes(mesh, source);
+  check_coordinates(mesh, source);
+  check_indices(mesh.tets, 4, mesh.num_nodes(), source, "tet");
+  check_blocks(mesh, source);
+
+  ValidationReport report;
+  report.nodes = mesh.num_nodes();
+  report.tets = mesh.num_tets();
+  std::vector<std::uint8_t> referenced(mesh.num_nodes(), 0);
+  const auto point = [&](index_t n) {
+    const double* p = &mesh.xyz[3 * static_cast<std::size_t>(n)];
+    return Vec3<double>{p[0], p[1], p[2]};
+  };
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    const index_t* v = &mesh.tets[4 * t];
+    for (int k = 0; k < 4; ++k) referenced[v[k]] = 1;
+    if (has_repeated_node(v)) {
+      ++report.degenerate;
+      continue;
+    }
+    const double v6 = signed_volume6(point(v[0]), point(v[1]), point(v[2]), point(v[3]));
+    if (v6 < 0)
+      ++report.inverted;
+    else if (v6 == 0)
+      ++report.degenerate;
+  }
+  for (std::uint8_t r : referenced) report.unreferenced += r == 0;
+  return report;
+}
+
+}  // namespace tetsmooth

@@ -1,0 +1,23 @@
+#pragma once
+// Checks a mesh as it comes in from a file or generator.
+#include <cstddef>
+#include <string>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+struct ValidationReport {
+  std::size_t nodes = 0, tets = 0;
+  std::size_t inverted = 0;      // signed volume < 0
+  std::size_t degenerate = 0;    // signed volume == 0 or a repeated node
+  std::size_t unreferenced = 0;  // nodes in no tet
+};
+
+// Throws InputError (naming `source` and the offending tet or node) when a
+// node index is out of range, a coordinate is not finite, the arrays have the
+// wrong shape or there are no tets. Inverted and degenerate tets are counted,
+// not rejected: the caller decides whether to warn.
+ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source = "mesh");
+
+}  // namespace tetsmooth

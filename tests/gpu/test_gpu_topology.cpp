@@ -1,0 +1,106 @@
+// GPU topology and colouring against the CPU reference, array for array:
+// both build the same sorted CSR rows, flags and Jones-Plassmann colouring,
+// so everything must be exactly equal (integers, no tolerance).
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "generators/models.hpp"
+#include "kernels/cuda/topology_snapshot.hpp"
+#include "kernels/smoother.hpp"
+#include "mesh/colouring.hpp"
+#include "mesh/topology.hpp"
+#include "test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+class GpuTopology : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string why;
+    if (!cuda_available(&why)) GTEST_SKIP() << why;
+  }
+};
+
+// Names the first differing entry instead of printing whole arrays.
+template <class T>
+::testing::AssertionResult same(const std::vector<T>& gpu, const std::vector<T>& cpu) {
+  if (gpu.size() != cpu.size())
+    return ::testing::AssertionFailure() << "sizes differ: gpu " << gpu.size() << ", cpu " << cpu.size();
+  for (std::size_t k = 0; k < gpu.size(); ++k)
+    if (gpu[k] != cpu[k]) {
+      std::ostringstream msg;
+      msg << "entry " << k << ": gpu " << +gpu[k] << ", cpu " << +cpu[k];
+      return ::testing::AssertionFailure() << msg.str();
+    }
+  return ::testing::AssertionSuccess();
+}
+
+void expect_same_as_cpu(const TetMesh& mesh) {
+  const Topology cpu = build_topology(mesh);
+  const Colouring cpu_colouring = colour_nodes(cpu.neighbours, cpu.movable);
+  const cuda::TopologySnapshot gpu = cuda::gpu_topology_snapshot(mesh);
+
+  EXPECT_TRUE(same(gpu.neighbours.offsets, cpu.neighbours.offsets)) << "neighbour offsets";
+  EXPECT_TRUE(same(gpu.neighbours.items, cpu.neighbours.items)) << "neighbours";
+  EXPECT_TRUE(same(gpu.node_tets.offsets, cpu.node_tets.offsets)) << "incidence offsets";
+  EXPECT_TRUE(same(gpu.node_tets.items, cpu.node_tets.items)) << "incident tets";
+  EXPECT_TRUE(same(gpu.boundary, cpu.boundary)) << "boundary";
+  EXPECT_TRUE(same(gpu.movable, cpu.movable)) << "movable";
+
+  EXPECT_TRUE(same(gpu.colouring.colour, cpu_colouring.colour)) << "colours";
+  EXPECT_EQ(gpu.colouring.num_colours, cpu_colouring.num_colours);
+  EXPECT_EQ(gpu.colouring.rounds, cpu_colouring.rounds);
+  EXPECT_TRUE(same(gpu.colouring.classes.offsets, cpu_colouring.classes.offsets)) << "class offsets";
+  EXPECT_TRUE(same(gpu.colouring.classes.items, cpu_colouring.classes.items)) << "class nodes";
+  EXPECT_TRUE(is_valid_colouring(cpu.neighbours, cpu.movable, gpu.colouring.colour));
+}
+
+TEST_F(GpuTopology, RegularTet) { expect_same_as_cpu(testing::regular_tet()); }
+
+TEST_F(GpuTopology, CubeWithCentre) { expect_same_as_cpu(testing::cube_with_centre()); }
+
+TEST_F(GpuTopology, JitteredCubeGrid) { expect_same_as_cpu(testing::cube_grid(4, 0.2)); }
+
+TEST_F(GpuTopology, RandomDelaunay) { expect_same_as_cpu(testing::random_delaunay(2000, 3)); }
+
+TEST_F(GpuTopology, Model5k) { expect_same_as_cpu(generate_model("5k")); }
+
+// File-pinned nodes leave the colouring; a node in no tet has an empty row
+// and is neither boundary nor movable.
+TEST_F(GpuTopology, PinnedAndUnreferencedNodes) {
+  TetMesh m = testing::cube_grid(4, 0.2);
+  m.fixed.assign(m.num_nodes(), 0);
+  for (std::size_t i = 0; i < m.num_nodes(); i += 3) m.fixed[i] = 1;
+  m.xyz.insert(m.xyz.end(), {9.0, 9.0, 9.0});
+  m.fixed.push_back(0);
+  expect_same_as_cpu(m);
+}
+
+// A tet with a repeated node: its self-loop edges are no neighbours and the
+// node lists that tet once.
+TEST_F(GpuTopology, RepeatedNodeInATet) {
+  TetMesh m = testing::cube_grid(3, 0.2);
+  const index_t a = m.tets[0], b = m.tets[1], c = m.tets[2];
+  m.tets.insert(m.tets.end(), {a, b, a, c});
+  expect_same_as_cpu(m);
+}
+
+// Node indices above 2^22 need 3 * 23 bits per face, more than one 64-bit
+// key: the 96-bit face sort (as for the 10M-node lattice). The nodes below
+// the shift are unreferenced.
+TEST_F(GpuTopology, NodeIndicesBeyond64BitFaceKeys) {
+  const TetMesh grid = testing::cube_grid(3, 0.2);
+  const index_t shift = (index_t{1} << 22) - 20;  // the grid straddles 2^22
+  TetMesh m;
+  m.xyz.assign(3 * static_cast<std::size_t>(shift), 0.0);
+  m.xyz.insert(m.xyz.end(), grid.xyz.begin(), grid.xyz.end());
+  for (index_t v : grid.tets) m.tets.push_back(v + shift);
+  expect_same_as_cpu(m);
+}
+
+}  // namespace
+}  // namespace tetsmooth

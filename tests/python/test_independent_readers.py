@@ -1,0 +1,173 @@
+"""tetsmooth's files as other programs see them, and other programs' files as
+tetsmooth sees them: every output format written by `tetsmooth convert` is
+read back with meshio (and the .msh files with the Gmsh API), and meshes
+written by meshio are read by `tetsmooth quality --json` and `convert`.
+
+Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+import meshio
+import numpy as np
+
+from test_cli import BIN, kuhn_lattice, run
+
+# The reference coordinates are short binary fractions, so any writer and
+# reader that do not lose precision reproduce them exactly; this allows a
+# unit in the last place of the largest coordinate (50) anyway.
+COORD_ATOL = 1e-14
+
+
+def gmsh_module():
+    """The Gmsh Python API, or None with the reason it cannot be used."""
+    try:
+        import gmsh
+    except Exception as e:  # an import of a compiled module can fail in many ways
+        return None, f"cannot import gmsh: {e}"
+    return gmsh, ""
+
+
+def read_with_gmsh(gmsh, path):
+    """Nodes in tag order and tets as 0-based rows into them."""
+    # Options in ~/.gmshrc or the environment must not change what is read:
+    # -noenv exists from Gmsh 4.9; older versions only skip the config files.
+    major, minor = (int(x) for x in gmsh.__version__.split(".")[:2])
+    gmsh.initialize(["", "-noenv"] if (major, minor) >= (4, 9) else [""], readConfigFiles=False)
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(path)
+        tags, coords, _ = gmsh.model.mesh.getNodes()
+        order = np.argsort(tags)
+        tags = np.asarray(tags)[order]
+        xyz = np.asarray(coords).reshape(-1, 3)[order]
+        tets = []
+        types, _, node_tags = gmsh.model.mesh.getElements(dim=3)
+        for etype, nodes in zip(types, node_tags):
+            if etype == 4:  # 4-node tetrahedron
+                tets.append(np.asarray(nodes).reshape(-1, 4))
+        tets = np.searchsorted(tags, np.concatenate(tets))
+        return xyz, tets
+    finally:
+        gmsh.finalize()
+
+
+class IndependentReaders(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        if not os.access(BIN, os.X_OK):
+            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
+        cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_readers_")
+        # The reference: a mesh built here, with coordinates known exactly,
+        # given to tetsmooth by meshio's ASCII VTU writer.
+        xyz, cls.tets = kuhn_lattice(4, seed=11)
+        # Not a unit box, so scale errors would show; multiples of 1/256 so
+        # that every writer, meshio's 12-digit ASCII VTU included, prints
+        # them exactly.
+        cls.xyz = np.round(xyz * 12.5 * 256) / 256
+        cls.source = os.path.join(cls.tmp, "source.vtu")
+        meshio.write(cls.source, meshio.Mesh(cls.xyz, [("tetra", cls.tets)]), binary=False)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def path(self, name):
+        return os.path.join(self.tmp, name)
+
+    def assert_same_mesh(self, xyz, tets):
+        self.assertEqual(len(xyz), len(self.xyz))
+        self.assertEqual(len(tets), len(self.tets))
+        np.testing.assert_allclose(xyz, self.xyz, rtol=0, atol=COORD_ATOL)
+        np.testing.assert_array_equal(tets, self.tets)
+
+    # tetsmooth writes, others read ------------------------------------------
+
+    OUTPUTS = [("msh41.msh", "msh41"), ("msh41-binary.msh", "msh41-binary"), ("msh22.msh", "msh22"),
+               ("out.vtu", "vtu"), ("out.vtk", "vtk"), ("out.mesh", "medit"), ("out.node", "tetgen")]
+
+    def test_meshio_reads_every_format_tetsmooth_writes(self):
+        for name, fmt in self.OUTPUTS:
+            with self.subTest(format=fmt):
+                out = self.path(name)
+                run("convert", self.source, out, "--output-format", fmt, "-q")
+                m = meshio.read(out)
+                self.assertEqual(set(m.cells_dict), {"tetra"})
+                self.assert_same_mesh(m.points, m.cells_dict["tetra"])
+
+    def test_gmsh_reads_the_msh_files(self):
+        gmsh, why = gmsh_module()
+        if gmsh is None:
+            self.skipTest(why)
+        for name, fmt in self.OUTPUTS:
+            if not name.endswith(".msh"):
+                continue
+            with self.subTest(format=fmt):
+                out = self.path("gmsh-" + name)
+                run("convert", self.source, out, "--output-format", fmt, "-q")
+                self.assert_same_mesh(*read_with_gmsh(gmsh, out))
+
+    def test_fields_reach_other_readers(self):
+        for name in ("fields.vtu", "fields.vtk", "fields.msh"):
+            with self.subTest(output=name):
+                out = self.path(name)
+                run("convert", self.source, out, "-q")
+                m = meshio.read(out)
+                self.assertIn("quality", m.cell_data)
+                self.assertIn("boundary", m.point_data)
+                boundary = np.asarray(m.point_data["boundary"]).ravel()
+                self.assertEqual(int(boundary.sum()), 5 ** 3 - 3 ** 3)
+
+    # others write, tetsmooth reads ------------------------------------------
+
+    INPUTS = [("meshio41.msh", dict(file_format="gmsh", binary=False)),
+              ("meshio41-binary.msh", dict(file_format="gmsh", binary=True)),
+              ("meshio22.msh", dict(file_format="gmsh22", binary=False)),
+              ("meshio-ascii.vtu", dict(binary=False)),
+              ("meshio-zlib.vtu", dict(binary=True)),
+              ("meshio.vtk", dict(binary=False)),
+              ("meshio.mesh", dict())]
+
+    def test_tetsmooth_reads_what_meshio_writes(self):
+        for name, kwargs in self.INPUTS:
+            with self.subTest(input=name):
+                src = self.path(name)
+                meshio.write(src, meshio.Mesh(self.xyz, [("tetra", self.tets)]), **kwargs)
+                q = json.loads(run("quality", src, "--json").stdout)
+                self.assertEqual(q["input"]["nodes"], len(self.xyz))
+                self.assertEqual(q["input"]["tets"], len(self.tets))
+                self.assertEqual(q["quality"]["inverted"], 0)
+                # Coordinates and tets survive a trip through tetsmooth's reader.
+                back = self.path(name + ".back.vtu")
+                run("convert", src, back, "-q")
+                m = meshio.read(back)
+                self.assert_same_mesh(m.points, m.cells_dict["tetra"])
+
+    def test_gmsh_written_mesh(self):
+        gmsh, why = gmsh_module()
+        if gmsh is None:
+            self.skipTest(why)
+        src = self.path("gmsh-box.msh")
+        gmsh.initialize([""], readConfigFiles=False)
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
+            gmsh.model.occ.synchronize()
+            gmsh.option.setNumber("Mesh.MeshSizeMax", 0.5)
+            gmsh.model.mesh.generate(3)
+            gmsh.write(src)
+            _, _, node_tags = gmsh.model.mesh.getElements(dim=3)
+            tets = sum(len(n) for n in node_tags) // 4
+        finally:
+            gmsh.finalize()
+        q = json.loads(run("quality", src, "--json").stdout)
+        self.assertEqual(q["input"]["tets"], tets)
+        self.assertEqual(q["quality"]["inverted"], 0)
+        self.assertGreater(q["quality"]["min"], 0)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,342 @@
+#!/usr/bin/python3
+"""Tests of plots/: the JSON loader, the paper's numbers, the tables and the figures.
+
+Run: /usr/bin/python3 tests/python/test_plots.py   (CTest sets TETSMOOTH_SOURCE_DIR)
+The fixture tests/data/bench_small.json is a hand-made google/benchmark 1.7.1
+result with the quirks of real runs: /repeats:N, /iterations:N, /min_time:X
+and /manual_time suffixes, repetitions with median/mean/stddev/cv aggregates,
+a benchmark reported as an error, a time unit of "us", custom context values
+as strings, two models (5k, 109k) and two lattices.
+"""
+
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+SOURCE_DIR = os.environ.get("TETSMOOTH_SOURCE_DIR") or os.path.dirname(
+    os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+PLOTS = os.path.join(SOURCE_DIR, "plots")
+FIXTURE = os.path.join(SOURCE_DIR, "tests", "data", "bench_small.json")
+sys.path.insert(0, PLOTS)
+
+import bench_json as bj  # noqa: E402
+import paper_numbers as paper  # noqa: E402
+
+FIGURES = ("fig09_layout.png", "fig10_form.png", "fig11_cpu_gpu.png", "fig12_blocks.png", "fig13_quality.png")
+CSV_FILES = ("table3.csv", "table4.csv", "table5.csv", "table6.csv", "quality.csv", "scaling.csv", "runs.csv")
+
+
+def run_script(script, *args):
+    return subprocess.run([sys.executable, os.path.join(PLOTS, script), *args],
+                          capture_output=True, text=True, timeout=300)
+
+
+def read_csv(path):
+    with open(path, newline="", encoding="utf-8") as handle:
+        return list(csv.DictReader(handle))
+
+
+def raw_fixture():
+    with open(FIXTURE, encoding="utf-8") as handle:
+        return json.load(handle)
+
+
+def raw_entry(document, name, aggregate=None):
+    """The fixture entry with this full Google Benchmark name (independent of the loader)."""
+    for entry in document["benchmarks"]:
+        if entry["name"] == name and entry.get("aggregate_name") == aggregate:
+            return entry
+    raise KeyError(name)
+
+
+def entry(name, real_time, unit="ms", run_type="iteration", aggregate=None, run_name=None, **counters):
+    item = {"name": name, "run_type": run_type, "real_time": real_time, "cpu_time": real_time,
+            "time_unit": unit, "iterations": 1}
+    if aggregate:
+        item["aggregate_name"] = aggregate
+    if run_name:
+        item["run_name"] = run_name
+    item.update(counters)
+    return item
+
+
+class NameTests(unittest.TestCase):
+    def test_suffixes_are_stripped(self):
+        cases = {
+            "FormB/AoS/MultiBlock/109k/repeats:5/manual_time": "FormB/AoS/MultiBlock/109k",
+            "Serial/FormA/5k/iterations:1/real_time": "Serial/FormA/5k",
+            "FormA/SoA/SingleBlock/5k/min_time:0.500/manual_time": "FormA/SoA/SingleBlock/5k",
+            "Threads/FormB/77k/real_time/threads:8": "Threads/FormB/77k",
+            "Memory/CopyBandwidth/manual_time": "Memory/CopyBandwidth",
+            "FormB/SoA/Coloured/lattice-64/min_warmup_time:0.2/process_time": "FormB/SoA/Coloured/lattice-64",
+            "FormB/AoS/MultiBlock/10k": "FormB/AoS/MultiBlock/10k",
+        }
+        for name, stripped in cases.items():
+            self.assertEqual(bj.strip_name(name), stripped, name)
+
+    def test_aggregate_name_without_run_name(self):
+        item = entry("FormB/AoS/MultiBlock/5k/manual_time_median", 1.0, run_type="aggregate", aggregate="median")
+        self.assertEqual(bj.entry_name(item), "FormB/AoS/MultiBlock/5k")
+
+    def test_parse_name_kinds(self):
+        self.assertEqual(bj.parse_name("FormB/SoA/Coloured/59k")["strategy"], "Coloured")
+        self.assertEqual(bj.parse_name("FormA/AoS/MultiBlock/lattice-128")["lattice_n"], 128)
+        self.assertEqual(bj.parse_name("Serial/Ordinary/109k")["kind"], "ordinary")
+        self.assertEqual(bj.parse_name("Threads/FormA/5k")["kind"], "threads")
+        self.assertEqual(bj.parse_name("Memory/CopyBandwidth")["kind"], "copy")
+        self.assertEqual(bj.parse_name("FormC/AoS/MultiBlock/5k")["kind"], "other")
+
+
+class LoaderTests(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.result = bj.load_result(FIXTURE)
+
+    def test_median_aggregate_is_preferred(self):
+        # Repetitions 4.10, 4.00, 4.90: median 4.10, mean 4.333.
+        self.assertAlmostEqual(self.result.time_ms("FormB/AoS/MultiBlock/5k"), 4.10)
+        self.assertEqual(self.result.run("FormB/AoS/MultiBlock/5k").statistic, "median of 3")
+
+    def test_single_runs_and_time_unit(self):
+        self.assertAlmostEqual(self.result.time_ms("FormA/AoS/MultiBlock/109k"), 38.0)
+        self.assertAlmostEqual(self.result.time_ms("Memory/CopyBandwidth"), 96.2e-3)  # written in us
+
+    def test_errors_are_left_out(self):
+        self.assertNotIn("Threads/FormA/109k", self.result.runs)
+        self.assertIn("Threads/FormA/109k", self.result.errors)
+
+    def test_counters_and_context(self):
+        self.assertEqual(self.result.counter("Serial/Ordinary/109k", "hist_after_0"), 2050)
+        self.assertIsNone(self.result.counter("Serial/Ordinary/109k", "no_such_counter"))
+        self.assertEqual(self.result.context_number("sm_count"), 132)
+        self.assertEqual(self.result.mesh_size("109k"), (109260, 702315))
+        self.assertEqual(self.result.mesh_size("lattice-16"), (4913, 24576))
+        self.assertEqual(self.result.device_label(), "NVIDIA H100 80GB HBM3")
+
+    def test_mean_of_iterations_without_aggregates(self):
+        document = {"context": {}, "benchmarks": [
+            entry("Serial/FormB/5k/real_time", 10.0, sweeps=40),
+            entry("Serial/FormB/5k/real_time", 14.0, sweeps=44),
+            entry("FormB/AoS/MultiBlock/5k/manual_time", 2000.0, unit="us", unknown_field="text"),
+            entry("FormA/AoS/MultiBlock/5k/manual_time", 0.5, unit="s")]}
+        result = bj.parse_result(document)
+        self.assertAlmostEqual(result.time_ms("Serial/FormB/5k"), 12.0)
+        self.assertAlmostEqual(result.counter("Serial/FormB/5k", "sweeps"), 42.0)
+        self.assertEqual(result.run("Serial/FormB/5k").statistic, "mean of 2")
+        self.assertAlmostEqual(result.time_ms("FormB/AoS/MultiBlock/5k"), 2.0)
+        self.assertAlmostEqual(result.time_ms("FormA/AoS/MultiBlock/5k"), 500.0)
+        self.assertIsNone(result.counter("FormB/AoS/MultiBlock/5k", "unknown_field"))
+
+    def test_median_from_name_only_aggregates(self):
+        document = {"benchmarks": [
+            entry("X/manual_time_mean", 3.0, run_type="aggregate", aggregate="mean"),
+            entry("X/manual_time_median", 2.0, run_type="aggregate", aggregate="median"),
+            entry("X/manual_time_cv", 0.1, run_type="aggregate", aggregate="cv")]}
+        self.assertAlmostEqual(bj.parse_result(document).time_ms("X"), 2.0)
+
+    def test_bad_input(self):
+        with tempfile.TemporaryDirectory() as folder:
+            bad = os.path.join(folder, "bad.json")
+            with open(bad, "w", encoding="utf-8") as handle:
+                handle.write("{\"benchmarks\": [")
+            not_gbench = os.path.join(folder, "other.json")
+            with open(not_gbench, "w", encoding="utf-8") as handle:
+                handle.write("[1, 2]")
+            for path in (os.path.join(folder, "missing.json"), bad, not_gbench):
+                with self.assertRaises(bj.BenchInputError) as caught:
+                    bj.load_result(path)
+                self.assertIn(path, str(caught.exception))
+
+
+class PaperNumberTests(unittest.TestCase):
+    def test_speedups_match_published_times(self):
+        # Tables 5-6 were printed from Tables 3-4: speedup = CPU / GPU within rounding.
+        for form in bj.FORMS:
+            for model in paper.MODELS:
+                cpu = paper.time_ms(form, "cpu", model)
+                for column in paper.SPEEDUP_COLUMNS[:4]:
+                    expected = cpu / paper.time_ms(form, column, model)
+                    self.assertAlmostEqual(paper.speedup(form, column, model) / expected, 1.0, delta=2e-3,
+                                           msg=f"{form} {model} {column}")
+                four = [paper.speedup(form, c, model) for c in paper.SPEEDUP_COLUMNS[:4]]
+                self.assertAlmostEqual(paper.speedup(form, "max", model), max(four), places=3)
+
+    def test_spot_values(self):
+        self.assertEqual(paper.time_ms("FormA", "soa_multi", "59k"), 1254)
+        self.assertEqual(paper.time_ms("FormB", "aos_multi", "109k"), 1618)
+        self.assertEqual(paper.SPEEDUP["FormB"]["77k"], (13.366, 22.447, 12.530, 13.411, 22.447))
+        self.assertEqual(paper.SPEEDUP["FormB"]["109k"], (10.261, 22.620, 8.389, 16.409, 22.620))
+        self.assertEqual(paper.MODEL_SIZES["77k"], (76928, 388428))
+        self.assertIsNone(paper.time_ms("FormB", "aos_coloured", "5k"))
+        for model in paper.MODELS:
+            self.assertEqual(paper.time_ms("FormA", "cpu", model), paper.time_ms("FormB", "cpu", model))
+
+
+class ReportTests(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = tempfile.TemporaryDirectory()
+        cls.out = cls.folder.name
+        cls.completed = run_script("report.py", FIXTURE, cls.out)
+        cls.document = raw_fixture()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.folder.cleanup()
+
+    def table(self, stem):
+        return {row["model"]: row for row in read_csv(os.path.join(self.out, f"{stem}.csv"))}
+
+    def median(self, full_name):
+        return raw_entry(self.document, full_name + "_median", "median")["real_time"]
+
+    def single(self, full_name):
+        return raw_entry(self.document, full_name)["real_time"]
+
+    def test_report_succeeds_and_writes_everything(self):
+        self.assertEqual(self.completed.returncode, 0, self.completed.stderr)
+        for name in CSV_FILES + FIGURES + ("tables.md",):
+            self.assertTrue(os.path.isfile(os.path.join(self.out, name)), name)
+
+    def test_time_table_columns_and_values(self):
+        rows = read_csv(os.path.join(self.out, "table4.csv"))
+        self.assertEqual(list(rows[0].keys()), [
+            "model", "nodes", "tets", "cpu_serial_ms", "aos_single_ms", "aos_multi_ms", "soa_single_ms",
+            "soa_multi_ms", "cpu_threads_ms", "aos_coloured_ms", "soa_coloured_ms", "paper_nodes", "paper_tets",
+            "paper_cpu_serial_ms", "paper_aos_single_ms", "paper_aos_multi_ms", "paper_soa_single_ms",
+            "paper_soa_multi_ms"])
+        self.assertEqual([r["model"] for r in rows], list(bj.MODELS))
+        table = {r["model"]: r for r in rows}
+        self.assertAlmostEqual(float(table["109k"]["aos_multi_ms"]),
+                               self.median("FormB/AoS/MultiBlock/109k/repeats:3/manual_time"))
+        self.assertAlmostEqual(float(table["5k"]["cpu_serial_ms"]), self.median("Serial/FormB/5k/real_time"))
+        self.assertEqual(table["5k"]["soa_single_ms"], "")  # not run
+        self.assertEqual(table["10k"]["cpu_serial_ms"], "")  # model not run
+        self.assertEqual(float(table["109k"]["paper_aos_multi_ms"]), 1618)
+        self.assertEqual(float(table["59k"]["paper_nodes"]), 59261)
+
+    def test_speedup_equals_serial_over_gpu(self):
+        table5, table6 = self.table("table5"), self.table("table6")
+        serial_b = self.median("Serial/FormB/109k/real_time")
+        gpu_b = self.median("FormB/SoA/MultiBlock/109k/repeats:3/manual_time")
+        threads_b = self.median("Threads/FormB/109k/real_time")
+        self.assertAlmostEqual(float(table6["109k"]["soa_multi"]), serial_b / gpu_b, places=6)
+        self.assertAlmostEqual(float(table6["109k"]["soa_multi_vs_threads"]), threads_b / gpu_b, places=6)
+        self.assertAlmostEqual(float(table6["109k"]["threads_over_serial"]), serial_b / threads_b, places=6)
+        serial_a = self.single("Serial/FormA/5k/iterations:1/real_time")
+        gpu_a = self.single("FormA/SoA/SingleBlock/5k/min_time:0.500/manual_time")
+        self.assertAlmostEqual(float(table5["5k"]["soa_single"]), serial_a / gpu_a, places=6)
+        four = [float(table6["5k"][k]) for k in ("aos_single", "aos_multi", "soa_multi")]
+        self.assertAlmostEqual(float(table6["5k"]["max"]), max(four), places=6)
+        self.assertEqual(float(table6["109k"]["paper_aos_multi"]), 22.620)
+        self.assertEqual(float(table5["10k"]["paper_max"]), 11.31)
+        self.assertEqual(table5["109k"]["cpu_threads_ms"], "")  # the error entry
+
+    def test_quality_table(self):
+        rows = {r["benchmark"]: r for r in read_csv(os.path.join(self.out, "quality.csv"))}
+        ordinary = rows["Serial/Ordinary/109k"]
+        self.assertEqual(int(float(ordinary["inverted_after"])), 17)
+        self.assertEqual(int(float(ordinary["low_q_before"])), 1490)
+        adaptive = rows["FormB/AoS/MultiBlock/109k"]
+        self.assertGreater(float(adaptive["q_min_after"]), float(adaptive["q_min_before"]))
+        self.assertNotIn("Memory/CopyBandwidth", rows)
+
+    def test_scaling_table_memory_floor(self):
+        rows = {r["benchmark"]: r for r in read_csv(os.path.join(self.out, "scaling.csv"))}
+        copy_bw = raw_entry(self.document, "Memory/CopyBandwidth/manual_time")["bytes_per_s"]
+        lattice = rows["FormB/AoS/MultiBlock/lattice-32"]
+        self.assertEqual(lattice["lattice_n"], "32")
+        raw = raw_entry(self.document, "FormB/AoS/MultiBlock/lattice-32/manual_time")
+        bytes_per_sweep = raw["bytes_per_s"] * raw["ms_per_sweep"] / 1000
+        floor_ms = bytes_per_sweep / copy_bw * 1000
+        self.assertAlmostEqual(float(lattice["bytes_per_sweep"]) / bytes_per_sweep, 1.0, places=6)
+        self.assertAlmostEqual(float(lattice["floor_ms_per_sweep"]) / floor_ms, 1.0, places=6)
+        self.assertAlmostEqual(float(lattice["ratio_to_floor"]), raw["ms_per_sweep"] / floor_ms, places=4)
+        names = list(rows)
+        self.assertLess(names.index("FormB/AoS/MultiBlock/109k"), names.index("FormB/AoS/MultiBlock/lattice-16"))
+        self.assertLess(names.index("FormB/AoS/MultiBlock/lattice-16"), names.index("FormB/AoS/MultiBlock/lattice-32"))
+
+    def test_markdown_names_device_and_paper(self):
+        with open(os.path.join(self.out, "tables.md"), encoding="utf-8") as handle:
+            text = handle.read()
+        context = self.document["context"]
+        for expected in (context["gpu_name"], context["git_sha"], "132 SMs", "CUDA 13.0",
+                         "paper: NVIDIA Quadro P6000", "Table 3", "Table 6", "22.620", "—",
+                         "Threads/FormA/109k: not measured"):
+            self.assertIn(expected, text)
+
+    def test_figures_are_real_pngs(self):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.image as mpimg
+        for name in FIGURES:
+            path = os.path.join(self.out, name)
+            with open(path, "rb") as handle:
+                self.assertEqual(handle.read(8), b"\x89PNG\r\n\x1a\n", name)
+            self.assertGreater(os.path.getsize(path), 20000, name)
+            pixels = mpimg.imread(path)
+            self.assertGreater(pixels.shape[0], 300)
+            self.assertGreater(float(pixels.std()), 0.01, f"{name} looks blank")
+
+
+class OptionAndEdgeTests(unittest.TestCase):
+    def test_missing_result_exits_2(self):
+        with tempfile.TemporaryDirectory() as out:
+            for script in ("report.py", "make_tables.py", "make_figures.py"):
+                completed = run_script(script, os.path.join(out, "missing.json"), os.path.join(out, "x"))
+                self.assertEqual(completed.returncode, 2, script)
+                self.assertIn("no such file", completed.stderr)
+            self.assertFalse(os.path.exists(os.path.join(out, "x")))
+
+    def test_cpu_only_result(self):
+        document = raw_fixture()
+        document["benchmarks"] = [e for e in document["benchmarks"]
+                                  if bj.parse_name(bj.entry_name(e))["kind"] in ("serial", "threads", "ordinary")]
+        for key in ("gpu_name", "sm_count", "cuda_version"):
+            del document["context"][key]
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(out, "cpu.json")
+            with open(path, "w", encoding="utf-8") as handle:
+                json.dump(document, handle)
+            completed = run_script("report.py", path, out)
+            self.assertEqual(completed.returncode, 0, completed.stderr)
+            with open(os.path.join(out, "tables.md"), encoding="utf-8") as handle:
+                self.assertIn("GPU: none in this run", handle.read())
+            rows = {r["model"]: r for r in read_csv(os.path.join(out, "table6.csv"))}
+            self.assertEqual(rows["109k"]["aos_multi"], "")
+            self.assertNotEqual(rows["109k"]["threads_over_serial"], "")
+            self.assertEqual(read_csv(os.path.join(out, "scaling.csv")), [])
+            for name in FIGURES:
+                self.assertTrue(os.path.isfile(os.path.join(out, name)), name)
+
+    def test_quality_model_option_and_fallback(self):
+        import make_figures
+        result = bj.load_result(FIXTURE)
+        self.assertEqual(make_figures.pick_quality_model(result, "5k"), "5k")
+        self.assertEqual(make_figures.pick_quality_model(result, "59k"), "109k")
+        before, ordinary, adaptive = make_figures.quality_histograms(result, "5k")
+        self.assertEqual(sum(before), 31874)
+        self.assertEqual(ordinary[0], 331)
+        self.assertEqual(adaptive[0], 118)
+        with tempfile.TemporaryDirectory() as out:
+            completed = run_script("make_figures.py", FIXTURE, out, "--quality-model", "5k")
+            self.assertEqual(completed.returncode, 0, completed.stderr)
+            self.assertTrue(os.path.isfile(os.path.join(out, "fig13_quality.png")))
+
+    def test_number_formatting(self):
+        import make_tables
+        self.assertEqual(make_tables.fmt_sig(36592.0), "36,592")
+        self.assertEqual(make_tables.fmt_sig(12.345), "12.35")
+        self.assertEqual(make_tables.fmt_sig(0.081234), "0.08123")
+        self.assertEqual(make_tables.fmt_sig(None), "—")
+        self.assertTrue(math.isclose(float(make_tables.csv_value(1 / 3)), 1 / 3, rel_tol=1e-9))
+        self.assertEqual(make_tables.csv_value(None), "")
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,35 @@
+#pragma once
+// Small meshes built in code for tests.
+#include <cstdint>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::testing {
+
+// The regular tet with unit edges, positively oriented.
+TetMesh regular_tet();
+
+// n^3 cubes of a unit-spaced grid split into 6 tets each (no jitter unless
+// jitter > 0; interior nodes only), via the lattice generator.
+TetMesh cube_grid(int n, double jitter = 0.0, std::uint64_t seed = 7);
+
+// A cube of 8 corners plus one interior node, as a fan of 12 tets around
+// the interior node: the smallest mesh with one movable node.
+TetMesh cube_with_centre(double cx = 0.5, double cy = 0.5, double cz = 0.5);
+
+// Random points in a box, Delaunay-tetrahedralised by TetGen.
+TetMesh random_delaunay(int points, std::uint64_t seed);
+
+// Path to tests/data/<name>.
+const char* data_path(const char* name);
+
+}  // namespace tetsmooth::testing
+
+namespace tetsmooth::testing {
+
+// The paper's Figure 2 situation: one interior node whose star (8 boundary
+// nodes around it) is concave, so the centroid of its neighbours lies
+// outside the star's kernel and moving there inverts a tet.
+TetMesh concave_star();
+
+}  // namespace tetsmooth::testing

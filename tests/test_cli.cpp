@@ -1,0 +1,462 @@
+// The command-line tool in-process: parsing and validation of arguments,
+// exit codes, and the content of the reports.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/arg_parser.hpp"
+#include "apps/cli.hpp"
+#include "apps/command_line.hpp"
+#include "apps/exit_codes.hpp"
+#include "apps/output_check.hpp"
+#include "apps/progress_line.hpp"
+#include "apps/report_text.hpp"
+#include "apps/worst_tets.hpp"
+#include "kernels/smoother.hpp"
+#include "mesh/errors.hpp"
+#include "test_meshes.hpp"
+
+namespace tetsmooth::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+Command parse(std::vector<std::string> args) { return parse_command_line(args); }
+
+template <class T>
+T parse_as(std::vector<std::string> args) {
+  const Command c = parse(std::move(args));
+  EXPECT_TRUE(std::holds_alternative<T>(c));
+  return std::get<T>(c);
+}
+
+std::string usage_error_of(std::vector<std::string> args) {
+  try {
+    parse(std::move(args));
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no UsageError";
+  return "";
+}
+
+struct CliRun {
+  int code;
+  std::string out, err;
+};
+
+CliRun run(std::vector<std::string> args) {
+  std::ostringstream out, err;
+  const int code = run_cli(args, out, err, false);
+  return {code, out.str(), err.str()};
+}
+
+// A fresh directory per test, removed afterwards.
+class CliFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("tetsmooth_test_cli_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> files() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir_)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+  // A jittered lattice-n mesh written by `tetsmooth generate`.
+  std::string lattice(int n, const std::string& name = "lattice.vtu") {
+    const std::string p = path(name);
+    const CliRun r = run({"generate", "lattice-" + std::to_string(n), "-o", p, "-q"});
+    EXPECT_EQ(r.code, kExitOk) << r.err;
+    return p;
+  }
+
+  fs::path dir_;
+};
+
+// --- parsing ---------------------------------------------------------------
+
+TEST(CliParse, SmoothDefaultsAreThoseDocumented) {
+  const auto c = parse_as<SmoothCommand>({"smooth", "in.vtu", "-o", "out.vtu"});
+  EXPECT_EQ(c.input, "in.vtu");
+  EXPECT_EQ(c.output, "out.vtu");
+  EXPECT_EQ(c.options.method, Method::Adaptive);
+  EXPECT_EQ(c.options.form, Form::B);
+  EXPECT_EQ(c.options.strategy, Strategy::Coloured);
+  EXPECT_EQ(c.options.layout, Layout::AoS);
+  EXPECT_EQ(c.device, Device::Auto);
+  EXPECT_EQ(c.options.threads, 0);
+  EXPECT_EQ(c.options.precision, Precision::Double);
+  EXPECT_EQ(c.options.max_iterations, 100);
+  EXPECT_DOUBLE_EQ(c.options.tolerance, 1e-4);
+  EXPECT_EQ(c.options.ordering, Ordering::Coloured);
+  EXPECT_EQ(c.input_format, MeshFormat::Auto);
+  EXPECT_EQ(c.output_format, MeshFormat::Auto);
+  EXPECT_TRUE(c.report_path.empty());
+  EXPECT_FALSE(c.quiet);
+  EXPECT_FALSE(c.strategy_given || c.layout_given || c.threads_given);
+}
+
+TEST(CliParse, SmoothTakesEveryOptionInBothSpellings) {
+  const auto c = parse_as<SmoothCommand>({"smooth", "--method=ordinary", "--form", "A", "--strategy=multiblock",
+                                          "--layout", "soa", "--device=cpu", "--threads", "3", "--precision",
+                                          "float", "--max-iter=7", "--tol", "0.5", "--report", "r.json",
+                                          "--format", "msh", "--output-format=vtk", "-q", "in.msh", "--output",
+                                          "out.txt"});
+  EXPECT_EQ(c.input, "in.msh");
+  EXPECT_EQ(c.output, "out.txt");
+  EXPECT_EQ(c.options.method, Method::Ordinary);
+  EXPECT_EQ(c.options.form, Form::A);
+  EXPECT_EQ(c.options.strategy, Strategy::MultiBlock);
+  EXPECT_EQ(c.options.layout, Layout::SoA);
+  EXPECT_EQ(c.device, Device::Cpu);
+  EXPECT_EQ(c.options.threads, 3);
+  EXPECT_EQ(c.options.precision, Precision::Float);
+  EXPECT_EQ(c.options.max_iterations, 7);
+  EXPECT_DOUBLE_EQ(c.options.tolerance, 0.5);
+  EXPECT_EQ(c.report_path, "r.json");
+  EXPECT_EQ(c.input_format, MeshFormat::Msh41);
+  EXPECT_EQ(c.output_format, MeshFormat::Vtk);
+  EXPECT_TRUE(c.quiet);
+  EXPECT_TRUE(c.strategy_given && c.layout_given && c.threads_given);
+  // Form A is Jacobi: there is no node order to choose.
+  EXPECT_EQ(c.options.ordering, Ordering::Natural);
+}
+
+TEST(CliParse, OnlyOneThreadGivesTheNaturalOrderOfTheSerialReference) {
+  EXPECT_EQ(parse_as<SmoothCommand>({"smooth", "a.vtu", "-o", "b.vtu", "--threads", "1"}).options.ordering,
+            Ordering::Natural);
+  EXPECT_EQ(parse_as<SmoothCommand>({"smooth", "a.vtu", "-o", "b.vtu", "--threads", "2"}).options.ordering,
+            Ordering::Coloured);
+  EXPECT_EQ(parse_as<SmoothCommand>({"smooth", "a.vtu", "-o", "b.vtu", "--threads", "0"}).options.ordering,
+            Ordering::Coloured);
+}
+
+TEST(CliParse, OtherCommands) {
+  const auto g = parse_as<GenerateCommand>({"generate", "lattice-4", "-o", "x.vtu", "--seed", "18446744073709551615"});
+  EXPECT_EQ(g.model, "lattice-4");
+  EXPECT_EQ(g.seed, 18446744073709551615ull);
+  EXPECT_EQ(parse_as<GenerateCommand>({"generate", "5k", "-o", "x.vtu"}).seed, 1u);
+
+  const auto q = parse_as<QualityCommand>({"quality", "m.mesh", "--json", "--worst", "3"});
+  EXPECT_TRUE(q.json);
+  EXPECT_EQ(q.worst, 3);
+  EXPECT_EQ(parse_as<QualityCommand>({"quality", "m.mesh"}).worst, 10);
+
+  const auto v = parse_as<ConvertCommand>({"convert", "a.node", "b.msh", "--output-format", "msh22"});
+  EXPECT_EQ(v.input, "a.node");
+  EXPECT_EQ(v.output, "b.msh");
+  EXPECT_EQ(v.output_format, MeshFormat::Msh22);
+}
+
+TEST(CliParse, DoubleDashEndsOptions) {
+  const auto v = parse_as<ConvertCommand>({"convert", "--", "-odd.vtu", "b.vtu"});
+  EXPECT_EQ(v.input, "-odd.vtu");
+}
+
+TEST(CliParse, HelpAndVersion) {
+  EXPECT_EQ(parse_as<HelpRequest>({"--help"}).command, "");
+  EXPECT_EQ(parse_as<HelpRequest>({"-h"}).command, "");
+  EXPECT_EQ(parse_as<HelpRequest>({"help", "quality"}).command, "quality");
+  // Help wins over whatever else is on the line, even a bad option.
+  EXPECT_EQ(parse_as<HelpRequest>({"smooth", "--bogus", "--help"}).command, "smooth");
+  EXPECT_EQ(parse_as<HelpRequest>({"convert", "-h"}).command, "convert");
+  parse_as<VersionRequest>({"--version"});
+}
+
+TEST(CliParse, UsageErrorsNameTheProblem) {
+  EXPECT_NE(usage_error_of({}).find("no command"), std::string::npos);
+  EXPECT_NE(usage_error_of({"smoothe", "a"}).find("unknown command 'smoothe'"), std::string::npos);
+  EXPECT_NE(usage_error_of({"--frobnicate"}).find("unknown option '--frobnicate'"), std::string::npos);
+  EXPECT_NE(usage_error_of({"help", "nope"}).find("no help for 'nope'"), std::string::npos);
+
+  const std::string typo = usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--max-iters", "5"});
+  EXPECT_NE(typo.find("unknown option '--max-iters'"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("did you mean '--max-iter'"), std::string::npos) << typo;
+  EXPECT_NE(typo.find("tetsmooth smooth --help"), std::string::npos) << typo;
+
+  EXPECT_NE(usage_error_of({"smooth", "a.vtu"}).find("missing -o OUT"), std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "-o", "b.vtu"}).find("missing input"), std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "a.vtu", "x.vtu", "-o", "b.vtu"}).find("unexpected argument 'x.vtu'"),
+            std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o"}).find("-o needs a value"), std::string::npos);
+  EXPECT_NE(usage_error_of({"convert", "a.vtu"}).find("missing OUT"), std::string::npos);
+  EXPECT_NE(usage_error_of({"quality", "a.vtu", "--json=yes"}).find("takes no value"), std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--form", "C"}).find("expected A|B"),
+            std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--device", "gpu"}).find("expected auto|cpu|cuda"),
+            std::string::npos);
+}
+
+TEST(CliParse, NumbersAreCheckedForRange) {
+  for (const char* bad : {"0", "-3", "ten", "5x", "", "99999999999"})
+    EXPECT_THROW(parse({"smooth", "a.vtu", "-o", "b.vtu", "--max-iter", bad}), UsageError) << bad;
+  for (const char* bad : {"-1", "nan", "inf", "1e-4x", "abc"})
+    EXPECT_THROW(parse({"smooth", "a.vtu", "-o", "b.vtu", "--tol", bad}), UsageError) << bad;
+  EXPECT_THROW(parse({"smooth", "a.vtu", "-o", "b.vtu", "--threads", "-1"}), UsageError);
+  EXPECT_THROW(parse({"generate", "5k", "-o", "b.vtu", "--seed", "-1"}), UsageError);
+  EXPECT_THROW(parse({"quality", "a.vtu", "--worst", "-1"}), UsageError);
+  EXPECT_EQ(parse_int_option("--n", "42", 0, 100), 42);
+  EXPECT_DOUBLE_EQ(parse_nonnegative_option("--x", "2.5e-3"), 2.5e-3);
+}
+
+TEST(CliParse, UnknownFormatNameIsAUsageError) {
+  EXPECT_THROW(parse({"convert", "a.vtu", "b.vtu", "--output-format", "stl"}), UsageError);
+}
+
+// --- exit codes ------------------------------------------------------------
+
+TEST(CliExit, UsageErrorsExitWith2AndOneLine) {
+  for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+           {}, {"smooth", "--nope"}, {"quality"}, {"smooth", "a.vtu", "-o", "b.vtu", "--tol", "x"}}) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, kExitUsage);
+    EXPECT_EQ(r.err.rfind("tetsmooth: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_TRUE(r.out.empty());
+  }
+}
+
+TEST(CliExit, HelpGoesToStdoutAndListsExitCodes) {
+  for (const std::string command : {"", "generate", "smooth", "quality", "convert"}) {
+    const CliRun r = command.empty() ? run({"--help"}) : run({command, "--help"});
+    EXPECT_EQ(r.code, kExitOk);
+    EXPECT_TRUE(r.err.empty());
+    EXPECT_NE(r.out.find("Usage:"), std::string::npos) << command;
+    EXPECT_NE(r.out.find("5  device error"), std::string::npos) << command;
+  }
+  EXPECT_NE(run({"smooth", "--help"}).out.find("--max-iter N"), std::string::npos);
+  EXPECT_NE(run({"generate", "--help"}).out.find("slope-77k"), std::string::npos);
+  const CliRun v = run({"--version"});
+  EXPECT_EQ(v.code, kExitOk);
+  EXPECT_EQ(v.out.rfind(std::string("tetsmooth ") + TETSMOOTH_VERSION, 0), 0u);
+}
+
+TEST(CliExit, UnknownModelIsAUsageError) {
+  EXPECT_EQ(run({"generate", "no-such-model", "-o", "/tmp/never-written.vtu"}).code, kExitUsage);
+}
+
+TEST(CliExit, UnknownExtensionIsAUsageError) {
+  EXPECT_EQ(run({"convert", "a.vtu", "b.xyz"}).code, kExitUsage);
+}
+
+TEST_F(CliFiles, MissingInputExitsWith3) {
+  const CliRun r = run({"quality", path("absent.vtu")});
+  EXPECT_EQ(r.code, kExitInput);
+  EXPECT_NE(r.err.find("absent.vtu"), std::string::npos) << r.err;
+}
+
+TEST_F(CliFiles, MalformedInputExitsWith3AndNamesTheLine) {
+  const std::string p = path("broken.mesh");
+  std::ofstream(p) << "MeshVersionFormatted 2\nDimension 3\nVertices\n2\n0 0 0 0\n1 1 nonsense 0\n";
+  const CliRun r = run({"quality", p});
+  EXPECT_EQ(r.code, kExitInput);
+  EXPECT_NE(r.err.find("broken.mesh:"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST_F(CliFiles, UnwritableOutputExitsWith4AndWritesNothing) {
+  const std::string in = lattice(2);
+  const std::vector<std::string> before = files();
+  const CliRun missing_dir = run({"convert", in, path("no/such/dir/out.vtu")});
+  EXPECT_EQ(missing_dir.code, kExitOutput) << missing_dir.err;
+  fs::create_directory(path("taken.vtu"));
+  const CliRun is_dir = run({"smooth", in, "-o", path("taken.vtu")});
+  EXPECT_EQ(is_dir.code, kExitOutput) << is_dir.err;
+  const CliRun report = run({"smooth", in, "-o", path("ok.vtu"), "--report", path("no/dir/r.json")});
+  EXPECT_EQ(report.code, kExitOutput) << report.err;
+  // The report's location is checked before smoothing, so not even the mesh
+  // was written.
+  std::vector<std::string> expected = before;
+  expected.push_back("taken.vtu");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(files(), expected);
+}
+
+TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {
+  if (cuda_available()) GTEST_SKIP() << "a CUDA device is usable here";
+  const std::string in = lattice(2);
+  const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cuda"});
+  EXPECT_EQ(r.code, kExitDevice);
+  EXPECT_NE(r.err.find("--device cuda"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("out.vtu")));
+}
+
+// --- reports ---------------------------------------------------------------
+
+TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
+  const std::string in = lattice(4);
+  const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--threads", "2", "--max-iter",
+                        "50", "--report", path("report.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("report.json")) >> j;
+
+  EXPECT_EQ(j["command"], "smooth");
+  EXPECT_EQ(j["options"]["method"], "adaptive");
+  EXPECT_EQ(j["options"]["form"], "B");
+  EXPECT_EQ(j["options"]["threads"], 2);
+  EXPECT_EQ(j["options"]["max_iterations"], 50);
+  EXPECT_EQ(j["options"]["cpu_ordering"], "coloured");
+  EXPECT_EQ(j["device"], "cpu");
+  EXPECT_EQ(j["backend"], "cpu-threads");
+  EXPECT_EQ(j["input"]["nodes"], 125);
+  EXPECT_EQ(j["input"]["tets"], 6 * 64);
+  EXPECT_EQ(j["input"]["format"], "vtu");
+
+  const int sweeps = j["sweeps"];
+  EXPECT_GE(sweeps, 1);
+  EXPECT_LE(sweeps, 50);
+  EXPECT_EQ(j["accepted_per_sweep"].size(), static_cast<std::size_t>(sweeps));
+  EXPECT_EQ(j["max_displacement_per_sweep"].size(), static_cast<std::size_t>(sweeps));
+  EXPECT_TRUE(j["stop_reason"].is_string());
+  EXPECT_EQ(j["movable_nodes"], 27);  // the 3^3 interior nodes of a 4^3 lattice
+  EXPECT_GT(j["colours"].get<int>(), 1);
+  for (const char* phase : {"read", "topology", "colouring", "smoothing", "write", "total"})
+    EXPECT_GE(j["timings_ms"][phase].get<double>(), 0.0) << phase;
+
+  const auto& before = j["quality"]["before"];
+  const auto& after = j["quality"]["after"];
+  for (const auto* s : {&before, &after}) {
+    const std::vector<std::size_t> counts = (*s)["histogram"]["counts"];
+    EXPECT_EQ(counts.size(), 10u);
+    EXPECT_EQ(std::accumulate(counts.begin(), counts.end(), std::size_t{0}), 6u * 64u);
+    EXPECT_EQ((*s)["tets"], 6 * 64);
+  }
+  // The adaptive method only accepts moves that raise a node's worst tet.
+  EXPECT_GE(after["min"].get<double>(), before["min"].get<double>());
+  EXPECT_EQ(after["inverted"], 0);
+
+  // The human report on stderr: the same numbers in a before/after table.
+  EXPECT_NE(r.err.find("before"), std::string::npos);
+  EXPECT_NE(r.err.find("after"), std::string::npos);
+  EXPECT_NE(r.err.find("radius ratio histogram"), std::string::npos);
+  EXPECT_NE(r.err.find("on cpu (2 thread(s)"), std::string::npos) << r.err;
+}
+
+TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {
+  const std::string in = lattice(3);
+  const CliRun r = run({"smooth", in, "-o", path("out.mesh"), "--device", "cpu", "-q"});
+  EXPECT_EQ(r.code, kExitOk);
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_TRUE(fs::exists(path("out.mesh")));
+}
+
+TEST_F(CliFiles, IgnoredCpuOptionsAreNamedInAWarning) {
+  const std::string in = lattice(2);
+  const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--strategy", "multiblock"});
+  EXPECT_EQ(r.code, kExitOk);
+  EXPECT_NE(r.err.find("tetsmooth: warning: --strategy"), std::string::npos) << r.err;
+}
+
+TEST_F(CliFiles, QualityJsonListsTheWorstTetsWorstFirst) {
+  const std::string in = lattice(3);
+  const CliRun r = run({"quality", in, "--json", "--worst", "4"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["index_base"], 0);
+  EXPECT_EQ(j["input"]["nodes"], 64);
+  EXPECT_EQ(j["input"]["tets"], 6 * 27);
+  EXPECT_EQ(j["input"]["movable_nodes"], 8);
+  EXPECT_EQ(j["input"]["boundary_nodes"], 64 - 8);
+  const auto& worst = j["worst_tets"];
+  ASSERT_EQ(worst.size(), 4u);
+  EXPECT_DOUBLE_EQ(worst[0]["quality"].get<double>(), j["quality"]["min"].get<double>());
+  for (std::size_t k = 1; k < worst.size(); ++k)
+    EXPECT_LE(worst[k - 1]["quality"].get<double>(), worst[k]["quality"].get<double>());
+  for (const auto& t : worst) {
+    EXPECT_LT(t["tet"].get<int>(), 6 * 27);
+    for (const auto& n : t["nodes"]) EXPECT_LT(n.get<int>(), 64);
+  }
+}
+
+TEST_F(CliFiles, QualityTextStatesIndexBase) {
+  const std::string in = lattice(2);
+  const CliRun r = run({"quality", in, "--worst", "2"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.out.find("2 worst tets (0-based tet and node indices)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("radius ratio histogram"), std::string::npos);
+}
+
+// --- pieces ----------------------------------------------------------------
+
+TEST(CliPieces, WorstTetsPicksTheLowestQualitiesWithTheirNodes) {
+  TetMesh mesh = testing::cube_with_centre();
+  const std::vector<double> q{0.5, 0.1, 0.9, 0.1, 0.3, 0.7, 0.8, 0.6, 0.2, 0.4, 0.95, 0.99};
+  const std::vector<RankedTet> worst = worst_tets(mesh, q, 3);
+  ASSERT_EQ(worst.size(), 3u);
+  EXPECT_EQ(worst[0].tet, 1);  // ties go to the lower index
+  EXPECT_EQ(worst[1].tet, 3);
+  EXPECT_EQ(worst[2].tet, 8);
+  EXPECT_DOUBLE_EQ(worst[2].quality, 0.2);
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(worst[1].nodes[c], mesh.tets[4 * 3 + c]);
+  EXPECT_EQ(worst_tets(mesh, q, 100).size(), q.size());
+}
+
+TEST(CliPieces, HistogramBarsShareOneScale) {
+  QualitySummary a, b;
+  a.histogram = {0, 0, 0, 0, 0, 0, 0, 0, 100, 0};
+  b.histogram = {1, 0, 0, 0, 0, 0, 0, 0, 50, 0};
+  std::ostringstream os;
+  write_histogram(os, {{"before", &a}, {"after", &b}});
+  const std::string text = os.str();
+  EXPECT_NE(text.find(std::string(22, '#')), std::string::npos);  // the largest bin fills its bar
+  EXPECT_NE(text.find(" 50 " + std::string(11, '#')), std::string::npos) << text;
+  // A single tet still shows, since isolated slivers are what one looks for.
+  std::istringstream lines(text);
+  std::string line;
+  bool saw_first_bin = false;
+  while (std::getline(lines, line))
+    if (line.rfind("  0.0-0.1", 0) == 0) {
+      saw_first_bin = true;
+      EXPECT_NE(line.find(" 1 #"), std::string::npos) << line;
+    }
+  EXPECT_TRUE(saw_first_bin);
+}
+
+TEST(CliPieces, ThousandsSeparators) {
+  EXPECT_EQ(with_thousands(0), "0");
+  EXPECT_EQ(with_thousands(999), "999");
+  EXPECT_EQ(with_thousands(1000), "1,000");
+  EXPECT_EQ(with_thousands(1234567), "1,234,567");
+}
+
+TEST(CliPieces, ProgressLineRedrawsInPlaceAndErasesItself) {
+  std::ostringstream os;
+  ProgressLine line(os, true, 10, std::chrono::milliseconds(0), std::chrono::milliseconds(0));
+  line.update({3, 1234, 0.5});
+  EXPECT_EQ(os.str().rfind("\r  sweep 3/10  accepted moves 1,234", 0), 0u) << os.str();
+  line.finish();
+  EXPECT_EQ(os.str().back(), '\r');
+  EXPECT_EQ(os.str().find('\n'), std::string::npos);
+
+  std::ostringstream silent;
+  ProgressLine off(silent, false, 10, std::chrono::milliseconds(0), std::chrono::milliseconds(0));
+  off.update({1, 1, 1.0});
+  off.finish();
+  EXPECT_TRUE(silent.str().empty());
+}
+
+TEST_F(CliFiles, OutputCheckRejectsDirectoriesAndMissingParents) {
+  EXPECT_THROW(check_output_location(path("")), OutputError);
+  EXPECT_THROW(check_output_location(path("missing/x.vtu")), OutputError);
+  std::ofstream(path("file")) << "x";
+  EXPECT_THROW(check_output_location(path("file/x.vtu")), OutputError);
+  EXPECT_NO_THROW(check_output_location(path("fine.vtu")));
+}
+
+}  // namespace
+}  // namespace tetsmooth::cli

@@ -1,0 +1,116 @@
+// Quality metrics: the radius ratio, mean ratio and minimum dihedral angle
+// on planted shapes, their invariances, and the mesh summary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mesh/quality_summary.hpp"
+#include "mesh/tet_quality.hpp"
+#include "test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+using V = Vec3<double>;
+const V kA{0, 0, 0}, kB{1, 0, 0}, kC{0.5, 0.8660254037844386, 0}, kD{0.5, 0.2886751345948129, 0.816496580927726};
+
+TEST(RadiusRatio, RegularTetIsOne) {
+  EXPECT_NEAR(radius_ratio(kA, kB, kC, kD), 1.0, 1e-12);
+  EXPECT_NEAR(mean_ratio(kA, kB, kC, kD), 1.0, 1e-12);
+  EXPECT_NEAR(min_dihedral_deg(kA, kB, kC, kD), std::acos(1.0 / 3.0) * 180 / M_PI, 1e-9);
+}
+
+TEST(RadiusRatio, RightCornerTetMatchesClosedForm) {
+  // Corner tet of the unit cube: r_in = 1/(3+sqrt 3), R = sqrt(3)/2.
+  const double expected = 3.0 * (1.0 / (3.0 + std::sqrt(3.0))) / (std::sqrt(3.0) / 2.0);
+  EXPECT_NEAR(radius_ratio(V{0, 0, 0}, V{1, 0, 0}, V{0, 1, 0}, V{0, 0, 1}), expected, 1e-12);
+}
+
+TEST(RadiusRatio, PoorShapesAreNearZero) {
+  const V flat_d{0.5, 0.2886751345948129, 1e-6};            // flat: apex almost in the base plane
+  const V needle_d{0.5, 0.2886751345948129, 1e4};           // needle: very tall apex
+  const V sliver[4] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 1e-5}, {1, 1, 0}};  // four nearly coplanar corners of a square
+  EXPECT_LT(radius_ratio(kA, kB, kC, flat_d), 1e-4);
+  EXPECT_LT(radius_ratio(kA, kB, kC, needle_d), 1e-3);
+  EXPECT_LT(std::abs(radius_ratio(sliver[0], sliver[1], sliver[2], sliver[3])), 1e-4);
+  EXPECT_LT(min_dihedral_deg(sliver[0], sliver[1], sliver[2], sliver[3]), 0.01);
+  EXPECT_EQ(radius_ratio(kA, kB, V{2, 0, 0}, kD), 0.0) << "a tet with three collinear corners is degenerate";
+  EXPECT_EQ(radius_ratio(kA, kA, kC, kD), 0.0) << "a repeated corner is degenerate";
+}
+
+TEST(RadiusRatio, InvertedIsNegative) {
+  EXPECT_NEAR(radius_ratio(kB, kA, kC, kD), -1.0, 1e-12);
+  EXPECT_NEAR(mean_ratio(kB, kA, kC, kD), -1.0, 1e-12);
+  EXPECT_LT(signed_volume6(kB, kA, kC, kD), 0);
+}
+
+class Invariance : public ::testing::TestWithParam<double> {};
+
+TEST_P(Invariance, TranslationRotationScale) {
+  const double s = GetParam();
+  const V tet[4] = {{0.1, 0.2, 0.05}, {1.3, 0.1, 0.2}, {0.4, 0.9, 0.1}, {0.5, 0.4, 0.7}};
+  const double q0 = radius_ratio(tet[0], tet[1], tet[2], tet[3]);
+  const double m0 = mean_ratio(tet[0], tet[1], tet[2], tet[3]);
+  const double d0 = min_dihedral_deg(tet[0], tet[1], tet[2], tet[3]);
+  // Rotation about an oblique axis (Rodrigues), then scale, then translate.
+  const double th = 0.7, c = std::cos(th), sn = std::sin(th);
+  const V k{1 / std::sqrt(3.0), 1 / std::sqrt(3.0), 1 / std::sqrt(3.0)};
+  V moved[4];
+  for (int i = 0; i < 4; ++i) {
+    const V p = tet[i];
+    const V r = c * p + sn * cross(k, p) + ((1 - c) * dot(k, p)) * k;
+    moved[i] = s * r + V{123.0 * s, -45.0 * s, 7.0 * s};
+  }
+  EXPECT_NEAR(radius_ratio(moved[0], moved[1], moved[2], moved[3]), q0, 1e-9);
+  EXPECT_NEAR(mean_ratio(moved[0], moved[1], moved[2], moved[3]), m0, 1e-9);
+  EXPECT_NEAR(min_dihedral_deg(moved[0], moved[1], moved[2], moved[3]), d0, 1e-6);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, Invariance, ::testing::Values(1e-6, 1e-3, 1.0, 1e3, 1e6));
+
+TEST(RadiusRatio, FloatAgreesWithDoubleOnUnitScale) {
+  using F = Vec3<float>;
+  const float q = radius_ratio(F{0, 0, 0}, F{1, 0, 0}, F{0, 1, 0}, F{0, 0, 1});
+  EXPECT_NEAR(q, radius_ratio(V{0, 0, 0}, V{1, 0, 0}, V{0, 1, 0}, V{0, 0, 1}), 1e-6);
+}
+
+TEST(QualitySummary, CountsAndHistogram) {
+  TetMesh m = testing::cube_with_centre(0.5, 0.5, 0.05);
+  const QualitySummary good = summarize_quality(testing::cube_with_centre());
+  const QualitySummary skewed = summarize_quality(m);
+  EXPECT_EQ(good.tets, 12u);
+  std::size_t total = 0;
+  for (auto h : skewed.histogram) total += h;
+  EXPECT_EQ(total, 12u);
+  EXPECT_GT(good.min, skewed.min);
+  EXPECT_GT(skewed.below_0_1, 0u);
+  EXPECT_EQ(skewed.inverted, 0u);
+  // Push the centre through the bottom face: the two bottom tets invert.
+  m.xyz[3 * 8 + 2] = -0.1;
+  const QualitySummary inverted = summarize_quality(m);
+  EXPECT_EQ(inverted.inverted, 2u);
+  EXPECT_LT(inverted.min, 0);
+  EXPECT_EQ(inverted.histogram[0], inverted.below_0_1);
+}
+
+TEST(QualitySummary, MinOverMovableIgnoresFrozenTets) {
+  TetMesh m = testing::cube_with_centre();
+  std::vector<std::uint8_t> movable(9, 0);
+  const QualitySummary none = summarize_quality(m, movable);
+  EXPECT_EQ(none.min_movable, 1.0);
+  movable[8] = 1;
+  const QualitySummary all = summarize_quality(m, movable);
+  EXPECT_DOUBLE_EQ(all.min_movable, all.min);
+}
+
+TEST(TetQualities, PerTetMatchesSummary) {
+  const TetMesh m = testing::cube_with_centre(0.3, 0.6, 0.4);
+  const auto q = tet_qualities(m);
+  ASSERT_EQ(q.size(), 12u);
+  double sum = 0;
+  for (double v : q) sum += v;
+  EXPECT_NEAR(sum / 12, summarize_quality(m).mean, 1e-12);
+}
+
+}  // namespace
+}  // namespace tetsmooth

@@ -1,0 +1,107 @@
+// CPU topology against brute force: neighbours, incidence, boundary, movable.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "mesh/topology.hpp"
+#include "test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+// Neighbours as sets, straight from the definition: nodes sharing a tet.
+std::vector<std::set<index_t>> brute_neighbours(const TetMesh& m) {
+  std::vector<std::set<index_t>> nb(m.num_nodes());
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b)
+        if (m.tets[4 * t + a] != m.tets[4 * t + b]) nb[m.tets[4 * t + a]].insert(m.tets[4 * t + b]);
+  return nb;
+}
+
+std::vector<std::uint8_t> brute_boundary(const TetMesh& m) {
+  std::map<std::set<index_t>, int> uses;
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (int skip = 0; skip < 4; ++skip) {
+      std::set<index_t> f;
+      for (int k = 0; k < 4; ++k)
+        if (k != skip) f.insert(m.tets[4 * t + k]);
+      ++uses[f];
+    }
+  std::vector<std::uint8_t> b(m.num_nodes(), 0);
+  for (const auto& [face, count] : uses)
+    if (count == 1)
+      for (index_t n : face) b[n] = 1;
+  return b;
+}
+
+void expect_matches_brute_force(const TetMesh& m) {
+  const Topology topo = build_topology(m);
+  const auto nb = brute_neighbours(m);
+  ASSERT_EQ(topo.neighbours.rows(), m.num_nodes());
+  for (std::size_t i = 0; i < m.num_nodes(); ++i) {
+    std::vector<index_t> row(topo.neighbours.row_begin(i), topo.neighbours.row_end(i));
+    EXPECT_EQ(row, std::vector<index_t>(nb[i].begin(), nb[i].end())) << "node " << i;
+    // Symmetry: j in row(i) <=> i in row(j).
+    for (index_t j : row) EXPECT_TRUE(std::binary_search(topo.neighbours.row_begin(j), topo.neighbours.row_end(j), index_t(i)));
+  }
+  std::vector<std::vector<index_t>> inc(m.num_nodes());
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (int k = 0; k < 4; ++k) inc[m.tets[4 * t + k]].push_back(static_cast<index_t>(t));
+  for (std::size_t i = 0; i < m.num_nodes(); ++i)
+    EXPECT_EQ(std::vector<index_t>(topo.node_tets.row_begin(i), topo.node_tets.row_end(i)), inc[i]) << "node " << i;
+  EXPECT_EQ(topo.boundary, brute_boundary(m));
+}
+
+TEST(Topology, SingleTet) {
+  const TetMesh m = testing::regular_tet();
+  expect_matches_brute_force(m);
+  const Topology topo = build_topology(m);
+  EXPECT_EQ(topo.boundary, std::vector<std::uint8_t>(4, 1));
+  EXPECT_EQ(topo.movable, std::vector<std::uint8_t>(4, 0));
+}
+
+TEST(Topology, CubeWithCentreHasOneInteriorNode) {
+  const TetMesh m = testing::cube_with_centre();
+  expect_matches_brute_force(m);
+  const Topology topo = build_topology(m);
+  EXPECT_EQ(topo.neighbours.row_size(8), 8);
+  EXPECT_EQ(topo.node_tets.row_size(8), 12);
+  EXPECT_EQ(topo.movable[8], 1);
+  EXPECT_EQ(std::count(topo.movable.begin(), topo.movable.end(), 1), 1);
+}
+
+TEST(Topology, LatticeInteriorCounts) {
+  const TetMesh m = testing::cube_grid(4, 0.2);
+  expect_matches_brute_force(m);
+  const Topology topo = build_topology(m);
+  // (n+1)^3 nodes of which (n-1)^3 are interior.
+  EXPECT_EQ(std::count(topo.boundary.begin(), topo.boundary.end(), 0), 27);
+}
+
+TEST(Topology, RandomDelaunayMeshes) {
+  for (std::uint64_t seed : {1u, 2u, 3u}) expect_matches_brute_force(testing::random_delaunay(400, seed));
+}
+
+TEST(Topology, UnreferencedAndPinnedNodesNeverMove) {
+  TetMesh m = testing::cube_with_centre();
+  m.xyz.insert(m.xyz.end(), {5, 5, 5});  // node 9: in no tet
+  Topology topo = build_topology(m);
+  EXPECT_EQ(topo.neighbours.row_size(9), 0);
+  EXPECT_EQ(topo.boundary[9], 0);
+  EXPECT_EQ(topo.movable[9], 0);
+  m.fixed.assign(10, 0);
+  m.fixed[8] = 1;
+  topo = build_topology(m);
+  EXPECT_EQ(topo.movable[8], 0);
+}
+
+TEST(Topology, MeanEdgeLengthOfRegularTet) {
+  const TetMesh m = testing::regular_tet();
+  EXPECT_NEAR(mean_edge_length(m.xyz, build_neighbours(m.tets, 4)), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace tetsmooth

@@ -28,9 +28,10 @@ class SplitMix64 {
 
   std::uint64_t next() { return mix64(state_ += 0x9E3779B97F4A7C15ull); }
 
-  // Uniform in the open interval (0, 1): an odd multiple of 2^-54, so never 0
-  // or 1. Random nodes then never land on a box face or a box corner.
-  double open01() { return (static_cast<double>(next() >> 11) + 0.5) * 0x1.0p-53; }
+  // Uniform in the open interval (0, 1): an odd multiple of 2^-53, exact in a
+  // double (52 random bits plus the half), so never 0 or 1. Random nodes then
+  // never land on a box face.
+  double open01() { return (static_cast<double>(next() >> 12) + 0.5) * 0x1.0p-52; }
 
   // Uniform in (lo, hi).
   double uniform(double lo, double hi) { return lo + (hi - lo) * open01(); }

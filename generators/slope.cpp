@@ -19,8 +19,8 @@ namespace {
 
 // Size bounds measured (TetGen 1.5.0) to give Table 2's slope, 76,928 nodes
 // and 388,428 tets, within 0.5%. Its 5.05 tets per node is well below the
-// ~5.5 of a uniformly sized quality mesh of this volume, which says that the
-// paper's surface was meshed finer than its interior. So the facets get
+// ~5.5 of a uniformly sized quality mesh of this volume, which suggests that
+// the paper's surface was meshed finer than its interior. So the facets get
 // their own area bound besides the volume bound, as FE meshes that resolve
 // boundary stresses often do.
 constexpr double kReferenceMaxVolume = 0.157;  // m^3

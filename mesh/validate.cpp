@@ -1,5 +1,6 @@
 #include "mesh/validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>

@@ -29,6 +29,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
+from matplotlib.ticker import FuncFormatter  # noqa: E402
 
 import bench_json as bj  # noqa: E402
 import paper_numbers as paper  # noqa: E402
@@ -100,6 +101,7 @@ def span_is_wide(values, decades=1.0):
 
 def finish(ax, title, ylabel, drawn, empty_text):
     ax.set_title(title, fontsize=9)
+    ax.set_xlim(-0.4, len(bj.MODELS) - 0.6)
     ax.set_xticks(range(len(bj.MODELS)))
     ax.set_xticklabels(MODEL_TICKS, fontsize=8)
     ax.set_ylabel(ylabel, fontsize=8)
@@ -120,8 +122,6 @@ def comparison_figure(path, title, result, panels, ratio_label):
     fig, axes = plt.subplots(3, len(panels), figsize=(6.2 * len(panels), 12), squeeze=False)
     time_values = [v for p in panels for s in p["ours"] + p["paper"] for v in s["values"]]
     log_time = span_is_wide(time_values)
-    ratio_values = [v for p in panels for s in p["ratio"] for v in s["values"]]
-    log_ratio = span_is_wide(ratio_values)
     device = result.device_label()
     for column, panel in enumerate(panels):
         top, middle, bottom = axes[0][column], axes[1][column], axes[2][column]
@@ -135,8 +135,9 @@ def comparison_figure(path, title, result, panels, ratio_label):
         for ax in (top, middle):
             if log_time:
                 ax.set_yscale("log")
-        if log_ratio:
+        if span_is_wide([v for s in panel["ratio"] for v in s["values"]]):
             bottom.set_yscale("log")
+            bottom.yaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
     share_y(list(axes[0]) + list(axes[1]))
     fig.suptitle(f"{title}\nours: {device}, git {result.context_text('git_sha', 'unknown')}; "
                  f"paper: {paper.GPU_DETAIL} (ratio row: ours solid, paper dashed)", fontsize=10)
@@ -265,15 +266,15 @@ def fig12_blocks(result, outdir, metric):
             for strategy in PAPER_STRATEGIES:
                 paper_lines.append(series(f"{STRATEGY_LABEL[strategy]} {layout}", published[strategy],
                                           COLOUR[strategy], LINESTYLE[strategy], MARKER[layout], "paper"))
-            ratio_lines.append(series(f"ours {layout}: single / multi", divide(times["SingleBlock"],
-                                                                               times["MultiBlock"]),
-                                      COLOUR[layout], "-", MARKER[layout]))
-            ratio_lines.append(series(f"ours {layout}: single / coloured", divide(times["SingleBlock"],
-                                                                                  times["Coloured"]),
-                                      COLOUR[layout], ":", MARKER[layout]))
-            ratio_lines.append(series(f"paper {layout}: single / multi", divide(published["SingleBlock"],
-                                                                                published["MultiBlock"]),
-                                      COLOUR[layout], "--", MARKER[layout], "paper"))
+            ratio_lines.append(series(f"ours {layout}: single / multi",
+                                      divide(times["SingleBlock"], times["MultiBlock"]),
+                                      COLOUR[layout], "-", MARKER["MultiBlock"]))
+            ratio_lines.append(series(f"ours {layout}: single / coloured",
+                                      divide(times["SingleBlock"], times["Coloured"]),
+                                      COLOUR[layout], ":", MARKER["Coloured"]))
+            ratio_lines.append(series(f"paper {layout}: single / multi",
+                                      divide(published["SingleBlock"], published["MultiBlock"]),
+                                      COLOUR[layout], "--", MARKER["MultiBlock"], "paper"))
         panels.append({"title": FORM_LABEL[form], "ours": our_lines, "paper": paper_lines, "ratio": ratio_lines,
                        "table": paper.TABLE_NUMBER["time"][form]})
     return comparison_figure(os.path.join(outdir, "fig12_blocks.png"),

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "kernels/cpu/sweep_log.hpp"
+#include "kernels/sweep_log.hpp"
 #include "kernels/node_update.hpp"
 #include "kernels/smoother.hpp"
 #include "mesh/errors.hpp"

@@ -15,8 +15,9 @@
 //   scratch   two key buffers of 12 keys * 8 B = 192 B/tet, reused by every
 //             phase (the unique edges stay in one of them, the incidence and
 //             face sorts work in the other), plus CUB temp storage for the
-//             DoubleBuffer sorts and the unique pass: O(tiles), well under
-//             1 B per key. topo.scratch.bytes() gives the exact figure.
+//             DoubleBuffer sorts and the unique pass: bounded, since onesweep
+//             works in portions of 2^28 keys (about 100-200 MB at most).
+//             topo.scratch.bytes() gives the exact figure.
 //   results   inc 16 B/tet, nbr 4 B per directed edge (~9 B/tet on a lattice,
 //             14 neighbours per node), offsets 8 B/node, flags 2 B/node.
 //   So the 10M-node lattice (~60M tets) needs about 60M * 192 B = 11.5 GB of

@@ -133,10 +133,6 @@ void mark_with(const index_t* d_tets, std::size_t num_tets, std::size_t num_node
 
 }  // namespace
 
-std::size_t face_work_bytes(std::size_t num_tets, std::size_t num_nodes) {
-  return 2 * 4 * num_tets * (fits_64(num_nodes) ? sizeof(std::uint64_t) : sizeof(Face96));
-}
-
 std::size_t face_temp_bytes(std::size_t num_tets, std::size_t num_nodes) {
   return fits_64(num_nodes) ? temp_bytes_for<std::uint64_t>(num_tets, num_nodes)
                             : temp_bytes_for<Face96>(num_tets, num_nodes);

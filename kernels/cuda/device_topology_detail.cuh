@@ -23,8 +23,6 @@ inline int bits_for(std::uint64_t x) {
   return b;
 }
 
-inline std::uint64_t low_mask(int bits) { return bits >= 64 ? ~0ull : (1ull << bits) - 1; }
-
 // Hands out 256-byte aligned pieces of one allocation, in order. Run once
 // with a null base to measure, grow the buffer, then again to carve: both
 // runs take the same pieces, so the pointers fit the measured size.
@@ -74,8 +72,8 @@ struct PackedRows {
 };
 
 // Boundary flags from the tets' faces (device_topology_boundary.cu). `work`
-// must hold face_work_bytes(); `temp` is CUB storage of face_temp_bytes().
-std::size_t face_work_bytes(std::size_t num_tets, std::size_t num_nodes);
+// must hold 2 * 4 face keys of up to 12 B per tet (96 B/tet); `temp` is CUB
+// storage of face_temp_bytes().
 std::size_t face_temp_bytes(std::size_t num_tets, std::size_t num_nodes);
 void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes, void* work, void* temp,
                          std::size_t temp_bytes, std::uint8_t* boundary, cudaStream_t stream);

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "kernels/cpu/sweep_log.hpp"
+#include "kernels/sweep_log.hpp"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_topology.hpp"
 #include "kernels/cuda/sweep_kernels.cuh"
@@ -127,6 +127,7 @@ GpuPipeline::~GpuPipeline() = default;
 
 std::size_t GpuPipeline::num_nodes() const { return impl_->n; }
 std::size_t GpuPipeline::num_tets() const { return impl_->t; }
+std::size_t GpuPipeline::neighbour_entries() const { return impl_->topo.nbr.size(); }
 const GpuRunTimes& GpuPipeline::last_times() const { return impl_->times; }
 
 void GpuPipeline::restore_coordinates(const SmoothOptions& o) {

@@ -54,6 +54,9 @@ class GpuPipeline {
   // The working coordinates as double AoS (3 per node), in mesh units.
   std::vector<double> download_xyz() const;
 
+  // Entries of the device neighbour CSR (twice the unique edges), after run().
+  std::size_t neighbour_entries() const;
+
   std::size_t num_nodes() const;
   std::size_t num_tets() const;
 

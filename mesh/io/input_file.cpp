@@ -14,4 +14,18 @@ std::ifstream open_input(const std::string& path) {
   return in;
 }
 
+std::string read_all(std::istream& in, const std::string& source) {
+  std::string text;
+  constexpr std::size_t kChunk = 1 << 20;
+  for (;;) {
+    const std::size_t size = text.size();
+    text.resize(size + kChunk);
+    in.read(text.data() + size, static_cast<std::streamsize>(kChunk));
+    text.resize(size + static_cast<std::size_t>(in.gcount()));
+    if (!in) break;
+  }
+  if (in.bad()) throw InputError(source, "read error");
+  return text;
+}
+
 }  // namespace tetsmooth

@@ -8,9 +8,10 @@
 namespace tetsmooth {
 
 template <class T>
-using le_uint_t = std::conditional_t<sizeof(T) == 1, std::uint8_t,
-                  std::conditional_t<sizeof(T) == 2, std::uint16_t,
-                  std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
+using le_uint_t =
+    std::conditional_t<sizeof(T) == 1, std::uint8_t,
+                       std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                                          std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
 
 // Stores an arithmetic value as sizeof(T) bytes, least significant first.
 template <class T>

@@ -22,9 +22,15 @@ struct FormatName {
 };
 // The first name of each format is the one format_name gives.
 constexpr FormatName kNames[] = {
-    {"auto", MeshFormat::Auto},          {"tetgen", MeshFormat::TetGen}, {"vtu", MeshFormat::Vtu},
-    {"vtk", MeshFormat::Vtk},            {"msh41", MeshFormat::Msh41},   {"msh", MeshFormat::Msh41},
-    {"msh41-binary", MeshFormat::Msh41Binary}, {"msh22", MeshFormat::Msh22}, {"medit", MeshFormat::Medit},
+    {"auto", MeshFormat::Auto},
+    {"tetgen", MeshFormat::TetGen},
+    {"vtu", MeshFormat::Vtu},
+    {"vtk", MeshFormat::Vtk},
+    {"msh41", MeshFormat::Msh41},
+    {"msh", MeshFormat::Msh41},
+    {"msh41-binary", MeshFormat::Msh41Binary},
+    {"msh22", MeshFormat::Msh22},
+    {"medit", MeshFormat::Medit},
     {"tsm", MeshFormat::Cache},
 };
 
@@ -33,9 +39,8 @@ struct Extension {
   MeshFormat format;
 };
 constexpr Extension kExtensions[] = {
-    {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},
-    {".vtk", MeshFormat::Vtk},     {".msh", MeshFormat::Msh41},  {".mesh", MeshFormat::Medit},
-    {".tsm", MeshFormat::Cache},
+    {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},   {".vtk", MeshFormat::Vtk},
+    {".msh", MeshFormat::Msh41},   {".mesh", MeshFormat::Medit}, {".tsm", MeshFormat::Cache},
 };
 
 std::string lower(std::string s) {
@@ -82,33 +87,48 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
 
 TetMesh read_mesh(const std::string& path, MeshFormat format) {
   // A TetGen base name ("box" for box.node + box.ele) has no extension.
-  if (format == MeshFormat::Auto && extension_of(path).empty() && is_file(path + ".node"))
-    format = MeshFormat::TetGen;
+  if (format == MeshFormat::Auto && extension_of(path).empty() && is_file(path + ".node")) format = MeshFormat::TetGen;
   switch (format_from_path(path, format)) {
-    case MeshFormat::TetGen: return read_tetgen(path);
-    case MeshFormat::Vtu: return read_vtu_file(path);
-    case MeshFormat::Vtk: return read_vtk_file(path);
+    case MeshFormat::TetGen:
+      return read_tetgen(path);
+    case MeshFormat::Vtu:
+      return read_vtu_file(path);
+    case MeshFormat::Vtk:
+      return read_vtk_file(path);
     case MeshFormat::Msh41:
     case MeshFormat::Msh41Binary:
-    case MeshFormat::Msh22: return read_gmsh_file(path);
-    case MeshFormat::Medit: return read_medit_file(path);
-    case MeshFormat::Cache: return read_cache_file(path);
-    case MeshFormat::Auto: break;
+    case MeshFormat::Msh22:
+      return read_gmsh_file(path);
+    case MeshFormat::Medit:
+      return read_medit_file(path);
+    case MeshFormat::Cache:
+      return read_cache_file(path);
+    case MeshFormat::Auto:
+      break;
   }
   throw UsageError("no reader for format " + std::string(format_name(format)));
 }
 
 void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format, const MeshFields& fields) {
   switch (format_from_path(path, format)) {
-    case MeshFormat::TetGen: return write_tetgen(mesh, path);
-    case MeshFormat::Vtu: return write_vtu_file(mesh, path, fields);
-    case MeshFormat::Vtk: return write_vtk_file(mesh, path, fields);
-    case MeshFormat::Msh41: return write_gmsh_file(mesh, path, MshFlavour::V41Ascii, fields);
-    case MeshFormat::Msh41Binary: return write_gmsh_file(mesh, path, MshFlavour::V41Binary, fields);
-    case MeshFormat::Msh22: return write_gmsh_file(mesh, path, MshFlavour::V22Ascii, fields);
-    case MeshFormat::Medit: return write_medit_file(mesh, path);
-    case MeshFormat::Cache: return write_cache_file(mesh, path);
-    case MeshFormat::Auto: break;
+    case MeshFormat::TetGen:
+      return write_tetgen(mesh, path);
+    case MeshFormat::Vtu:
+      return write_vtu_file(mesh, path, fields);
+    case MeshFormat::Vtk:
+      return write_vtk_file(mesh, path, fields);
+    case MeshFormat::Msh41:
+      return write_gmsh_file(mesh, path, MshFlavour::V41Ascii, fields);
+    case MeshFormat::Msh41Binary:
+      return write_gmsh_file(mesh, path, MshFlavour::V41Binary, fields);
+    case MeshFormat::Msh22:
+      return write_gmsh_file(mesh, path, MshFlavour::V22Ascii, fields);
+    case MeshFormat::Medit:
+      return write_medit_file(mesh, path);
+    case MeshFormat::Cache:
+      return write_cache_file(mesh, path);
+    case MeshFormat::Auto:
+      break;
   }
   throw UsageError("no writer for format " + std::string(format_name(format)));
 }

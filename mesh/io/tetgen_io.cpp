@@ -22,7 +22,8 @@ bool ends_with(const std::string& s, const std::string& suffix) {
 // entries than 32-bit indices can address.
 std::size_t count_field(const TextLines& lines, std::size_t i, const char* what) {
   const long long n = lines.integer(i, what);
-  if (n < 0 || n > std::numeric_limits<index_t>::max()) lines.fail(std::string("invalid ") + what + " " + std::to_string(n));
+  if (n < 0 || n > std::numeric_limits<index_t>::max())
+    lines.fail(std::string("invalid ") + what + " " + std::to_string(n));
   return static_cast<std::size_t>(n);
 }
 
@@ -59,7 +60,8 @@ int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh)
     lines.require_line("node " + std::to_string(i + 1) + " of " + std::to_string(count));
     const long long number = lines.integer(0, "node number");
     if (i == 0) {
-      if (number != 0 && number != 1) lines.fail("the first node number must be 0 or 1, found " + std::to_string(number));
+      if (number != 0 && number != 1)
+        lines.fail("the first node number must be 0 or 1, found " + std::to_string(number));
       first = number;
     } else if (number != first + static_cast<long long>(i)) {
       lines.fail("node number " + std::to_string(number) + " out of sequence, expected " +
@@ -86,7 +88,8 @@ void read_tetgen_ele(std::istream& in, const std::string& source, int first_inde
   if (per_tet == 10) lines.fail("second-order tets (10 nodes per tet) are not supported");
   if (per_tet != 4) lines.fail("nodes per tet must be 4, found " + std::to_string(per_tet));
   const long long attrs = lines.size() > 2 ? lines.integer(2, "region attribute count") : 0;
-  if (attrs != 0 && attrs != 1) lines.fail("at most one region attribute per tet is supported, found " + std::to_string(attrs));
+  if (attrs != 0 && attrs != 1)
+    lines.fail("at most one region attribute per tet is supported, found " + std::to_string(attrs));
 
   const long long num_nodes = static_cast<long long>(mesh.num_nodes());
   mesh.tets.clear();

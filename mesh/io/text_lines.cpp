@@ -67,9 +67,18 @@ bool TextLines::read_raw_line() {
 }
 
 bool TextLines::next_line() {
-  while (read_raw_line())
-    if (!tokens_.empty()) return true;
+  while (read_raw_line()) {
+    if (tokens_.empty()) continue;
+    cursor_ = tokens_.size();
+    return true;
+  }
   return false;
+}
+
+bool TextLines::next_raw_line() {
+  const bool ok = read_raw_line();
+  cursor_ = tokens_.size();
+  return ok;
 }
 
 void TextLines::require_line(const std::string& what) {
@@ -121,7 +130,8 @@ void TextLines::skip_past_blank_line() {
   }
 }
 
-std::string TextLines::where() const { return source_ + ":" + std::to_string(line_no_); }
+// An empty file reports line 1, where the missing content was expected.
+std::string TextLines::where() const { return source_ + ":" + std::to_string(line_no_ == 0 ? 1 : line_no_); }
 
 void TextLines::fail(const std::string& what) const { throw InputError(where(), what); }
 

@@ -24,13 +24,14 @@ class TextLines {
   TextLines(std::istream& in, std::string source, char comment = '#');
 
   // Line mode: moves to the next line with at least one token; false at the
-  // end of the input.
+  // end of the input. A line reached in line mode counts as taken for token
+  // mode, whose next token comes from the line after it.
   bool next_line();
   // next_line(), or InputError "unexpected end of file, expected <what>".
   void require_line(const std::string& what);
   // Moves to the next line even if it is blank (free-text lines such as a
   // legacy VTK title); false at the end of the input.
-  bool next_raw_line() { return read_raw_line(); }
+  bool next_raw_line();
   const std::string& line() const { return line_; }
 
   std::size_t size() const { return tokens_.size(); }

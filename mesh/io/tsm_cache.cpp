@@ -101,7 +101,8 @@ void write_cache(const TetMesh& mesh, std::ostream& out) {
 }
 
 void write_cache_file(const TetMesh& mesh, const std::string& path) {
-  write_atomically(path, [&](std::ostream& out) { write_cache(mesh, out); }, true);
+  write_atomically(
+      path, [&](std::ostream& out) { write_cache(mesh, out); }, true);
 }
 
 TetMesh read_cache(std::istream& in, const std::string& source) {
@@ -115,7 +116,8 @@ TetMesh read_cache(std::istream& in, const std::string& source) {
     r.fail("unsupported cache version " + std::to_string(version) + ", this build reads version " +
                std::to_string(kTsmVersion) + " (regenerate the cache)",
            8);
-  if (load_le<std::uint32_t>(header + 12) != 0) r.fail("unknown flags " + std::to_string(load_le<std::uint32_t>(header + 12)), 12);
+  if (load_le<std::uint32_t>(header + 12) != 0)
+    r.fail("unknown flags " + std::to_string(load_le<std::uint32_t>(header + 12)), 12);
   const std::uint64_t nodes = load_le<std::uint64_t>(header + 16);
   const std::uint64_t tets = load_le<std::uint64_t>(header + 24);
   constexpr auto kMaxIndex = static_cast<std::uint64_t>(std::numeric_limits<index_t>::max());
@@ -129,14 +131,17 @@ TetMesh read_cache(std::istream& in, const std::string& source) {
   for (std::uint64_t left = 3 * nodes; left > 0;) {
     const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, left));
     r.read(buf.data(), 8 * n, "the node coordinates");
-    for (std::size_t k = 0; k < n; ++k) mesh.xyz.push_back(load_le<double>(&buf[8 * k]));
+    const std::size_t at = mesh.xyz.size();
+    mesh.xyz.resize(at + n);
+    for (std::size_t k = 0; k < n; ++k) mesh.xyz[at + k] = load_le<double>(&buf[8 * k]);
     left -= n;
   }
   for (std::uint64_t left = 4 * tets; left > 0;) {
     const std::size_t n = static_cast<std::size_t>(std::min<std::uint64_t>(kChunk, left));
     r.read(buf.data(), 4 * n, "the tets");
-    for (std::size_t k = 0; k < n; ++k)
-      mesh.tets.push_back(load_le<index_t>(&buf[4 * k]));
+    const std::size_t at = mesh.tets.size();
+    mesh.tets.resize(at + n);
+    for (std::size_t k = 0; k < n; ++k) mesh.tets[at + k] = load_le<index_t>(&buf[4 * k]);
     left -= n;
   }
   const std::uint64_t expected = r.hash();

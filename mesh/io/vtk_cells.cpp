@@ -39,27 +39,48 @@ int to_int(long long v, const std::string& where, std::size_t cell) {
 
 std::string vtk_cell_type_name(long long type) {
   switch (type) {
-    case 1: return "vertex";
-    case 2: return "poly-vertex";
-    case 3: return "line";
-    case 4: return "poly-line";
-    case 5: return "triangle";
-    case 6: return "triangle strip";
-    case 7: return "polygon";
-    case 8: return "pixel";
-    case 9: return "quad";
-    case 10: return "tetra";
-    case 11: return "voxel";
-    case 12: return "hexahedron";
-    case 13: return "wedge";
-    case 14: return "pyramid";
-    case 21: return "quadratic edge";
-    case 22: return "quadratic triangle";
-    case 23: return "quadratic quad";
-    case 24: return "quadratic tetra";
-    case 25: return "quadratic hexahedron";
-    case 42: return "polyhedron";
-    default: return "type " + std::to_string(type);
+    case 1:
+      return "vertex";
+    case 2:
+      return "poly-vertex";
+    case 3:
+      return "line";
+    case 4:
+      return "poly-line";
+    case 5:
+      return "triangle";
+    case 6:
+      return "triangle strip";
+    case 7:
+      return "polygon";
+    case 8:
+      return "pixel";
+    case 9:
+      return "quad";
+    case 10:
+      return "tetra";
+    case 11:
+      return "voxel";
+    case 12:
+      return "hexahedron";
+    case 13:
+      return "wedge";
+    case 14:
+      return "pyramid";
+    case 21:
+      return "quadratic edge";
+    case 22:
+      return "quadratic triangle";
+    case 23:
+      return "quadratic quad";
+    case 24:
+      return "quadratic tetra";
+    case 25:
+      return "quadratic hexahedron";
+    case 42:
+      return "polyhedron";
+    default:
+      return "type " + std::to_string(type);
   }
 }
 
@@ -80,11 +101,10 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
     total += b.connectivity.size() / b.nodes_per_element;
     tagged = tagged || !b.tags.empty();
   }
-  cells.connectivity.reserve(mesh.tets.size());
+  cells.connectivity = mesh.tets;
   cells.offsets.reserve(total + 1);
   cells.types.reserve(total);
   cells.offsets.push_back(0);
-  cells.connectivity = mesh.tets;
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
     cells.offsets.push_back(static_cast<std::int64_t>(4 * (t + 1)));
     cells.types.push_back(kVtkTetra);

@@ -62,7 +62,8 @@ class LegacyReader {
     if (!ok) lines_.fail("not a legacy VTK file: the first line must be \"# vtk DataFile Version x.y\"");
     long long major = 0;
     const std::string_view version = lines_.token(4, "version");
-    if (!parse_integer(version.substr(0, version.find('.')), major)) lines_.fail("bad version '" + std::string(version) + "'");
+    if (!parse_integer(version.substr(0, version.find('.')), major))
+      lines_.fail("bad version '" + std::string(version) + "'");
     major_ = major;
     if (!lines_.next_raw_line()) lines_.fail("unexpected end of file, expected the title line");
     lines_.require_line("ASCII or BINARY");
@@ -157,7 +158,8 @@ class LegacyReader {
     for (std::size_t c = 0; c < first; ++c) {
       const std::size_t k = count("cell node count");
       if (connectivity_.size() + c + 1 + k > second)
-        lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) + " values that CELLS declared");
+        lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) +
+                    " values that CELLS declared");
       for (std::size_t i = 0; i < k; ++i) connectivity_.push_back(lines_.next_integer("node index"));
       offsets_.push_back(static_cast<long long>(connectivity_.size()));
     }

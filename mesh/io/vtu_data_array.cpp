@@ -22,11 +22,10 @@ struct ScalarInfo {
   bool is_float;
 };
 constexpr ScalarInfo kScalars[] = {
-    {"Int8", Scalar::Int8, 1, false},       {"UInt8", Scalar::UInt8, 1, false},
-    {"Int16", Scalar::Int16, 2, false},     {"UInt16", Scalar::UInt16, 2, false},
-    {"Int32", Scalar::Int32, 4, false},     {"UInt32", Scalar::UInt32, 4, false},
-    {"Int64", Scalar::Int64, 8, false},     {"UInt64", Scalar::UInt64, 8, false},
-    {"Float32", Scalar::Float32, 4, true},  {"Float64", Scalar::Float64, 8, true},
+    {"Int8", Scalar::Int8, 1, false},      {"UInt8", Scalar::UInt8, 1, false},   {"Int16", Scalar::Int16, 2, false},
+    {"UInt16", Scalar::UInt16, 2, false},  {"Int32", Scalar::Int32, 4, false},   {"UInt32", Scalar::UInt32, 4, false},
+    {"Int64", Scalar::Int64, 8, false},    {"UInt64", Scalar::UInt64, 8, false}, {"Float32", Scalar::Float32, 4, true},
+    {"Float64", Scalar::Float64, 8, true},
 };
 
 template <class T, class Out>
@@ -44,16 +43,26 @@ bool convert(const unsigned char* p, std::size_t n, bool big, std::vector<Out>& 
 template <class Out>
 bool convert(Scalar s, const unsigned char* p, std::size_t n, bool big, std::vector<Out>& out) {
   switch (s) {
-    case Scalar::Int8: return convert<std::int8_t>(p, n, big, out);
-    case Scalar::UInt8: return convert<std::uint8_t>(p, n, big, out);
-    case Scalar::Int16: return convert<std::int16_t>(p, n, big, out);
-    case Scalar::UInt16: return convert<std::uint16_t>(p, n, big, out);
-    case Scalar::Int32: return convert<std::int32_t>(p, n, big, out);
-    case Scalar::UInt32: return convert<std::uint32_t>(p, n, big, out);
-    case Scalar::Int64: return convert<std::int64_t>(p, n, big, out);
-    case Scalar::UInt64: return convert<std::uint64_t>(p, n, big, out);
-    case Scalar::Float32: return convert<float>(p, n, big, out);
-    case Scalar::Float64: return convert<double>(p, n, big, out);
+    case Scalar::Int8:
+      return convert<std::int8_t>(p, n, big, out);
+    case Scalar::UInt8:
+      return convert<std::uint8_t>(p, n, big, out);
+    case Scalar::Int16:
+      return convert<std::int16_t>(p, n, big, out);
+    case Scalar::UInt16:
+      return convert<std::uint16_t>(p, n, big, out);
+    case Scalar::Int32:
+      return convert<std::int32_t>(p, n, big, out);
+    case Scalar::UInt32:
+      return convert<std::uint32_t>(p, n, big, out);
+    case Scalar::Int64:
+      return convert<std::int64_t>(p, n, big, out);
+    case Scalar::UInt64:
+      return convert<std::uint64_t>(p, n, big, out);
+    case Scalar::Float32:
+      return convert<float>(p, n, big, out);
+    case Scalar::Float64:
+      return convert<double>(p, n, big, out);
   }
   return false;
 }
@@ -62,7 +71,9 @@ bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; 
 
 }  // namespace
 
-std::string VtuArrayDecoder::byte_where(std::size_t offset) const { return source_ + ", byte " + std::to_string(offset); }
+std::string VtuArrayDecoder::byte_where(std::size_t offset) const {
+  return source_ + ", byte " + std::to_string(offset);
+}
 
 template <class Out>
 void VtuArrayDecoder::parse_ascii(const VtuDataArray& a, std::size_t expected, const char* what,
@@ -105,7 +116,8 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
   for (const ScalarInfo& s : kScalars)
     if (type_name && *type_name == s.name) info = &s;
   if (!info) fail(at_tag, "unsupported DataArray type '" + (type_name ? *type_name : std::string()) + "'");
-  if (std::is_integral_v<Out> && info->is_float) fail(at_tag, std::string("needs an integer type, found ") + info->name);
+  if (std::is_integral_v<Out> && info->is_float)
+    fail(at_tag, std::string("needs an integer type, found ") + info->name);
   const std::string* comps = a.tag.attribute("NumberOfComponents");
   if (std::to_string(components) != (comps ? *comps : std::string("1")))
     fail(at_tag, "has " + (comps ? *comps : std::string("1")) + " components, expected " + std::to_string(components));
@@ -139,7 +151,9 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
     long long offset = -1;
     if (!off || !parse_integer(*off, offset) || offset < 0) fail(at_tag, "missing or bad offset attribute");
     header_at = enc_.appended_begin + static_cast<std::size_t>(offset);
-    if (header_at > text_.size()) fail(at_tag, "offset " + *off + " lies beyond the end of the file");
+    if (header_at > text_.size())
+      fail(byte_where(header_at),
+           "truncated: the block at appended offset " + *off + " lies beyond the end of the file");
     if (enc_.appended_base64) {
       // The byte count and the data are encoded separately, each padded.
       const std::size_t hchars = base64_length(enc_.header_bytes);

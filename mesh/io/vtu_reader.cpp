@@ -1,6 +1,4 @@
-#include <iterator>
 #include <limits>
-#include <sstream>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/input_file.hpp"
@@ -139,8 +137,7 @@ VtuLayout scan(std::string_view text, XmlScanner& xml) {
 }  // namespace
 
 TetMesh read_vtu(std::istream& in, const std::string& source) {
-  const std::string text(std::istreambuf_iterator<char>(in), {});
-  if (in.bad()) throw InputError(source, "read error");
+  const std::string text = read_all(in, source);
   XmlScanner xml(text, source);
   const VtuLayout layout = scan(text, xml);
   const VtuArrayDecoder decode(text, xml, source, layout.encoding);

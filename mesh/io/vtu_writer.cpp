@@ -43,8 +43,8 @@ void write_block(std::ostream& out, std::size_t n, Get get) {
 
 template <class T, class Get>
 Array make_array(const char* section, std::string name, const char* vtk_type, int components, std::size_t n, Get get) {
-  return Array{section, std::move(name), vtk_type, components, n * sizeof(T),
-               [n, get](std::ostream& out) { write_block<T>(out, n, get); }};
+  return Array{section,    std::move(name), vtk_type,
+               components, n * sizeof(T),   [n, get](std::ostream& out) { write_block<T>(out, n, get); }};
 }
 
 std::vector<Array> arrays_of(const TetMesh& mesh, const VtkCells& cells, const MeshFields& fields) {
@@ -57,9 +57,9 @@ std::vector<Array> arrays_of(const TetMesh& mesh, const VtkCells& cells, const M
                                               [&f = mesh.fixed](std::size_t i) { return std::uint8_t(f[i] != 0); }));
   const std::size_t tets = mesh.num_tets();
   for (const auto& [name, values] : fields.tet_scalars)
-    arrays.push_back(make_array<double>("CellData", name, "Float64", 1, cells.size(), [&v = values, tets](std::size_t i) {
-      return i < tets ? v[i] : std::numeric_limits<double>::quiet_NaN();
-    }));
+    arrays.push_back(make_array<double>(
+        "CellData", name, "Float64", 1, cells.size(),
+        [&v = values, tets](std::size_t i) { return i < tets ? v[i] : std::numeric_limits<double>::quiet_NaN(); }));
   if (!cells.tags.empty())
     arrays.push_back(make_array<std::int32_t>("CellData", kVtkTagArray, "Int32", 1, cells.tags.size(),
                                               [&t = cells.tags](std::size_t i) { return std::int32_t(t[i]); }));
@@ -92,8 +92,7 @@ void write_vtu(const TetMesh& mesh, std::ostream& out, const MeshFields& fields)
     for (const Array& a : arrays) {
       if (a.section == section)
         out << "        <DataArray type=\"" << a.vtk_type << "\" Name=\"" << xml_escape(a.name)
-            << "\" NumberOfComponents=\"" << a.components << "\" format=\"appended\" offset=\"" << at
-            << "\"/>\n";
+            << "\" NumberOfComponents=\"" << a.components << "\" format=\"appended\" offset=\"" << at << "\"/>\n";
       at += 8 + a.bytes;
     }
     out << "      </" << section << ">\n";
@@ -109,7 +108,8 @@ void write_vtu(const TetMesh& mesh, std::ostream& out, const MeshFields& fields)
 
 void write_vtu_file(const TetMesh& mesh, const std::string& path, const MeshFields& fields) {
   check_vtk_blocks(mesh, "cannot write '" + path + "'");
-  write_atomically(path, [&](std::ostream& out) { write_vtu(mesh, out, fields); }, true);
+  write_atomically(
+      path, [&](std::ostream& out) { write_vtu(mesh, out, fields); }, true);
 }
 
 }  // namespace tetsmooth

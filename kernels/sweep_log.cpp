@@ -1,4 +1,4 @@
-#include "kernels/cpu/sweep_log.hpp"
+#include "kernels/sweep_log.hpp"
 
 #include <cmath>
 #include <string>

@@ -1,0 +1,52 @@
+#include "bench/bench_counters.hpp"
+
+#include <string>
+
+namespace tetsmooth::bench {
+
+double bytes_per_sweep(const SweepFootprint& f) {
+  const double coords = 2.0 * 3.0 * static_cast<double>(f.nodes) * static_cast<double>(f.real_bytes);
+  const double offsets = 2.0 * 4.0 * static_cast<double>(f.nodes + 1);
+  const double rows = 4.0 * static_cast<double>(f.neighbour_entries + f.incidence_entries);
+  const double tets = 16.0 * static_cast<double>(f.tets);
+  const double flags = static_cast<double>(f.nodes);
+  return coords + offsets + rows + tets + flags;
+}
+
+void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f) {
+  std::int64_t accepted = 0;
+  for (auto a : r.accepted_per_sweep) accepted += a;
+  const double smooth_s = r.smoothing_ms / 1000.0;
+  state.counters["sweeps"] = r.sweeps;
+  state.counters["accepted"] = static_cast<double>(accepted);
+  state.counters["topology_ms"] = r.topology_ms;
+  state.counters["colouring_ms"] = r.colouring_ms;
+  state.counters["smoothing_ms"] = r.smoothing_ms;
+  state.counters["colours"] = r.num_colours;
+  state.counters["movable"] = static_cast<double>(r.movable_nodes);
+  state.counters["nodes"] = static_cast<double>(f.nodes);
+  state.counters["tets"] = static_cast<double>(f.tets);
+  state.counters["reverted"] = static_cast<double>(r.reverted_moves);
+  if (r.sweeps > 0 && smooth_s > 0) {
+    state.counters["ms_per_sweep"] = r.smoothing_ms / r.sweeps;
+    state.counters["node_updates_per_s"] = static_cast<double>(r.movable_nodes) * r.sweeps / smooth_s;
+    state.counters["bytes_per_s"] = bytes_per_sweep(f) * r.sweeps / smooth_s;
+  }
+}
+
+void set_quality_counters(benchmark::State& state, const QualitySummary& before, const QualitySummary& after) {
+  state.counters["q_min_before"] = before.min;
+  state.counters["q_min_after"] = after.min;
+  state.counters["q_mean_before"] = before.mean;
+  state.counters["q_mean_after"] = after.mean;
+  state.counters["low_q_before"] = static_cast<double>(before.below_0_1);
+  state.counters["low_q_after"] = static_cast<double>(after.below_0_1);
+  state.counters["inverted_before"] = static_cast<double>(before.inverted);
+  state.counters["inverted_after"] = static_cast<double>(after.inverted);
+  for (int k = 0; k < 10; ++k) {
+    state.counters["hist_before_" + std::to_string(k)] = static_cast<double>(before.histogram[k]);
+    state.counters["hist_after_" + std::to_string(k)] = static_cast<double>(after.histogram[k]);
+  }
+}
+
+}  // namespace tetsmooth::bench

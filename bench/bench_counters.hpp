@@ -1,0 +1,30 @@
+#pragma once
+// Counters that carry the physics of a run into the benchmark JSON.
+#include <benchmark/benchmark.h>
+
+#include "kernels/smooth_options.hpp"
+#include "mesh/csr.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::bench {
+
+// Sizes a sweep's memory traffic is counted from.
+struct SweepFootprint {
+  std::size_t nodes = 0, tets = 0, neighbour_entries = 0, incidence_entries = 0;
+  std::size_t real_bytes = 8;  // sizeof(Real) of the coordinates
+};
+
+// The fewest bytes one sweep must move through device memory: every
+// coordinate read once and written once, and the topology a sweep walks
+// (neighbour and incidence CSR with offsets, the tets, the movable flags)
+// read once. Re-reads of neighbour coordinates are not counted: an ideal
+// cache would serve them.
+double bytes_per_sweep(const SweepFootprint& f);
+
+// sweeps, accepted, phase times, ms per sweep, node updates/s, bytes/s.
+void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f);
+
+// Quality before and after: min, mean, q < 0.1, inverted, 10-bin histograms.
+void set_quality_counters(benchmark::State& state, const QualitySummary& before, const QualitySummary& after);
+
+}  // namespace tetsmooth::bench

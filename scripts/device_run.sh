@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# Runs on the GPU machine from the repository root, with gpu-bundle/ carried
+# there: GPU tests, compute-sanitizer and the benchmarks, everything written
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] (default: tests sanitize bench)
+set -uo pipefail
+b=$(cd "$(dirname "$0")" && pwd)
+out=${OUT:-/tmp/out}
+mkdir -p "$out"
+export TETSMOOTH_GIT_SHA=$(cat "$b/GIT_SHA")
+export TETSMOOTH_MESH_CACHE=/tmp/tetsmooth-meshes
+steps=${*:-tests sanitize bench}
+nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm,clocks.max.sm --format=csv | tee "$out/device.txt"
+nproc >> "$out/device.txt"
+status=0
+for step in $steps; do
+  case $step in
+    tests)
+      "$b/test_gpu_topology" 2>&1 | tee "$out/gpu_tests.log" | tail -3 || status=1
+      "$b/test_gpu_smoother" 2>&1 | tee -a "$out/gpu_tests.log" | grep -E "differ|inverted|PASSED|FAILED|Failure" | tail -60 || status=1
+      ;;
+    sanitize)
+      cs=$(command -v compute-sanitizer || echo /usr/local/cuda/bin/compute-sanitizer)
+      {
+        echo "== memcheck: every variant on the 5k model"
+        timeout 300 "$cs" --tool memcheck --error-exitcode 9 "$b/test_gpu_smoother" --gtest_filter='Variants/*:GpuSmoother.ColouredFormB*' 2>&1 | tail -8
+        echo "memcheck exit ${PIPESTATUS[0]}"
+        for tool in racecheck synccheck; do
+          echo "== $tool: SingleBlock and Coloured"
+          timeout 120 "$cs" --tool $tool --error-exitcode 9 "$b/test_gpu_smoother" \
+            --gtest_filter='Variants/AllGpuVariants.AgainstCpuReference/*' 2>&1 | grep -E "SingleBlock|Coloured|ERROR|Hazard|hazard|RACECHECK|SYNCCHECK|PASSED|FAILED" | tail -40
+          echo "$tool exit ${PIPESTATUS[0]}"
+        done
+      } 2>&1 | tee "$out/sanitizers.log"
+      ;;
+    bench)
+      "$b/bench_smooth" --models=5k,109k --scaling=lattice-215 --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/.*/Coloured|FormB/AoS/MultiBlock/109k' \
+        --benchmark_min_time=0.01 --benchmark_out="$out/bench_quick.json" --benchmark_out_format=json 2>&1 | tail -30
+      ;;
+    study)
+      "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
+        --benchmark_out="$out/bench_smooth.json" --benchmark_out_format=json 2>&1 | tail -80
+      ;;
+  esac
+done
+exit $status

@@ -1,0 +1,138 @@
+// The .tsm cache: bit-exact round trips, and every kind of damage (magic,
+// version, counts, truncation at any length, flipped bytes, trailing bytes)
+// rejected with an InputError naming the file and the byte offset.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/tsm_cache.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+std::string bytes_of(const TetMesh& mesh) {
+  std::ostringstream out;
+  write_cache(mesh, out);
+  return out.str();
+}
+
+// The InputError message from reading `bytes` as cube.tsm, or a test failure.
+std::string read_error(const std::string& bytes) {
+  std::istringstream in(bytes);
+  try {
+    read_cache(in, "cube.tsm");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "read_cache accepted " << bytes.size() << " bytes";
+  return "";
+}
+
+TEST(TsmCache, LayoutMatchesTheDocumentedSize) {
+  const TetMesh mesh = testing::cube_with_centre();
+  const std::string bytes = bytes_of(mesh);
+  EXPECT_EQ(bytes.size(), 32 + 24 * mesh.num_nodes() + 16 * mesh.num_tets() + 8);
+  EXPECT_EQ(bytes.substr(1, 3), "TSM");
+  EXPECT_EQ(static_cast<unsigned char>(bytes[8]), kTsmVersion);  // little-endian version
+}
+
+TEST(TsmCache, RoundTripIsBitExact) {
+  TetMesh mesh = testing::cube_grid(4, 0.35);
+  mesh.xyz[0] = -0.0;                     // sign of zero survives
+  mesh.xyz[1] = 4.9406564584124654e-324;  // so does a denormal
+  std::istringstream in(bytes_of(mesh));
+  const TetMesh back = read_cache(in, "cube.tsm");
+  ASSERT_EQ(back.xyz.size(), mesh.xyz.size());
+  EXPECT_EQ(std::memcmp(back.xyz.data(), mesh.xyz.data(), mesh.xyz.size() * sizeof(double)), 0);
+  EXPECT_EQ(back.tets, mesh.tets);
+}
+
+TEST(TsmCache, FileRoundTrip) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "tetsmooth_cache_roundtrip.tsm";
+  const TetMesh mesh = testing::cube_with_centre(0.3, 0.6, 0.45);
+  write_cache_file(mesh, path.string());
+  const TetMesh back = read_cache_file(path.string());
+  std::filesystem::remove(path);
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+}
+
+TEST(TsmCache, RejectsWrongMagicAtByteZero) {
+  std::string bytes = bytes_of(testing::regular_tet());
+  bytes[1] = 'X';
+  const std::string msg = read_error(bytes);
+  EXPECT_NE(msg.find("cube.tsm, byte 0"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("magic"), std::string::npos) << msg;
+  EXPECT_NE(read_error("# vtk DataFile Version 4.2\n").find("magic"), std::string::npos);
+}
+
+TEST(TsmCache, RejectsOtherVersionAtByteEight) {
+  std::string bytes = bytes_of(testing::regular_tet());
+  bytes[8] = 2;
+  const std::string msg = read_error(bytes);
+  EXPECT_NE(msg.find("cube.tsm, byte 8"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("version 2"), std::string::npos) << msg;
+}
+
+TEST(TsmCache, RejectsImplausibleCounts) {
+  std::string bytes = bytes_of(testing::regular_tet());
+  bytes[16 + 7] = 0x10;  // node count >= 2^60
+  EXPECT_NE(read_error(bytes).find("byte 16"), std::string::npos);
+  bytes = bytes_of(testing::regular_tet());
+  bytes[24 + 4] = 0x01;  // tet count 2^32 + 1: within no index range
+  EXPECT_NE(read_error(bytes).find("byte 24"), std::string::npos);
+}
+
+TEST(TsmCache, RejectsCountsLargerThanTheFile) {
+  std::string bytes = bytes_of(testing::regular_tet());
+  bytes[16 + 3] = 0x10;  // claims 2^28 + 4 nodes
+  const std::string msg = read_error(bytes);
+  EXPECT_NE(msg.find("truncated"), std::string::npos) << msg;
+}
+
+TEST(TsmCache, RejectsEveryTruncation) {
+  const std::string bytes = bytes_of(testing::regular_tet());
+  for (std::size_t len = 0; len < bytes.size(); ++len) {
+    const std::string msg = read_error(bytes.substr(0, len));
+    EXPECT_NE(msg.find("cube.tsm, byte " + std::to_string(len)), std::string::npos) << len << ": " << msg;
+    EXPECT_NE(msg.find("truncated"), std::string::npos) << len << ": " << msg;
+  }
+}
+
+TEST(TsmCache, RejectsEveryFlippedByte) {
+  const std::string bytes = bytes_of(testing::cube_with_centre());
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    std::string damaged = bytes;
+    damaged[i] = static_cast<char>(damaged[i] ^ 0x20);
+    EXPECT_FALSE(read_error(damaged).empty()) << "byte " << i;
+  }
+}
+
+TEST(TsmCache, ChecksumMismatchNamesTheChecksumOffset) {
+  std::string bytes = bytes_of(testing::regular_tet());
+  bytes[40] = static_cast<char>(bytes[40] ^ 1);  // inside the coordinates
+  const std::string msg = read_error(bytes);
+  EXPECT_NE(msg.find("checksum"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("byte " + std::to_string(bytes.size() - 8)), std::string::npos) << msg;
+}
+
+TEST(TsmCache, RejectsTrailingBytes) {
+  const std::string msg = read_error(bytes_of(testing::regular_tet()) + "x");
+  EXPECT_NE(msg.find("after the checksum"), std::string::npos) << msg;
+}
+
+TEST(TsmCache, ValidatesTheMesh) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.tets[3] = 7;  // out of range, yet a well-formed cache
+  const std::string msg = read_error(bytes_of(mesh));
+  EXPECT_NE(msg.find("cube.tsm"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tet 0"), std::string::npos) << msg;
+}
+
+}  // namespace
+}  // namespace tetsmooth

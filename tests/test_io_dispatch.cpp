@@ -1,0 +1,203 @@
+// Format names and extensions, read_mesh/write_mesh dispatch for every
+// format, and the atomic-write helper every writer goes through.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/atomic_file.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+namespace fs = std::filesystem;
+
+class IoDir : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string("tetsmooth_io_") + info->test_suite_name() + "_" + info->name();
+    for (char& c : name)
+      if (c == '/') c = '_';
+    dir_ = fs::temp_directory_path() / name;
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::size_t files() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {})); }
+
+  fs::path dir_;
+};
+
+std::string contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+TEST(Formats, ParseFormatNames) {
+  EXPECT_EQ(parse_format("tetgen"), MeshFormat::TetGen);
+  EXPECT_EQ(parse_format("vtu"), MeshFormat::Vtu);
+  EXPECT_EQ(parse_format("VTK"), MeshFormat::Vtk);
+  EXPECT_EQ(parse_format("msh"), MeshFormat::Msh41);
+  EXPECT_EQ(parse_format("msh41"), MeshFormat::Msh41);
+  EXPECT_EQ(parse_format("msh41-binary"), MeshFormat::Msh41Binary);
+  EXPECT_EQ(parse_format("msh22"), MeshFormat::Msh22);
+  EXPECT_EQ(parse_format("medit"), MeshFormat::Medit);
+  EXPECT_EQ(parse_format("tsm"), MeshFormat::Cache);
+  EXPECT_EQ(parse_format("auto"), MeshFormat::Auto);
+  try {
+    parse_format("stl");
+    FAIL() << "no UsageError";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("'stl'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("msh41-binary"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Formats, NamesParseBack) {
+  for (MeshFormat f : {MeshFormat::Auto, MeshFormat::TetGen, MeshFormat::Vtu, MeshFormat::Vtk, MeshFormat::Msh41,
+                       MeshFormat::Msh41Binary, MeshFormat::Msh22, MeshFormat::Medit, MeshFormat::Cache})
+    EXPECT_EQ(parse_format(format_name(f)), f) << format_name(f);
+}
+
+TEST(Formats, FromPathExtensions) {
+  EXPECT_EQ(format_from_path("a/box.node"), MeshFormat::TetGen);
+  EXPECT_EQ(format_from_path("box.ele"), MeshFormat::TetGen);
+  EXPECT_EQ(format_from_path("box.vtu"), MeshFormat::Vtu);
+  EXPECT_EQ(format_from_path("BOX.VTK"), MeshFormat::Vtk);
+  EXPECT_EQ(format_from_path("box.msh"), MeshFormat::Msh41);
+  EXPECT_EQ(format_from_path("box.mesh"), MeshFormat::Medit);
+  EXPECT_EQ(format_from_path("run.1/box.tsm"), MeshFormat::Cache);
+  EXPECT_EQ(format_from_path("box.vtu", MeshFormat::Msh22), MeshFormat::Msh22);  // an explicit format wins
+  EXPECT_THROW(format_from_path("box.stl"), UsageError);
+  EXPECT_THROW(format_from_path("run.1/box"), UsageError);
+  EXPECT_THROW(format_from_path("box"), UsageError);
+}
+
+class RoundTrip : public IoDir, public ::testing::WithParamInterface<MeshFormat> {};
+
+TEST_P(RoundTrip, WriteThenReadGivesTheSameMesh) {
+  const MeshFormat format = GetParam();
+  const TetMesh mesh = testing::cube_grid(3, 0.25);
+  const char* ext = format == MeshFormat::TetGen  ? ".node"
+                    : format == MeshFormat::Vtu   ? ".vtu"
+                    : format == MeshFormat::Vtk   ? ".vtk"
+                    : format == MeshFormat::Medit ? ".mesh"
+                    : format == MeshFormat::Cache ? ".tsm"
+                                                  : ".msh";
+  const std::string file = path(std::string("m") + ext);
+  write_mesh(mesh, file, format);
+  const TetMesh back = read_mesh(file);  // extension (and for MSH the header) decides
+  EXPECT_EQ(back.tets, mesh.tets);
+  ASSERT_EQ(back.xyz.size(), mesh.xyz.size());
+  // Every writer is meant to round-trip doubles exactly; allow the last bit
+  // for text writers that print max_digits10 rather than the shortest form.
+  for (std::size_t i = 0; i < mesh.xyz.size(); ++i)
+    EXPECT_NEAR(back.xyz[i], mesh.xyz[i], 4e-16 * std::abs(mesh.xyz[i])) << "coordinate " << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip,
+                         ::testing::Values(MeshFormat::TetGen, MeshFormat::Vtu, MeshFormat::Vtk, MeshFormat::Msh41,
+                                           MeshFormat::Msh41Binary, MeshFormat::Msh22, MeshFormat::Medit,
+                                           MeshFormat::Cache),
+                         [](const ::testing::TestParamInfo<MeshFormat>& p) {
+                           std::string name = format_name(p.param);
+                           name.erase(std::remove(name.begin(), name.end(), '-'), name.end());
+                           return name;
+                         });
+
+TEST_F(IoDir, TetGenBaseNameIsRecognised) {
+  const TetMesh mesh = testing::cube_with_centre();
+  write_mesh(mesh, path("box.ele"));
+  EXPECT_TRUE(fs::exists(path("box.node")));
+  EXPECT_EQ(read_mesh(path("box")).tets, mesh.tets);
+}
+
+TEST_F(IoDir, MissingInputNamesThePath) {
+  try {
+    read_mesh(path("absent.vtu"));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("absent.vtu: cannot open"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(IoDir, AtomicWriteReplacesTheTargetAndLeavesNoTemporary) {
+  write_atomically(path("t.txt"), [](std::ostream& out) { out << "old"; });
+  write_atomically(path("t.txt"), [](std::ostream& out) { out << "new contents"; });
+  EXPECT_EQ(contents(path("t.txt")), "new contents");
+  EXPECT_EQ(files(), 1u);
+}
+
+TEST_F(IoDir, AtomicWriteKeepsTheTargetWhenTheBodyThrows) {
+  write_atomically(path("t.txt"), [](std::ostream& out) { out << "old"; });
+  EXPECT_THROW(write_atomically(path("t.txt"),
+                                [](std::ostream& out) {
+                                  out << std::string(1 << 20, 'x');  // more than one buffer reaches the file
+                                  throw std::logic_error("body failed");
+                                }),
+               std::logic_error);
+  EXPECT_EQ(contents(path("t.txt")), "old");
+  EXPECT_EQ(files(), 1u);
+}
+
+TEST_F(IoDir, AtomicGroupWritesNothingUnlessEveryBodySucceeds) {
+  write_atomically(path("a.node"), [](std::ostream& out) { out << "old a"; });
+  EXPECT_THROW(write_atomically({{path("a.node"), [](std::ostream& out) { out << "new a"; }},
+                                 {path("a.ele"), [](std::ostream&) { throw std::runtime_error("second failed"); }}}),
+               std::runtime_error);
+  EXPECT_EQ(contents(path("a.node")), "old a");
+  EXPECT_FALSE(fs::exists(path("a.ele")));
+  EXPECT_EQ(files(), 1u);
+}
+
+TEST_F(IoDir, AtomicWriteIntoMissingDirectoryNamesPathAndReason) {
+  try {
+    write_atomically(path("no/such/dir/t.txt"), [](std::ostream& out) { out << "x"; });
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("no/such/dir/t.txt"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("No such file or directory"), std::string::npos) << msg;
+  }
+}
+
+TEST_F(IoDir, AtomicWriteOverADirectoryFailsCleanly) {
+  fs::create_directory(path("taken"));
+  try {
+    write_atomically(path("taken"), [](std::ostream& out) { out << "x"; });
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("taken"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_directory(path("taken")));
+  EXPECT_EQ(files(), 1u);
+}
+
+TEST_F(IoDir, AtomicWriteReportsABadStream) {
+  try {
+    write_atomically(path("t.txt"), [](std::ostream& out) { out.setstate(std::ios::failbit); });
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.txt"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(files(), 0u);
+}
+
+TEST_F(IoDir, WriteMeshFailureLeavesNoFile) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.blocks.push_back(PassThroughBlock{"prism", 6, {0, 1, 2, 3, 0, 1}, {}, {}});
+  EXPECT_THROW(write_mesh(mesh, path("p.vtu")), OutputError);
+  EXPECT_EQ(files(), 0u);
+}
+
+}  // namespace
+}  // namespace tetsmooth

@@ -1,0 +1,205 @@
+// TetGen .node/.ele: 0- and 1-based numbering, comments, attributes, markers
+// and region attributes, exact round trips, and errors that name file:line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/tetgen_io.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TetGenIo : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("tetsmooth_tetgen_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  fs::path dir_;
+};
+
+// The InputError message from reading the two texts as box.node / box.ele.
+std::string read_error(const std::string& node, const std::string& ele) {
+  std::istringstream n(node), e(ele);
+  try {
+    read_tetgen(n, "box.node", e, "box.ele");
+  } catch (const InputError& err) {
+    return err.what();
+  }
+  ADD_FAILURE() << "read_tetgen accepted\n" << node << "---\n" << ele;
+  return "";
+}
+
+const char* kNode = "5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n";
+const char* kEle = "2 4 0\n0 0 1 2 3\n1 1 2 3 4\n";
+
+TEST_F(TetGenIo, ReadsZeroBasedFileWithCommentsAttributesAndMarkers) {
+  const TetMesh mesh = read_tetgen(testing::data_path("tetgen_commented.node"));
+  ASSERT_EQ(mesh.num_nodes(), 5u);
+  ASSERT_EQ(mesh.num_tets(), 2u);
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 1, 2, 3, 4}));
+  EXPECT_EQ(mesh.xyz[3 * 4 + 2], 1.0);
+  EXPECT_EQ(mesh.extras.node_markers, (std::vector<int>{1, 1, 0, 2, -1}));
+  EXPECT_EQ(mesh.extras.node_attribute_count, 1);
+  EXPECT_EQ(mesh.extras.node_attributes, (std::vector<double>{10.5, 11.5, 12.5, 13.5, 14.5}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, -3}));
+  EXPECT_TRUE(mesh.fixed.empty()) << "markers must not pin nodes";
+}
+
+TEST_F(TetGenIo, OneBasedFileReadsAsZeroBased) {
+  const TetMesh one = read_tetgen(testing::data_path("tetgen_one_based.ele"));
+  const TetMesh zero = read_tetgen(testing::data_path("tetgen_commented"));
+  EXPECT_EQ(one.tets, zero.tets);
+  EXPECT_EQ(one.xyz, zero.xyz);
+  EXPECT_TRUE(one.extras.node_markers.empty());
+  EXPECT_TRUE(one.extras.tet_tags.empty());
+}
+
+TEST_F(TetGenIo, AcceptsNodeEleOrBaseName) {
+  EXPECT_EQ(tetgen_base("a/b.node"), "a/b");
+  EXPECT_EQ(tetgen_base("a/b.ele"), "a/b");
+  EXPECT_EQ(tetgen_base("a/b"), "a/b");
+  EXPECT_EQ(tetgen_base("a.node/b"), "a.node/b");
+}
+
+TEST_F(TetGenIo, RoundTripIsExact) {
+  TetMesh mesh = testing::cube_grid(3, 0.3);  // jittered: coordinates with full mantissas
+  const std::size_t n = mesh.num_nodes();
+  mesh.extras.node_markers.resize(n);
+  mesh.extras.node_attribute_count = 2;
+  for (std::size_t i = 0; i < n; ++i) {
+    mesh.extras.node_markers[i] = static_cast<int>(i % 3) - 1;
+    mesh.extras.node_attributes.push_back(0.1 * static_cast<double>(i));
+    mesh.extras.node_attributes.push_back(-1e-300 * static_cast<double>(i));
+  }
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) mesh.extras.tet_tags.push_back(static_cast<int>(t % 4));
+
+  write_tetgen(mesh, path("out.node"));
+  ASSERT_TRUE(fs::exists(path("out.node")));
+  ASSERT_TRUE(fs::exists(path("out.ele")));
+  const TetMesh back = read_tetgen(path("out"));
+  EXPECT_EQ(back.xyz, mesh.xyz);  // bit-exact: shortest round-trip decimal form
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.node_markers, mesh.extras.node_markers);
+  EXPECT_EQ(back.extras.node_attribute_count, 2);
+  EXPECT_EQ(back.extras.node_attributes, mesh.extras.node_attributes);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+}
+
+TEST_F(TetGenIo, WritesOneBasedNumberingAndPlainHeaders) {
+  write_tetgen(testing::regular_tet(), path("t"));
+  std::ifstream node(path("t.node")), ele(path("t.ele"));
+  std::string line;
+  std::getline(node, line);
+  EXPECT_EQ(line, "4 3 0 0");
+  std::getline(node, line);
+  EXPECT_EQ(line.substr(0, 2), "1 ");
+  std::getline(ele, line);
+  EXPECT_EQ(line, "1 4 0");
+  std::getline(ele, line);
+  EXPECT_EQ(line, "1 1 2 3 4");
+}
+
+TEST_F(TetGenIo, WriteIntoMissingDirectoryFailsWithoutLeavingFiles) {
+  try {
+    write_tetgen(testing::regular_tet(), path("missing/x"));
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing/x.node"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+TEST_F(TetGenIo, MissingFileNamesThePath) {
+  try {
+    read_tetgen(path("nothing"));
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("nothing.node"), std::string::npos) << e.what();
+  }
+}
+
+TEST(TetGenErrors, TruncatedNodeFile) {
+  const std::string msg = read_error("5 3 0 0\n0 0 0 0\n1 1 0 0\n", kEle);
+  EXPECT_NE(msg.find("box.node:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("end of file"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, TruncatedEleFile) {
+  const std::string msg = read_error(kNode, "3 4 0\n0 0 1 2 3\n1 1 2 3 4\n");
+  EXPECT_NE(msg.find("box.ele:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tet 3 of 3"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, NonNumericToken) {
+  const std::string msg = read_error("5 3 0 0\n0 0 0 0\n1 1 zero 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n", kEle);
+  EXPECT_NE(msg.find("box.node:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("'zero'"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, MissingCoordinate) {
+  const std::string msg = read_error("5 3 0 0\n0 0 0 0\n1 1 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n", kEle);
+  EXPECT_NE(msg.find("box.node:3"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, NonFiniteCoordinate) {
+  for (const char* bad : {"nan", "inf", "-inf", "1e999"}) {
+    const std::string node = std::string("5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 ") + bad + "\n4 1 1 1\n";
+    const std::string msg = read_error(node, kEle);
+    EXPECT_NE(msg.find("box.node:5"), std::string::npos) << msg;
+  }
+}
+
+TEST(TetGenErrors, IndexOutOfRange) {
+  const std::string msg = read_error(kNode, "2 4 0\n0 0 1 2 3\n1 1 2 3 5\n");
+  EXPECT_NE(msg.find("box.ele:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("node number 5 out of range [0, 5)"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, OneBasedIndexZeroIsOutOfRange) {
+  const std::string msg =
+      read_error("5 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 1 1 1\n", "2 4 0\n1 1 2 3 4\n2 0 2 3 4\n");
+  EXPECT_NE(msg.find("box.ele:3"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, BadHeaders) {
+  EXPECT_NE(read_error("", kEle).find("box.node:1: unexpected end of file"), std::string::npos);
+  EXPECT_NE(read_error("5 2 0 0\n", kEle).find("box.node:1: dimension 2"), std::string::npos);
+  EXPECT_NE(read_error("-5 3 0 0\n", kEle).find("box.node:1"), std::string::npos);
+  EXPECT_NE(read_error(kNode, "2 10 0\n").find("box.ele:1: second-order"), std::string::npos);
+  EXPECT_NE(read_error(kNode, "2 4 2\n").find("box.ele:1"), std::string::npos);
+  EXPECT_NE(read_error(kNode, "0 4 0\n").find("box.ele:1"), std::string::npos);
+}
+
+TEST(TetGenErrors, NodeNumbering) {
+  EXPECT_NE(read_error("2 3 0 0\n2 0 0 0\n3 1 0 0\n", kEle).find("box.node:2: the first node number"),
+            std::string::npos);
+  EXPECT_NE(read_error("5 3 0 0\n0 0 0 0\n1 1 0 0\n3 0 1 0\n", kEle).find("box.node:4: node number 3 out of sequence"),
+            std::string::npos);
+}
+
+TEST(TetGenErrors, NonIntegerRegionAttribute) {
+  const std::string msg = read_error(kNode, "2 4 1\n0 0 1 2 3 1\n1 1 2 3 4 1.5\n");
+  EXPECT_NE(msg.find("box.ele:3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("1.5"), std::string::npos) << msg;
+}
+
+TEST(TetGenErrors, ReadsRegionAttributesWrittenAsReals) {
+  std::istringstream n(kNode), e("2 4 1\n0 0 1 2 3 1.0\n1 1 2 3 4 -2e0\n");
+  EXPECT_EQ(read_tetgen(n, "box.node", e, "box.ele").extras.tet_tags, (std::vector<int>{1, -2}));
+}
+
+}  // namespace
+}  // namespace tetsmooth

@@ -1,0 +1,122 @@
+// validate_mesh: shape and range errors are InputErrors that name the source
+// and the offending tet or node; inverted, degenerate and unreferenced
+// entities are counted, not rejected.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/validate.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+// The message of the InputError that validation throws, or a test failure.
+std::string validation_error(const TetMesh& mesh) {
+  try {
+    validate_mesh(mesh, "part.vtu");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "validate_mesh accepted the mesh";
+  return "";
+}
+
+TEST(Validate, ValidMeshesPassWithNothingCounted) {
+  for (const TetMesh& mesh : {testing::regular_tet(), testing::cube_with_centre(), testing::cube_grid(3, 0.2)}) {
+    const ValidationReport r = validate_mesh(mesh);
+    EXPECT_EQ(r.nodes, mesh.num_nodes());
+    EXPECT_EQ(r.tets, mesh.num_tets());
+    EXPECT_EQ(r.inverted, 0u);
+    EXPECT_EQ(r.degenerate, 0u);
+    EXPECT_EQ(r.unreferenced, 0u);
+  }
+}
+
+TEST(Validate, CountsInvertedTets) {
+  TetMesh mesh = testing::cube_with_centre();
+  std::swap(mesh.tets[4 * 3 + 1], mesh.tets[4 * 3 + 2]);  // an odd permutation flips the orientation
+  std::swap(mesh.tets[4 * 7 + 0], mesh.tets[4 * 7 + 3]);
+  const ValidationReport r = validate_mesh(mesh);
+  EXPECT_EQ(r.inverted, 2u);
+  EXPECT_EQ(r.degenerate, 0u);
+}
+
+TEST(Validate, CountsDegenerateTets) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.xyz.insert(mesh.xyz.end(), {2, 0, 0});       // node 4, on the line through nodes 0 and 1
+  mesh.tets.insert(mesh.tets.end(), {0, 1, 2, 2});  // repeated node
+  mesh.tets.insert(mesh.tets.end(), {0, 1, 4, 2});  // zero volume: 0, 1, 4 collinear
+  const ValidationReport r = validate_mesh(mesh);
+  EXPECT_EQ(r.degenerate, 2u);
+  EXPECT_EQ(r.inverted, 0u);
+}
+
+TEST(Validate, CountsUnreferencedNodes) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.xyz.insert(mesh.xyz.end(), {5, 5, 5, 6, 6, 6});
+  EXPECT_EQ(validate_mesh(mesh).unreferenced, 2u);
+}
+
+TEST(Validate, RejectsIndexOutOfRangeNamingTheTet) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.tets[4 * 5 + 2] = 9;  // the mesh has nodes 0..8
+  const std::string msg = validation_error(mesh);
+  EXPECT_NE(msg.find("part.vtu"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tet 5"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("node 9"), std::string::npos) << msg;
+}
+
+TEST(Validate, RejectsNegativeIndex) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.tets[0] = -1;
+  EXPECT_NE(validation_error(mesh).find("tet 0"), std::string::npos);
+}
+
+TEST(Validate, RejectsNonFiniteCoordinatesNamingTheNode) {
+  for (double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    TetMesh mesh = testing::regular_tet();
+    mesh.xyz[3 * 2 + 1] = bad;
+    const std::string msg = validation_error(mesh);
+    EXPECT_NE(msg.find("node 2"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("non-finite coordinate y"), std::string::npos) << msg;
+  }
+}
+
+TEST(Validate, RejectsWrongArrayShapes) {
+  TetMesh xyz = testing::regular_tet();
+  xyz.xyz.push_back(1.0);
+  EXPECT_NE(validation_error(xyz).find("multiple of 3"), std::string::npos);
+
+  TetMesh tets = testing::regular_tet();
+  tets.tets.push_back(0);
+  EXPECT_NE(validation_error(tets).find("multiple of 4"), std::string::npos);
+
+  TetMesh fixed = testing::regular_tet();
+  fixed.fixed.assign(3, 0);
+  EXPECT_NE(validation_error(fixed).find("fixed"), std::string::npos);
+
+  TetMesh tags = testing::regular_tet();
+  tags.extras.tet_tags = {1, 2};
+  EXPECT_NE(validation_error(tags).find("tet tag"), std::string::npos);
+}
+
+TEST(Validate, RejectsMeshWithoutTets) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.tets.clear();
+  EXPECT_NE(validation_error(mesh).find("no tetrahedra"), std::string::npos);
+}
+
+TEST(Validate, RejectsPassThroughBlockOutOfRange) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2, 1, 2, 4}, {}, {}});
+  const std::string msg = validation_error(mesh);
+  EXPECT_NE(msg.find("triangle element 1"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("node 4"), std::string::npos) << msg;
+}
+
+}  // namespace
+}  // namespace tetsmooth

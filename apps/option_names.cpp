@@ -59,4 +59,9 @@ const char* option_name(Device d) { return name_of(kDevices, d); }
 const char* option_name(Precision p) { return name_of(kPrecisions, p); }
 const char* option_name(Ordering o) { return name_of(kOrderings, o); }
 
+const char* input_format_name(MeshFormat f) {
+  const bool gmsh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
+  return gmsh ? "msh" : format_name(f);
+}
+
 }  // namespace tetsmooth::cli

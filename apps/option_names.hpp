@@ -5,6 +5,7 @@
 #include <string>
 
 #include "kernels/smooth_options.hpp"
+#include "mesh/io/mesh_io.hpp"
 
 namespace tetsmooth::cli {
 
@@ -23,5 +24,10 @@ const char* option_name(Layout l);
 const char* option_name(Device d);
 const char* option_name(Precision p);
 const char* option_name(Ordering o);
+
+// The format of an input file as reports name it: "msh" for every Gmsh
+// variant, because the reader detects the version and encoding itself and
+// the name alone cannot tell them apart.
+const char* input_format_name(MeshFormat f);
 
 }  // namespace tetsmooth::cli

@@ -6,7 +6,7 @@
 namespace tetsmooth::cli {
 namespace {
 
-nlohmann::json mesh_counts_json(const ValidationReport& v) {
+nlohmann::ordered_json mesh_counts_json(const ValidationReport& v) {
   return {{"nodes", v.nodes},
           {"tets", v.tets},
           {"inverted_tets", v.inverted},
@@ -14,7 +14,7 @@ nlohmann::json mesh_counts_json(const ValidationReport& v) {
           {"unreferenced_nodes", v.unreferenced}};
 }
 
-nlohmann::json options_json(const SmoothCommand& c) {
+nlohmann::ordered_json options_json(const SmoothCommand& c) {
   const SmoothOptions& o = c.options;
   return {{"method", option_name(o.method)},
           {"form", option_name(o.form)},
@@ -30,8 +30,8 @@ nlohmann::json options_json(const SmoothCommand& c) {
 
 }  // namespace
 
-nlohmann::json summary_json(const QualitySummary& s) {
-  nlohmann::json lower_edges = nlohmann::json::array();
+nlohmann::ordered_json summary_json(const QualitySummary& s) {
+  nlohmann::ordered_json lower_edges = nlohmann::ordered_json::array();
   for (int bin = 0; bin < 10; ++bin) lower_edges.push_back(bin / 10.0);
   return {{"tets", s.tets},
           {"min", s.min},
@@ -46,11 +46,11 @@ nlohmann::json summary_json(const QualitySummary& s) {
           {"histogram", {{"lower_edges", lower_edges}, {"counts", s.histogram}}}};
 }
 
-nlohmann::json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record) {
+nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record) {
   const SmoothResult& r = record.result;
-  nlohmann::json input = mesh_counts_json(record.input);
+  nlohmann::ordered_json input = mesh_counts_json(record.input);
   input["path"] = command.input;
-  input["format"] = format_name(record.input_format);
+  input["format"] = input_format_name(record.input_format);
   return {{"tool", "tetsmooth"},
           {"version", TETSMOOTH_VERSION},
           {"command", "smooth"},
@@ -78,12 +78,12 @@ nlohmann::json smooth_report_json(const SmoothCommand& command, const SmoothReco
           {"warnings", record.warnings}};
 }
 
-nlohmann::json quality_report_json(const QualityCommand& command, const QualityRecord& record) {
-  nlohmann::json worst = nlohmann::json::array();
+nlohmann::ordered_json quality_report_json(const QualityCommand& command, const QualityRecord& record) {
+  nlohmann::ordered_json worst = nlohmann::ordered_json::array();
   for (const RankedTet& t : record.worst) worst.push_back({{"tet", t.tet}, {"quality", t.quality}, {"nodes", t.nodes}});
-  nlohmann::json input = mesh_counts_json(record.mesh);
+  nlohmann::ordered_json input = mesh_counts_json(record.mesh);
   input["path"] = command.input;
-  input["format"] = format_name(record.format);
+  input["format"] = input_format_name(record.format);
   input["boundary_nodes"] = record.boundary_nodes;
   input["movable_nodes"] = record.movable_nodes;
   return {{"tool", "tetsmooth"},
@@ -95,7 +95,7 @@ nlohmann::json quality_report_json(const QualityCommand& command, const QualityR
           {"worst_tets", worst}};
 }
 
-void write_json_file(const nlohmann::json& doc, const std::string& path) {
+void write_json_file(const nlohmann::ordered_json& doc, const std::string& path) {
   write_atomically(path, [&](std::ostream& os) { os << doc.dump(2) << '\n'; });
 }
 

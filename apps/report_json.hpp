@@ -1,6 +1,8 @@
 #pragma once
 // Reports for programs: the same content as the text reports, as JSON.
-// Readers should ignore fields they do not know; fields are only added.
+// Keys keep the order written here (ordered_json), so the files read top
+// down: what was run, what it did, what came of it. Readers should ignore
+// fields they do not know; fields are only added.
 #include <string>
 #include <vector>
 
@@ -32,11 +34,11 @@ struct QualityRecord {
   std::vector<RankedTet> worst;
 };
 
-nlohmann::json summary_json(const QualitySummary& s);
-nlohmann::json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record);
-nlohmann::json quality_report_json(const QualityCommand& command, const QualityRecord& record);
+nlohmann::ordered_json summary_json(const QualitySummary& s);
+nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record);
+nlohmann::ordered_json quality_report_json(const QualityCommand& command, const QualityRecord& record);
 
 // Pretty-printed JSON with a final newline, written atomically to `path`.
-void write_json_file(const nlohmann::json& doc, const std::string& path);
+void write_json_file(const nlohmann::ordered_json& doc, const std::string& path);
 
 }  // namespace tetsmooth::cli

@@ -30,6 +30,11 @@ void write_worst_tets(std::ostream& os, const std::vector<RankedTet>& worst);
 // 0.123456 with 4 digits -> "0.1235".
 std::string fixed_digits(double v, int digits);
 
+// A quality value with 4 decimals, or in scientific notation when that would
+// round a non-zero value to 0.0000: slivers of 1e-6 must not look like
+// degenerate tets.
+std::string quality_text(double q);
+
 // 1234567 -> "1,234,567".
 std::string with_thousands(std::size_t n);
 

@@ -1,6 +1,7 @@
 // tetsmooth convert: read in one format, write in another.
 #include "apps/commands.hpp"
 #include "apps/input_warnings.hpp"
+#include "apps/option_names.hpp"
 #include "apps/output_check.hpp"
 #include "apps/output_fields.hpp"
 #include "apps/report_text.hpp"
@@ -17,7 +18,7 @@ void run_convert(const ConvertCommand& c, const Console& console) {
   for (const std::string& w : input_warnings(validate_mesh(mesh, c.input), c.input)) console.warn(w);
   write_mesh_with_fields(mesh, c.output, output_format);
   console.note("wrote " + c.output + ": " + with_thousands(mesh.num_nodes()) + " nodes, " +
-               with_thousands(mesh.num_tets()) + " tets (" + format_name(input_format) + " -> " +
+               with_thousands(mesh.num_tets()) + " tets (" + input_format_name(input_format) + " -> " +
                format_name(output_format) + ")");
 }
 

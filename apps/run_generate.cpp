@@ -18,7 +18,7 @@ void run_generate(const GenerateCommand& c, const Console& console) {
   const QualitySummary q = summarize_quality(mesh);
   console.note("wrote " + c.output + ": " + c.model + " (seed " + std::to_string(c.seed) + "), " +
                with_thousands(mesh.num_nodes()) + " nodes, " + with_thousands(mesh.num_tets()) +
-               " tets, radius ratio min " + fixed_digits(q.min, 4) + " mean " + fixed_digits(q.mean, 4) + " (" +
+               " tets, radius ratio min " + quality_text(q.min) + " mean " + quality_text(q.mean) + " (" +
                format_name(format) + ")");
 }
 

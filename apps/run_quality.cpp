@@ -3,6 +3,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/input_warnings.hpp"
+#include "apps/option_names.hpp"
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
 #include "mesh/io/mesh_io.hpp"
@@ -31,7 +32,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
   }
   os << c.input << ": " << with_thousands(record.mesh.nodes) << " nodes (" << with_thousands(record.boundary_nodes)
      << " on the boundary, " << with_thousands(record.movable_nodes) << " movable), "
-     << with_thousands(record.mesh.tets) << " tets (" << format_name(record.format) << ")\n\n";
+     << with_thousands(record.mesh.tets) << " tets (" << input_format_name(record.format) << ")\n\n";
   write_quality_table(os, {{"", &record.summary}});
   os << '\n';
   write_histogram(os, {{"", &record.summary}});

@@ -109,7 +109,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   for (std::string& w : ignored_option_warnings(c, record.device)) record.warnings.push_back(std::move(w));
   for (const std::string& w : record.warnings) console.warn(w);
   console.note(c.input + ": " + with_thousands(record.input.nodes) + " nodes, " + with_thousands(record.input.tets) +
-               " tets (" + format_name(record.input_format) + ")");
+               " tets (" + input_format_name(record.input_format) + ")");
   console.note(device_line(c, record.device, why_not_cuda));
 
   SmoothOptions options = c.options;

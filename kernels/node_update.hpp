@@ -38,12 +38,16 @@ struct NodeMove {
   bool accept;
 };
 
+// The pieces below take a lane and a stride so that a group of GPU threads
+// can share one node (lane l handles entries l, l + stride, ...) and combine
+// the parts; the CPU calls them with lane 0 and stride 1.
+
+// Sum of the neighbours' positions over this lane's share of the row.
 template <class Real, class Coords>
-TS_HD Vec3<Real> neighbour_centroid(const MeshView& m, const Coords& xyz, index_t i) {
+TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, int lane, int stride) {
   Vec3<Real> s{0, 0, 0};
-  const index_t b = m.nbr_off[i], e = m.nbr_off[i + 1];
-  for (index_t k = b; k < e; ++k) s = s + xyz.get(m.nbr[k]);
-  return (Real(1) / Real(e - b)) * s;
+  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) s = s + xyz.get(m.nbr[k]);
+  return s;
 }
 
 // The four corners of tet t, with node i replaced by `at`.
@@ -61,33 +65,56 @@ TS_HD bool keeps_validity(Real q_old, Real q_new) {
   return q_old > Real(0) ? q_new > Real(0) : q_new >= q_old;
 }
 
-template <class Real, bool kAdaptive, class Coords>
-TS_HD NodeMove<Real> evaluate_node(const MeshView& m, const Coords& xyz, index_t i) {
-  NodeMove<Real> mv;
-  const Vec3<Real> p = xyz.get(i);
-  mv.target = neighbour_centroid<Real>(m, xyz, i);
-  const Vec3<Real> d = mv.target - p;
-  mv.displacement2 = norm2(d);
-  mv.old_min = mv.new_min = Real(1);
-  mv.accept = true;
-  if (!kAdaptive) return mv;
-  Real old_min = Real(2), new_min = Real(2);
-  bool valid = true;
-  const index_t b = m.inc_off[i], e = m.inc_off[i + 1];
-  for (index_t k = b; k < e; ++k) {
+// Quality of a node's incident tets (this lane's share) at the old position
+// p and at the target.
+template <class Real>
+struct StarQuality {
+  Real old_min, new_min;
+  bool valid;  // every tet keeps its validity (keeps_validity)
+};
+
+template <class Real>
+TS_HD StarQuality<Real> merge(StarQuality<Real> a, StarQuality<Real> b) {
+  return {a.old_min < b.old_min ? a.old_min : b.old_min, a.new_min < b.new_min ? a.new_min : b.new_min,
+          a.valid && b.valid};
+}
+
+template <class Real, class Coords>
+TS_HD StarQuality<Real> star_quality(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
+                                     int lane, int stride) {
+  StarQuality<Real> sq{Real(2), Real(2), true};
+  for (index_t k = m.inc_off[i] + lane; k < m.inc_off[i + 1]; k += stride) {
     Vec3<Real> v[4];
     tet_corners(m, xyz, m.inc[k], i, p, v);
     const Real q_old = radius_ratio(v[0], v[1], v[2], v[3]);
-    tet_corners(m, xyz, m.inc[k], i, mv.target, v);
+    tet_corners(m, xyz, m.inc[k], i, target, v);
     const Real q_new = radius_ratio(v[0], v[1], v[2], v[3]);
-    old_min = q_old < old_min ? q_old : old_min;
-    new_min = q_new < new_min ? q_new : new_min;
-    valid = valid && keeps_validity(q_old, q_new);
+    sq = merge(sq, StarQuality<Real>{q_old, q_new, keeps_validity(q_old, q_new)});
   }
-  mv.old_min = old_min;
-  mv.new_min = new_min;
-  mv.accept = valid && new_min > old_min;
+  return sq;
+}
+
+// The decision, once the centroid and the star's quality are known.
+template <class Real, bool kAdaptive>
+TS_HD NodeMove<Real> decide_move(Vec3<Real> p, Vec3<Real> target, StarQuality<Real> sq) {
+  NodeMove<Real> mv;
+  mv.target = target;
+  mv.displacement2 = norm2(target - p);
+  mv.old_min = kAdaptive ? sq.old_min : Real(1);
+  mv.new_min = kAdaptive ? sq.new_min : Real(1);
+  mv.accept = !kAdaptive || (sq.valid && sq.new_min > sq.old_min);
   return mv;
+}
+
+// One node, start to finish, on one thread (the CPU and SingleBlock).
+template <class Real, bool kAdaptive, class Coords>
+TS_HD NodeMove<Real> evaluate_node(const MeshView& m, const Coords& xyz, index_t i) {
+  const Vec3<Real> p = xyz.get(i);
+  const Real inv_degree = Real(1) / Real(m.nbr_off[i + 1] - m.nbr_off[i]);
+  const Vec3<Real> target = inv_degree * neighbour_sum<Real>(m, xyz, i, 0, 1);
+  const StarQuality<Real> sq =
+      kAdaptive ? star_quality(m, xyz, i, p, target, 0, 1) : StarQuality<Real>{Real(1), Real(1), true};
+  return decide_move<Real, kAdaptive>(p, target, sq);
 }
 
 // Form A conflict check for a tet where two or more nodes moved in the same

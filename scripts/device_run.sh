@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs on the GPU machine from the repository root, with gpu-bundle/ carried
 # there: GPU tests, compute-sanitizer and the benchmarks, everything written
-# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] (default: tests sanitize bench)
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] (default: tests sanitize bench)
 set -uo pipefail
 b=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-/tmp/out}
@@ -36,9 +36,14 @@ for step in $steps; do
       "$b/bench_smooth" --models=5k,109k --scaling=lattice-215 --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/.*/Coloured|FormB/AoS/MultiBlock/109k' \
         --benchmark_min_time=0.01 --benchmark_out="$out/bench_quick.json" --benchmark_out_format=json 2>&1 | tail -30
       ;;
+    float)
+      "$b/bench_smooth" --precision=float --no-cpu --models=5k,10k,59k,77k,109k --scaling=lattice-215 \
+        --benchmark_filter='Memory|FormB/.*/(Coloured|MultiBlock)/' --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
+        --benchmark_out="$out/bench_float.json" --benchmark_out_format=json 2>&1 | grep -v "^\[" | cut -c1-160 | tail -30
+      ;;
     study)
       "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
-        --benchmark_out="$out/bench_smooth.json" --benchmark_out_format=json 2>&1 | tail -80
+        --benchmark_out="$out/bench_smooth.json" --benchmark_out_format=json 2>&1 | cut -c1-160 | tail -40
       ;;
   esac
 done

@@ -143,6 +143,13 @@ TEST(TetGenErrors, TruncatedEleFile) {
   EXPECT_NE(msg.find("tet 3 of 3"), std::string::npos) << msg;
 }
 
+TEST(TetGenErrors, MoreEntriesThanDeclared) {
+  std::string msg = read_error("4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n", kEle);
+  EXPECT_NE(msg.find("box.node:6: more data than the 4 nodes"), std::string::npos) << msg;
+  msg = read_error(kNode, "1 4 0\n0 0 1 2 3\n1 1 2 3 4\n# comment\n");
+  EXPECT_NE(msg.find("box.ele:3: more data than the 1 tets"), std::string::npos) << msg;
+}
+
 TEST(TetGenErrors, NonNumericToken) {
   const std::string msg = read_error("5 3 0 0\n0 0 0 0\n1 1 zero 0\n2 0 1 0\n3 0 0 1\n4 1 1 1\n", kEle);
   EXPECT_NE(msg.find("box.node:3"), std::string::npos) << msg;

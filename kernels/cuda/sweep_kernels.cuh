@@ -18,11 +18,15 @@ namespace tetsmooth::cuda {
 
 inline constexpr int kSingleBlockThreads = 1024;
 
-// Evaluates node i and applies the move; returns whether it moved.
-template <class Real, bool kAdaptive, Form F, class Coords>
-__device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& read, const Coords& write, index_t i,
-                                            Real* old_min, std::uint8_t* moved, double& disp2) {
-  const NodeMove<Real> mv = evaluate_node<Real, kAdaptive>(m, read, i);
+// Threads that share one node in MultiBlock and Coloured sweeps: a small
+// colour class has too few nodes to fill the GPU with one thread each, and
+// each node's ~25 incident tets would run one after another.
+inline constexpr int kLanesPerNode = 8;
+
+// Applies an evaluated move; returns whether the node moved.
+template <class Real, Form F, class Coords>
+__device__ __forceinline__ bool apply_move(const NodeMove<Real>& mv, const Coords& read, const Coords& write, index_t i,
+                                           Real* old_min, std::uint8_t* moved, double& disp2) {
   const bool take = mv.accept && mv.displacement2 > Real(0);
   if (F == Form::A) {
     write.set(i, take ? mv.target : read.get(i));
@@ -35,20 +39,74 @@ __device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& rea
   return take;
 }
 
-// One sweep (MultiBlock: nodes == nullptr, all N nodes) or one colour class.
-// Form A leaves the counting to count_moves_kernel, after the repair.
+// Evaluates node i on one thread and applies the move (SingleBlock).
+template <class Real, bool kAdaptive, Form F, class Coords>
+__device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& read, const Coords& write, index_t i,
+                                            Real* old_min, std::uint8_t* moved, double& disp2) {
+  return apply_move<Real, F>(evaluate_node<Real, kAdaptive>(m, read, i), read, write, i, old_min, moved, disp2);
+}
+
+// Sum over a group of G lanes, the total taken from lane 0 so every lane
+// holds bit-identical values.
+template <int G, class T>
+__device__ __forceinline__ T group_sum(T v) {
+  for (int offset = G / 2; offset > 0; offset >>= 1) v += __shfl_down_sync(0xffffffffu, v, offset, G);
+  return __shfl_sync(0xffffffffu, v, 0, G);
+}
+
+template <int G, class T>
+__device__ __forceinline__ T group_min(T v) {
+  for (int offset = G / 2; offset > 0; offset >>= 1) {
+    const T w = __shfl_xor_sync(0xffffffffu, v, offset, G);
+    v = w < v ? w : v;
+  }
+  return v;
+}
+
+// evaluate_node split over the G lanes of a group (lane = this thread's
+// place in it). Every lane of the warp must call it; lanes of an inactive
+// group contribute nothing. All lanes of a group return the same move.
+template <class Real, bool kAdaptive, int G, class Coords>
+__device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
+                                                              bool active) {
+  Vec3<Real> p{0, 0, 0}, sum{0, 0, 0};
+  if (active) {
+    p = xyz.get(i);
+    sum = neighbour_sum<Real>(m, xyz, i, lane, G);
+  }
+  sum = Vec3<Real>{group_sum<G>(sum.x), group_sum<G>(sum.y), group_sum<G>(sum.z)};
+  const Real degree = active ? Real(m.nbr_off[i + 1] - m.nbr_off[i]) : Real(1);
+  const Vec3<Real> target = (Real(1) / degree) * sum;
+  StarQuality<Real> sq{Real(1), Real(1), true};
+  if (kAdaptive) {
+    sq = StarQuality<Real>{Real(2), Real(2), true};
+    if (active) sq = star_quality(m, xyz, i, p, target, lane, G);
+    sq.old_min = group_min<G>(sq.old_min);
+    sq.new_min = group_min<G>(sq.new_min);
+    sq.valid = group_min<G>(static_cast<int>(sq.valid)) != 0;
+  }
+  return decide_move<Real, kAdaptive>(p, target, sq);
+}
+
+// One sweep (MultiBlock: nodes == nullptr, all N nodes) or one colour class,
+// kLanesPerNode threads per node. Form A leaves the counting to
+// count_moves_kernel, after the repair.
 template <class Real, bool kAdaptive, Form F, class Coords>
 __global__ void sweep_kernel(MeshView m, Coords read, Coords write, const index_t* nodes, index_t count,
                              const std::uint8_t* movable, Real* old_min, std::uint8_t* moved, SweepState* st,
                              SweepCounters c) {
   if (st->done) return;
-  const index_t k = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  constexpr int G = kLanesPerNode;
+  const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  const index_t k = static_cast<index_t>(gid / G);
+  const int lane = static_cast<int>(gid % G);
+  bool active = k < count;
+  const index_t i = active ? (nodes ? nodes[k] : k) : 0;
+  active = active && (nodes || movable[i]);
+  const NodeMove<Real> mv = evaluate_node_group<Real, kAdaptive, G>(m, read, i, lane, active);
   unsigned accepted = 0;
   double disp2 = 0;
-  if (k < count) {
-    const index_t i = nodes ? nodes[k] : k;
-    if (nodes || movable[i]) accepted = smooth_node<Real, kAdaptive, F>(m, read, write, i, old_min, moved, disp2);
-  }
+  if (active && lane == 0) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);
   if (F == Form::B) add_sweep_stats(c, st->sweep, accepted, disp2);
 }
 

@@ -16,6 +16,10 @@ namespace detail {
 
 constexpr int kBlock = 256;
 inline unsigned blocks_for(index_t count) { return static_cast<unsigned>((count + kBlock - 1) / kBlock); }
+// Blocks for one thread group of kLanesPerNode per node.
+inline unsigned node_blocks_for(index_t nodes) {
+  return static_cast<unsigned>((static_cast<std::size_t>(nodes) * kLanesPerNode + kBlock - 1) / kBlock);
+}
 
 template <class Real, Layout L>
 struct CoordsFor;
@@ -75,13 +79,13 @@ class SweepLauncher {
       for (std::size_t c = 0; c + 1 < off.size(); ++c) {
         const index_t count = off[c + 1] - off[c];
         if (count == 0) continue;
-        sweep_kernel<Real, kAdaptive, F><<<blocks_for(count), kBlock, 0, a_.stream>>>(
+        sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(count), kBlock, 0, a_.stream>>>(
             a_.view, read, write, a_.class_nodes + off[c], count, a_.movable, old_min(), a_.moved, a_.state,
             a_.counters);
         launched();
       }
     } else {
-      sweep_kernel<Real, kAdaptive, F><<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(
+      sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(a_.n), kBlock, 0, a_.stream>>>(
           a_.view, read, write, nullptr, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
       launched();
     }

@@ -4,7 +4,8 @@
 // rename cannot cross file systems), flushed to disk, and renamed over the
 // target. On any failure the temporary is removed and OutputError names the
 // path and the reason (strerror). Exceptions thrown by the body itself are
-// passed on unchanged, after the same clean-up.
+// passed on unchanged, after the same clean-up. A symbolic link at the target
+// is replaced by the new file, not followed.
 #include <functional>
 #include <ostream>
 #include <string>

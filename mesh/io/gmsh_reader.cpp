@@ -2,7 +2,6 @@
 // then one loop over the sections serves every flavour.
 #include <cstring>
 #include <istream>
-#include <iterator>
 #include <sstream>
 
 #include "mesh/errors.hpp"
@@ -124,9 +123,11 @@ TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   if (state.major == 4 && state.has_entities) map_physicals(state);
 
   TetMesh& mesh = state.mesh;
-  mesh.fixed.assign(mesh.num_nodes(), 0);
-  for (const PassThroughBlock& block : mesh.extras.blocks)
+  // `fixed` stays empty when no pass-through element pins a node.
+  for (const PassThroughBlock& block : mesh.extras.blocks) {
+    if (!block.connectivity.empty()) mesh.fixed.resize(mesh.num_nodes(), 0);
     for (index_t n : block.connectivity) mesh.fixed[static_cast<std::size_t>(n)] = 1;
+  }
   validate_mesh(mesh, source);
   return std::move(mesh);
 }
@@ -163,8 +164,7 @@ TetMesh read_gmsh(std::istream& in, const std::string& source) {
   // The binary part starts right after the version line, which TextLines
   // consumed whole.
   const std::streamoff base = in.tellg();
-  std::string data{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (in.bad()) lines.fail("read error");
+  std::string data = read_all(in, source);
   // The integer 1 written in the writer's byte order tells whether to swap.
   std::int32_t one = 0;
   if (data.size() >= sizeof one) std::memcpy(&one, data.data(), sizeof one);

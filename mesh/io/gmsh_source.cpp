@@ -141,6 +141,7 @@ std::string_view BinarySource::next_section() {
 
 void BinarySource::expect_end(std::string_view end_name) {
   skip_blank();
+  if (pos_ == data_.size()) fail("unexpected end of file, expected " + std::string(end_name));
   const std::size_t mark = pos_;
   const std::string_view found = raw_line();
   if (found != end_name) {

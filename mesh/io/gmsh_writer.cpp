@@ -4,6 +4,7 @@
 #include <climits>
 #include <limits>
 #include <ostream>
+#include <stdexcept>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/atomic_file.hpp"
@@ -70,11 +71,11 @@ class BinarySink {
 void check_fields(const TetMesh& mesh, const MeshFields& fields) {
   for (const auto& [name, values] : fields.node_scalars)
     if (values.size() != mesh.num_nodes())
-      throw OutputError("node field '" + name + "' has " + std::to_string(values.size()) + " values for " +
+      throw std::invalid_argument("node field '" + name + "' has " + std::to_string(values.size()) + " values for " +
                         std::to_string(mesh.num_nodes()) + " nodes");
   for (const auto& [name, values] : fields.tet_scalars)
     if (values.size() != mesh.num_tets())
-      throw OutputError("tet field '" + name + "' has " + std::to_string(values.size()) + " values for " +
+      throw std::invalid_argument("tet field '" + name + "' has " + std::to_string(values.size()) + " values for " +
                         std::to_string(mesh.num_tets()) + " tets");
 }
 
@@ -292,9 +293,9 @@ void write_gmsh(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, cons
 }
 
 void write_gmsh_file(const TetMesh& mesh, const std::string& path, MshFlavour flavour, const MeshFields& fields) {
+  check_fields(mesh, fields);
   WritePlan plan;
   try {
-    check_fields(mesh, fields);
     plan = gmsh::plan_gmsh_output(mesh);
   } catch (const OutputError& e) {
     throw OutputError("cannot write '" + path + "': " + e.what());

@@ -31,6 +31,13 @@ std::size_t count_field(const TextLines& lines, std::size_t i, const char* what)
 // in a clean "unexpected end of file", not an allocation failure.
 std::size_t capped(std::size_t n) { return std::min<std::size_t>(n, std::size_t{1} << 20); }
 
+// More entries than the header declares means the header is wrong, and
+// reading only the declared ones would silently drop part of the mesh.
+void expect_end(TextLines& lines, std::size_t count, const char* what) {
+  if (lines.next_line())
+    lines.fail("more data than the " + std::to_string(count) + " " + what + " the header declares");
+}
+
 }  // namespace
 
 std::string tetgen_base(const std::string& path) {
@@ -76,6 +83,7 @@ int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh)
       mesh.extras.node_markers.push_back(static_cast<int>(marker));
     }
   }
+  expect_end(lines, count, "nodes");
   return static_cast<int>(first);
 }
 
@@ -112,6 +120,7 @@ void read_tetgen_ele(std::istream& in, const std::string& source, int first_inde
       mesh.extras.tet_tags.push_back(static_cast<int>(region));
     }
   }
+  expect_end(lines, count, "tets");
 }
 
 TetMesh read_tetgen(std::istream& node, const std::string& node_source, std::istream& ele,

@@ -29,14 +29,11 @@ def quality_json(path, *extra):
     return json.loads(run("quality", path, "--json", *extra).stdout)
 
 
-def kuhn_lattice(n, jitter=0.2, seed=3):
+def kuhn_lattice(n, jitter=0.15, seed=3):
     """n^3 unit cubes, 6 positively oriented tets each, interior nodes jittered:
     built here, independently of tetsmooth's generator."""
-    rng = np.random.default_rng(seed)
     g = np.arange(n + 1, dtype=float)
     xyz = np.stack(np.meshgrid(g, g, g, indexing="ij"), axis=-1).reshape(-1, 3)
-    interior = np.all((xyz > 0) & (xyz < n), axis=1)
-    xyz[interior] += rng.uniform(-jitter, jitter, size=(interior.sum(), 3))
 
     def node(i, j, k):
         return (i * (n + 1) + j) * (n + 1) + k
@@ -53,9 +50,12 @@ def kuhn_lattice(n, jitter=0.2, seed=3):
                         path.append(node(*c))
                     tets.append(path)
     tets = np.array(tets)
-    if signed_volume6(xyz, tets)[0] < 0:
-        tets[:, [2, 3]] = tets[:, [3, 2]]
-    assert np.all(signed_volume6(xyz, tets) > 0)
+    # Odd permutations of the axes give negatively oriented paths.
+    flip = signed_volume6(xyz, tets) < 0
+    tets[flip] = tets[flip][:, [0, 1, 3, 2]]
+    interior = np.all((xyz > 0) & (xyz < n), axis=1)
+    xyz[interior] += np.random.default_rng(seed).uniform(-jitter, jitter, size=(interior.sum(), 3))
+    assert np.all(signed_volume6(xyz, tets) > 0), "jitter too large: a tet inverted"
     return xyz, tets
 
 

@@ -126,25 +126,50 @@ class IndependentReaders(unittest.TestCase):
     INPUTS = [("meshio41.msh", dict(file_format="gmsh", binary=False)),
               ("meshio41-binary.msh", dict(file_format="gmsh", binary=True)),
               ("meshio22.msh", dict(file_format="gmsh22", binary=False)),
+              ("meshio22-binary.msh", dict(file_format="gmsh22", binary=True)),
               ("meshio-ascii.vtu", dict(binary=False)),
-              ("meshio-zlib.vtu", dict(binary=True)),
+              ("meshio-binary.vtu", dict(binary=True, compression=None)),
               ("meshio.vtk", dict(binary=False)),
               ("meshio.mesh", dict())]
+
+    # Variants tetsmooth may not read. It must then refuse them with a clear
+    # message and exit status 3, never misread them.
+    OPTIONAL_INPUTS = [("meshio-zlib.vtu", dict(binary=True), "compress"),
+                       ("meshio-binary.vtk", dict(binary=True), "binary")]
+
+    def write_with_meshio(self, name, kwargs):
+        src = self.path(name)
+        meshio.write(src, meshio.Mesh(self.xyz, [("tetra", self.tets)]), **kwargs)
+        return src
+
+    def assert_read_faithfully(self, src, quality_proc):
+        q = json.loads(quality_proc.stdout)
+        self.assertEqual(q["input"]["nodes"], len(self.xyz))
+        self.assertEqual(q["input"]["tets"], len(self.tets))
+        self.assertEqual(q["quality"]["inverted"], 0)
+        # Coordinates and tets survive a trip through tetsmooth's reader.
+        back = src + ".back.vtu"
+        run("convert", src, back, "-q")
+        m = meshio.read(back)
+        self.assert_same_mesh(m.points, m.cells_dict["tetra"])
 
     def test_tetsmooth_reads_what_meshio_writes(self):
         for name, kwargs in self.INPUTS:
             with self.subTest(input=name):
-                src = self.path(name)
-                meshio.write(src, meshio.Mesh(self.xyz, [("tetra", self.tets)]), **kwargs)
-                q = json.loads(run("quality", src, "--json").stdout)
-                self.assertEqual(q["input"]["nodes"], len(self.xyz))
-                self.assertEqual(q["input"]["tets"], len(self.tets))
-                self.assertEqual(q["quality"]["inverted"], 0)
-                # Coordinates and tets survive a trip through tetsmooth's reader.
-                back = self.path(name + ".back.vtu")
-                run("convert", src, back, "-q")
-                m = meshio.read(back)
-                self.assert_same_mesh(m.points, m.cells_dict["tetra"])
+                src = self.write_with_meshio(name, kwargs)
+                self.assert_read_faithfully(src, run("quality", src, "--json"))
+
+    def test_unsupported_variants_are_refused_clearly(self):
+        for name, kwargs, reason in self.OPTIONAL_INPUTS:
+            with self.subTest(input=name):
+                src = self.write_with_meshio(name, kwargs)
+                proc = run("quality", src, "--json", check=False)
+                if proc.returncode == 0:
+                    self.assert_read_faithfully(src, proc)
+                    continue
+                self.assertEqual(proc.returncode, 3, proc.stderr)
+                self.assertTrue(proc.stderr.startswith(f"tetsmooth: error: {src}:"), proc.stderr)
+                self.assertIn(reason, proc.stderr)
 
     def test_gmsh_written_mesh(self):
         gmsh, why = gmsh_module()

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs what tetsmooth needs from Debian/Ubuntu packages, skipping what is
+# already there. The CUDA toolkit is optional and not installed here.
+set -euo pipefail
+packages=(cmake g++ make libtet1.5-dev libbenchmark-dev libbenchmark-tools libgtest-dev nlohmann-json3-dev
+          libomp-dev clang libclang-rt-dev python3 python3-pandas python3-matplotlib python3-meshio python3-gmsh
+          python3-scipy git)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo=sudo
+echo "install_deps: installing ${missing[*]}" >&2
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan) and
+# runs each one for a bounded time, seeded from the fixtures in tests/data.
+# Fails if any target finds a crash, a sanitizer report, a leak, an
+# exception other than InputError, a timeout or an out-of-memory input.
+#
+#   scripts/run_fuzzers.sh [target ...]      targets: gmsh medit vtu vtk
+#                                            tetgen_node tetgen_ele tsm (default: all)
+# Environment:
+#   FUZZ_SECONDS    time per target (default 20)
+#   FUZZ_BUILD_DIR  build folder (default build-fuzz); the growing corpus is
+#                   kept in it (fuzz-corpus/<target>), found crashes in
+#                   fuzz-artifacts/<target>/
+#   FUZZ_JOBS       parallel compile jobs (default 2)
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
+seconds=${FUZZ_SECONDS:-20}
+jobs=${FUZZ_JOBS:-2}
+all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm)
+targets=("$@")
+[[ ${#targets[@]} -eq 0 ]] && targets=("${all_targets[@]}")
+
+for t in "${targets[@]}"; do
+  [[ " ${all_targets[*]} " == *" $t "* ]] || { echo "unknown fuzz target '$t' (known: ${all_targets[*]})" >&2; exit 2; }
+done
+
+CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTETSMOOTH_FUZZ=ON -DTETSMOOTH_CUDA=OFF -DTETSMOOTH_TESTS=OFF \
+  -DTETSMOOTH_BENCH=OFF >/dev/null
+cmake --build "$build" --target "${targets[@]/#/fuzz_}" -j "$jobs"
+
+# Seeds: the fixtures of each format (libFuzzer reads every file of a folder).
+seeds=$build/fuzz-seeds
+rm -rf "$seeds"
+seed() {  # seed <target> <fixture globs...>
+  local target=$1
+  shift
+  mkdir -p "$seeds/$target"
+  local f
+  for f in "$@"; do [[ -f $f ]] && cp "$f" "$seeds/$target/"; done
+  return 0
+}
+data=$root/tests/data
+seed gmsh "$data"/gmsh_*.msh
+seed medit "$data"/medit_*.mesh
+seed vtu "$data"/*.vtu
+seed vtk "$data"/*.vtk
+seed tetgen_node "$data"/*.node
+seed tetgen_ele "$data"/*.ele
+# No .tsm fixture is kept (the cache is binary and hashed): write one tet in
+# the layout of mesh/io/tsm_cache.hpp.
+mkdir -p "$seeds/tsm"
+/usr/bin/python3 - "$seeds/tsm/one_tet.tsm" <<'PY'
+import struct, sys
+body = b"\x89TSM\r\n\x1a\n" + struct.pack("<IIQQ", 1, 0, 4, 1)
+body += struct.pack("<12d", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1) + struct.pack("<4i", 0, 1, 2, 3)
+h = 0xcbf29ce484222325
+for b in body:
+    h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
+open(sys.argv[1], "wb").write(body + struct.pack("<Q", h))
+PY
+
+failed=()
+for t in "${targets[@]}"; do
+  corpus=$build/fuzz-corpus/$t
+  artifacts=$build/fuzz-artifacts/$t
+  mkdir -p "$corpus" "$artifacts"
+  dict=()
+  [[ -f $root/tests/fuzz/$t.dict ]] && dict=(-dict="$root/tests/fuzz/$t.dict")
+  echo "== fuzz_$t for ${seconds} s"
+  # -malloc_limit_mb: a corrupt count must never turn into a huge allocation.
+  if ! "$build/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 \
+    -print_final_stats=1 -artifact_prefix="$artifacts/" "${dict[@]}" "$corpus" "$seeds/$t" \
+    >"$build/fuzz-$t.log" 2>&1; then
+    failed+=("$t")
+    tail -n 40 "$build/fuzz-$t.log"
+  else
+    grep -E "^stat::number_of_executed_units|^#[0-9]+.*DONE" "$build/fuzz-$t.log" | tail -n 2 || true
+  fi
+done
+
+if [[ ${#failed[@]} -gt 0 ]]; then
+  echo "fuzzing found problems in: ${failed[*]} (inputs in $build/fuzz-artifacts/, logs in $build/fuzz-*.log)" >&2
+  exit 1
+fi
+echo "all fuzz targets ran ${seconds} s without a finding"

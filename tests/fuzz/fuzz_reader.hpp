@@ -1,0 +1,37 @@
+#pragma once
+// Shared by the libFuzzer targets: feeds the fuzzer's bytes to a reader as a
+// stream. A reader must turn any bad input into InputError; every other
+// outcome (another exception, a crash, a sanitizer report, a broken round
+// trip) is a bug and escapes to libFuzzer, which saves the input.
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::fuzz {
+
+template <class Read>
+int run_reader(const std::uint8_t* data, std::size_t size, Read read) {
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  try {
+    read(in);
+  } catch (const InputError&) {
+    // The expected answer to bad input.
+  }
+  return 0;
+}
+
+// A mesh that was read must read back the same after writing.
+inline void require_same(const TetMesh& again, const TetMesh& mesh, const char* what) {
+  if (again.xyz != mesh.xyz || again.tets != mesh.tets || again.fixed != mesh.fixed) {
+    std::fprintf(stderr, "round trip through %s changed the mesh\n", what);
+    std::abort();
+  }
+}
+
+}  // namespace tetsmooth::fuzz

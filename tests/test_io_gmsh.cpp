@@ -1,0 +1,383 @@
+// Gmsh MSH 4.1 (ASCII, binary) and 2.2: sparse tags, entities and physical
+// groups, pass-through elements, exact round trips of every flavour, files
+// written by the real Gmsh, and errors that name file:line or file, byte N.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/gmsh_io.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TetMesh read_text(const std::string& text, const std::string& name = "t.msh") {
+  std::istringstream in(text);
+  return read_gmsh(in, name);
+}
+
+std::string write_text(const TetMesh& mesh, MshFlavour flavour, const MeshFields& fields = {}) {
+  std::ostringstream out;
+  write_gmsh(mesh, out, flavour, fields);
+  return out.str();
+}
+
+// The InputError message from reading `text` as t.msh.
+std::string read_error(const std::string& text) {
+  try {
+    read_text(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "read_gmsh accepted:\n" << text;
+  return "";
+}
+
+const std::string* raw_section(const TetMesh& mesh, const std::string& name) {
+  for (const auto& [key, body] : mesh.extras.raw_sections)
+    if (key == name) return &body;
+  return nullptr;
+}
+
+void expect_same_blocks(const TetMesh& a, const TetMesh& b) {
+  ASSERT_EQ(a.extras.blocks.size(), b.extras.blocks.size());
+  for (std::size_t i = 0; i < a.extras.blocks.size(); ++i) {
+    const PassThroughBlock &x = a.extras.blocks[i], &y = b.extras.blocks[i];
+    EXPECT_EQ(x.kind, y.kind);
+    EXPECT_EQ(x.connectivity, y.connectivity) << x.kind;
+    EXPECT_EQ(x.tags, y.tags) << x.kind;
+    EXPECT_EQ(x.entity_tags, y.entity_tags) << x.kind;
+  }
+}
+
+// 1 block of 4 nodes (lines 5-14), one tet (lines 17-19).
+const char* kMinimal =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$Nodes\n1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n$EndNodes\n"
+    "$Elements\n1 1 1 1\n3 1 4 1\n1 1 2 3 4\n$EndElements\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+TEST(GmshIo, ReadsSparseTagsEntitiesPhysicalsAndPassThroughElements) {
+  const std::string path = testing::data_path("gmsh_sparse41.msh");
+  const TetMesh mesh = read_gmsh_file(path);
+  // File order of the nodes: D(42) B(20) C(30) A(10) E(57).
+  ASSERT_EQ(mesh.num_nodes(), 5u);
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{42, 20, 30, 10, 57}));
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, 0, 0.3, 0.3, -1}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{3, 1, 2, 0, 3, 2, 1, 4}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 8}));
+  EXPECT_EQ(mesh.extras.node_entity_dims, (std::vector<int>{0, 2, 2, 3, 3}));
+  EXPECT_EQ(mesh.extras.node_entity_tags, (std::vector<int>{1, 5, 5, 1, 2}));
+
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  const PassThroughBlock& point = mesh.extras.blocks[0];
+  EXPECT_EQ(point.kind, "vertex");
+  EXPECT_EQ(point.connectivity, (std::vector<index_t>{0}));
+  EXPECT_EQ(point.tags, (std::vector<int>{9}));
+  const PassThroughBlock& tris = mesh.extras.blocks[1];
+  EXPECT_EQ(tris.kind, "triangle");
+  EXPECT_EQ(tris.nodes_per_element, 3);
+  EXPECT_EQ(tris.connectivity, (std::vector<index_t>{1, 2, 0, 2, 1, 4}));
+  EXPECT_EQ(tris.tags, (std::vector<int>{3, 3}));
+  EXPECT_EQ(tris.entity_tags, (std::vector<int>{5, 5}));
+  // Only A, the node of no point or triangle, may move.
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 1}));
+
+  // Both sections are kept word for word; $Comments is skipped.
+  const std::string file = slurp(path);
+  ASSERT_NE(raw_section(mesh, "$Entities"), nullptr);
+  ASSERT_NE(raw_section(mesh, "$PhysicalNames"), nullptr);
+  EXPECT_NE(file.find("$Entities\n" + *raw_section(mesh, "$Entities") + "$EndEntities"), std::string::npos);
+  EXPECT_NE(file.find("$PhysicalNames\n" + *raw_section(mesh, "$PhysicalNames") + "$EndPhysicalNames"),
+            std::string::npos);
+}
+
+TEST(GmshIo, ReadsMsh22WithPhysicalAndElementaryTags) {
+  const TetMesh mesh = read_gmsh_file(testing::data_path("gmsh_bipyramid22.msh"));
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{10, 20, 30, 42, 57}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 2, 1, 4}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 2}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "vertex");
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{0}));
+  EXPECT_EQ(mesh.extras.blocks[1].tags, (std::vector<int>{3, 3}));
+  EXPECT_EQ(mesh.extras.blocks[1].entity_tags, (std::vector<int>{5, 5}));
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{0, 1, 1, 1, 1}));
+  EXPECT_TRUE(mesh.extras.node_entity_dims.empty());
+  EXPECT_NE(raw_section(mesh, "$PhysicalNames"), nullptr);
+}
+
+// Files written by Gmsh 4 itself (tests/data/gmsh_box_make.py): the binary
+// and ASCII encodings of one mesh read the same, up to the 16 significant
+// digits of Gmsh's ASCII output.
+TEST(GmshIo, ReadsFilesWrittenByGmsh) {
+  const TetMesh ascii = read_gmsh_file(testing::data_path("gmsh_box_ascii41.msh"));
+  const TetMesh binary = read_gmsh_file(testing::data_path("gmsh_box_binary41.msh"));
+  const TetMesh binary22 = read_gmsh_file(testing::data_path("gmsh_box_binary22.msh"));
+  ASSERT_GT(ascii.num_tets(), 0u);
+  for (const TetMesh* other : {&binary, &binary22}) {
+    EXPECT_EQ(other->tets, ascii.tets);
+    EXPECT_EQ(other->extras.node_tags, ascii.extras.node_tags);
+    EXPECT_EQ(other->extras.tet_tags, ascii.extras.tet_tags);
+    EXPECT_EQ(other->fixed, ascii.fixed);
+    ASSERT_EQ(other->xyz.size(), ascii.xyz.size());
+    for (std::size_t i = 0; i < ascii.xyz.size(); ++i) EXPECT_NEAR(other->xyz[i], ascii.xyz[i], 1e-15);
+  }
+  EXPECT_EQ(ascii.extras.tet_tags, std::vector<int>(ascii.num_tets(), 7));
+  ASSERT_EQ(ascii.extras.blocks.size(), 1u);
+  EXPECT_EQ(ascii.extras.blocks[0].kind, "triangle");
+  EXPECT_EQ(ascii.extras.blocks[0].tags, std::vector<int>(ascii.extras.blocks[0].tags.size(), 3));
+  EXPECT_EQ(binary.extras.node_entity_tags, ascii.extras.node_entity_tags);
+  EXPECT_EQ(*raw_section(binary, "$PhysicalNames"), *raw_section(ascii, "$PhysicalNames"));
+}
+
+class GmshRoundTrip : public ::testing::TestWithParam<MshFlavour> {};
+
+TEST_P(GmshRoundTrip, KeepsTagsEntitiesPhysicalsAndBlocks) {
+  const TetMesh mesh = read_gmsh_file(testing::data_path("gmsh_sparse41.msh"));
+  const TetMesh back = read_text(write_text(mesh, GetParam()));
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_entity_tags);
+  EXPECT_EQ(back.fixed, mesh.fixed);
+  expect_same_blocks(back, mesh);
+  ASSERT_NE(raw_section(back, "$PhysicalNames"), nullptr);
+  EXPECT_EQ(*raw_section(back, "$PhysicalNames"), *raw_section(mesh, "$PhysicalNames"));
+  if (GetParam() != MshFlavour::V22Ascii) {
+    EXPECT_EQ(back.extras.node_entity_dims, mesh.extras.node_entity_dims);
+    EXPECT_EQ(back.extras.node_entity_tags, mesh.extras.node_entity_tags);
+    ASSERT_NE(raw_section(back, "$Entities"), nullptr);
+    // The fixture's numbers are written the shortest way, so even the
+    // re-encoded binary entities read back as the same text.
+    EXPECT_EQ(*raw_section(back, "$Entities"), *raw_section(mesh, "$Entities"));
+  }
+}
+
+TEST_P(GmshRoundTrip, CoordinatesAreExact) {
+  const TetMesh mesh = testing::cube_grid(3, 0.3);  // jittered: full mantissas
+  const TetMesh back = read_text(write_text(mesh, GetParam()));
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+  std::vector<long long> one_to_n(mesh.num_nodes());
+  for (std::size_t i = 0; i < one_to_n.size(); ++i) one_to_n[i] = static_cast<long long>(i) + 1;
+  EXPECT_EQ(back.extras.node_tags, one_to_n);
+  EXPECT_EQ(back.extras.tet_entity_tags, std::vector<int>(mesh.num_tets(), 1));
+  EXPECT_TRUE(back.extras.blocks.empty());
+}
+
+// A mesh from elsewhere: region attributes become physical groups (one
+// volume entity each), and a triangle block gets a surface entity.
+TEST_P(GmshRoundTrip, RegionTagsAndForeignBlocksBecomeEntities) {
+  TetMesh mesh = testing::cube_with_centre();
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) mesh.extras.tet_tags.push_back(t < 6 ? 4 : 9);
+  PassThroughBlock tris;
+  tris.kind = "triangle";
+  tris.nodes_per_element = 3;
+  tris.connectivity = {0, 2, 3, 0, 3, 1};
+  tris.tags = {2, 2};
+  mesh.extras.blocks.push_back(tris);
+  const TetMesh back = read_text(write_text(mesh, GetParam()));
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_tags);
+  ASSERT_EQ(back.extras.blocks.size(), 1u);
+  EXPECT_EQ(back.extras.blocks[0].connectivity, tris.connectivity);
+  EXPECT_EQ(back.extras.blocks[0].tags, tris.tags);
+  EXPECT_EQ(back.fixed, (std::vector<std::uint8_t>{1, 1, 1, 1, 0, 0, 0, 0, 0}));
+}
+
+TEST_P(GmshRoundTrip, FieldsAreWrittenAndSkippedOnReading) {
+  const TetMesh mesh = read_gmsh_file(testing::data_path("gmsh_sparse41.msh"));
+  MeshFields fields;
+  fields.node_scalars.push_back({"displacement", {0.5, 1.5, 2.5, 3.5, 4.5}});
+  fields.tet_scalars.push_back({"quality \"q\"", {0.25, 0.75}});
+  const std::string text = write_text(mesh, GetParam(), fields);
+  EXPECT_NE(text.find("$NodeData\n1\n\"displacement\"\n1\n0\n3\n0\n1\n5\n"), std::string::npos);
+  // All 5 elements get a value: NaN for the point and the triangles.
+  EXPECT_NE(text.find("$ElementData\n1\n\"quality 'q'\"\n1\n0\n3\n0\n1\n5\n"), std::string::npos);
+  if (GetParam() != MshFlavour::V41Binary) {
+    EXPECT_NE(text.find("\n42 0.5\n20 1.5\n"), std::string::npos);
+    EXPECT_NE(text.find("\n1 0.25\n2 0.75\n3 nan\n"), std::string::npos);
+  }
+  EXPECT_EQ(read_text(text).xyz, mesh.xyz);
+}
+
+INSTANTIATE_TEST_SUITE_P(Flavours, GmshRoundTrip,
+                         ::testing::Values(MshFlavour::V41Ascii, MshFlavour::V41Binary, MshFlavour::V22Ascii),
+                         [](const ::testing::TestParamInfo<MshFlavour>& p) {
+                           switch (p.param) {
+                             case MshFlavour::V41Ascii: return std::string("V41Ascii");
+                             case MshFlavour::V41Binary: return std::string("V41Binary");
+                             case MshFlavour::V22Ascii: return std::string("V22Ascii");
+                           }
+                           return std::string("unknown");
+                         });
+
+TEST(GmshIo, HugeSparseNodeTagsAreKept) {
+  std::string text = kMinimal;
+  text = replaced(text, "1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n", "1 4 7 1000000000000\n3 1 0 4\n1000000000000\n7\n3\n4\n");
+  text = replaced(text, "1 1 2 3 4\n", "1 1000000000000 7 3 4\n");
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{1000000000000, 7, 3, 4}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
+  EXPECT_EQ(read_text(write_text(mesh, MshFlavour::V41Binary)).extras.node_tags, mesh.extras.node_tags);
+}
+
+// A file written on a machine of the other byte order.
+TEST(GmshIo, ReadsBinaryOfTheOtherByteOrder) {
+  std::string s = "$MeshFormat\n4.1 1 8\n";
+  const auto swapped = [&](const void* p, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) s += static_cast<const char*>(p)[n - 1 - i];
+  };
+  const auto u64 = [&](std::uint64_t v) { swapped(&v, 8); };
+  const auto i32 = [&](std::int32_t v) { swapped(&v, 4); };
+  const auto f64 = [&](double v) { swapped(&v, 8); };
+  i32(1);
+  s += "\n$EndMeshFormat\n$Nodes\n";
+  for (std::uint64_t v : {1, 4, 1, 4}) u64(v);
+  i32(3), i32(1), i32(0), u64(4);
+  for (std::uint64_t tag = 1; tag <= 4; ++tag) u64(tag);
+  for (double v : {0.0, 0.0, 0.0, 1.5, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}) f64(v);
+  s += "\n$EndNodes\n$Elements\n";
+  for (std::uint64_t v : {1, 1, 1, 1}) u64(v);
+  i32(3), i32(1), i32(4), u64(1);
+  for (std::uint64_t v : {1, 1, 2, 3, 4}) u64(v);
+  s += "\n$EndElements\n";
+  const TetMesh mesh = read_text(s);
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1.5, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
+}
+
+struct BadText {
+  const char* from;
+  const char* to;
+  const char* where;
+  const char* what;
+};
+
+TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
+  const BadText cases[] = {
+      {"3 1 4 1\n1 1 2 3 4\n", "3 1 11 1\n1 1 2 3 4 1 2 3 4 1 2\n", "t.msh:18:",
+       "unsupported element type 11 (10-node tetrahedron)"},
+      {"1 1 2 3 4\n", "1 1 2 3 9\n", "t.msh:19:", "node tag 9, which is not in $Nodes"},
+      {"1 0 0\n", "nan 0 0\n", "t.msh:12:", "non-finite node coordinate"},
+      {"1 4 1 4\n", "1 5 1 5\n", "t.msh:14:", "hold 4 nodes, not the 5 announced"},
+      {"1 1 2 3 4\n", "1 1 2 3 4 4\n", "t.msh:19:", "expected $EndElements, found '4'"},
+      {"\n2\n3\n", "\n2\n2\n", "t.msh:", "node tag 2 occurs twice"},
+      {"3 1 4 1\n1 1 2 3 4\n", "2 1 2 1\n1 1 2 3\n", "t.msh:20:", "no tetrahedra"},
+      {"$Elements\n", "garbage\n$Elements\n", "t.msh:16:", "expected a section such as $Nodes, found 'garbage'"},
+      {"4.1 0 8", "4.0 0 8", "t.msh:2:", "unsupported MSH version '4.0'"},
+      {"$EndElements\n", "", "t.msh:19:", "unexpected end of file, expected $EndElements"},
+      {"3 1 0 4\n", "3 1 0 5\n", "t.msh:", "more nodes than the 4 announced"},
+      {"$MeshFormat\n", "$MeshFormatt\n", "t.msh:1:", "not a Gmsh MSH file"},
+  };
+  for (const BadText& c : cases) {
+    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+  const std::string truncated = read_error(std::string(kMinimal).substr(0, std::string(kMinimal).find("1 0 0\n")));
+  EXPECT_NE(truncated.find("t.msh:11: unexpected end of file, expected node coordinate"), std::string::npos)
+      << truncated;
+  const std::string swapped = read_error(std::string(kMinimal).substr(std::string(kMinimal).find("$Elements")) +
+                                         std::string(kMinimal).substr(0, std::string(kMinimal).find("$Elements")));
+  EXPECT_NE(swapped.find("not a Gmsh MSH file"), std::string::npos) << swapped;
+}
+
+// The byte offset in "t.msh, byte N: ...", or npos.
+std::size_t offset_in(const std::string& message) {
+  const std::size_t at = message.find("t.msh, byte ");
+  return at == std::string::npos ? at : std::stoul(message.substr(at + 12));
+}
+
+TEST(GmshIo, BadBinaryInputNamesFileAndByteOffset) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.xyz[4] = 12345.678;  // a value to find in the bytes
+  const std::string good = write_text(mesh, MshFlavour::V41Binary);
+  // (After $Nodes: the entity bounding box holds the value too.)
+  const std::size_t coordinate =
+      good.find(std::string(reinterpret_cast<const char*>(&mesh.xyz[4]), 8), good.find("$Nodes\n"));
+  ASSERT_NE(coordinate, std::string::npos);
+
+  // Cut inside the coordinates: the block header already announces more
+  // nodes than the bytes left can hold.
+  const std::string truncated = read_error(good.substr(0, coordinate + 3));
+  EXPECT_NE(truncated.find("(truncated or corrupt count)"), std::string::npos) << truncated;
+  EXPECT_LT(offset_in(truncated), coordinate);
+  const std::string unfinished = read_error(good.substr(0, good.rfind("$EndElements")));
+  EXPECT_NE(unfinished.find("unexpected end of file, expected $EndElements"), std::string::npos) << unfinished;
+  EXPECT_EQ(offset_in(unfinished), good.rfind("$EndElements"));
+
+  std::string nan = good;
+  const double q = std::numeric_limits<double>::quiet_NaN();
+  nan.replace(coordinate, 8, reinterpret_cast<const char*>(&q), 8);
+  const std::string not_finite = read_error(nan);
+  EXPECT_NE(not_finite.find("non-finite node coordinate"), std::string::npos) << not_finite;
+  EXPECT_EQ(offset_in(not_finite), coordinate);
+
+  // A corrupt count of node blocks must be refused, not allocated.
+  std::string huge = good;
+  const std::size_t count = huge.find("$Nodes\n") + 7;
+  const std::uint64_t lots = std::uint64_t{1} << 60;
+  huge.replace(count, 8, reinterpret_cast<const char*>(&lots), 8);
+  const std::string refused = read_error(huge);
+  EXPECT_NE(refused.find("cannot fit in the"), std::string::npos) << refused;
+  EXPECT_NE(offset_in(refused), std::string::npos) << refused;
+
+  std::string order = good;
+  order[good.find("8\n") + 2] = 7;
+  EXPECT_NE(read_error(order).find("byte-order integer"), std::string::npos);
+}
+
+TEST(GmshIo, WriterRefusesWhatMshCannotHold) {
+  TetMesh mesh = testing::regular_tet();
+  MeshFields fields;
+  fields.tet_scalars.push_back({"short", {}});
+  EXPECT_THROW(write_text(mesh, MshFlavour::V41Ascii, fields), std::invalid_argument);
+  PassThroughBlock polygon;
+  polygon.kind = "polygon";
+  polygon.nodes_per_element = 5;
+  polygon.connectivity = {0, 1, 2, 3, 0};
+  mesh.extras.blocks.push_back(polygon);
+  EXPECT_THROW(write_text(mesh, MshFlavour::V22Ascii), OutputError);
+}
+
+TEST(GmshIo, FileWriterReplacesTargetOrThrows) {
+  const auto dir = std::filesystem::temp_directory_path() / "tetsmooth_gmsh_io";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "out.msh").string();
+  const TetMesh mesh = testing::cube_grid(2);
+  write_gmsh_file(mesh, path, MshFlavour::V41Binary, {});
+  EXPECT_EQ(read_gmsh_file(path).xyz, mesh.xyz);
+  EXPECT_THROW(write_gmsh_file(mesh, (dir / "missing" / "out.msh").string(), MshFlavour::V41Ascii, {}),
+               OutputError);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tetsmooth

@@ -1,0 +1,174 @@
+// Medit .mesh: references, pass-through elements, RequiredVertices and
+// Corners as fixed nodes, exact round trips, and errors naming file:line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/gmsh_io.hpp"
+#include "mesh/io/medit_io.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+TetMesh read_text(const std::string& text) {
+  std::istringstream in(text);
+  return read_medit(in, "t.mesh");
+}
+
+std::string write_text(const TetMesh& mesh) {
+  std::ostringstream out;
+  write_medit(mesh, out);
+  return out.str();
+}
+
+std::string read_error(const std::string& text) {
+  try {
+    read_text(text);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "read_medit accepted:\n" << text;
+  return "";
+}
+
+// Lines 3-8 the vertices, 9-11 the tet, 12 End.
+const char* kMinimal =
+    "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+    "Tetrahedra\n1\n1 2 3 4 0\nEnd\n";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+TEST(MeditIo, ReadsReferencesBlocksAndPinnedVertices) {
+  const TetMesh mesh = read_medit_file(testing::data_path("medit_bipyramid.mesh"));
+  ASSERT_EQ(mesh.num_nodes(), 5u);
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.3, 0.3, -1}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 2, 1, 4}));
+  EXPECT_EQ(mesh.extras.node_markers, (std::vector<int>{0, 1, 1, 2, 0}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 8}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");  // spelt "triangles" in the file
+  EXPECT_EQ(mesh.extras.blocks[0].connectivity, (std::vector<index_t>{1, 2, 3}));
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{3}));
+  EXPECT_EQ(mesh.extras.blocks[1].kind, "line");
+  EXPECT_EQ(mesh.extras.blocks[1].connectivity, (std::vector<index_t>{1, 2}));
+  EXPECT_EQ(mesh.extras.corner_nodes, (std::vector<std::int32_t>{3}));
+  EXPECT_EQ(mesh.extras.required_nodes, (std::vector<std::int32_t>{4}));
+  // Node 4 is pinned only by RequiredVertices, node 3 by the triangle and
+  // the corner; node 0 is free.
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{0, 1, 1, 1, 1}));
+  ASSERT_EQ(mesh.extras.raw_sections.size(), 1u);
+  EXPECT_EQ(mesh.extras.raw_sections[0], (std::pair<std::string, std::string>{"Ridges", "1\n1\n"}));
+}
+
+TEST(MeditIo, RoundTripKeepsEverything) {
+  const TetMesh mesh = read_medit_file(testing::data_path("medit_bipyramid.mesh"));
+  const TetMesh back = read_text(write_text(mesh));
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.node_markers, mesh.extras.node_markers);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  EXPECT_EQ(back.extras.corner_nodes, mesh.extras.corner_nodes);
+  EXPECT_EQ(back.extras.required_nodes, mesh.extras.required_nodes);
+  EXPECT_EQ(back.extras.raw_sections, mesh.extras.raw_sections);
+  EXPECT_EQ(back.fixed, mesh.fixed);
+  ASSERT_EQ(back.extras.blocks.size(), mesh.extras.blocks.size());
+  for (std::size_t i = 0; i < mesh.extras.blocks.size(); ++i) {
+    EXPECT_EQ(back.extras.blocks[i].kind, mesh.extras.blocks[i].kind);
+    EXPECT_EQ(back.extras.blocks[i].connectivity, mesh.extras.blocks[i].connectivity);
+    EXPECT_EQ(back.extras.blocks[i].tags, mesh.extras.blocks[i].tags);
+  }
+}
+
+TEST(MeditIo, CoordinatesRoundTripExactly) {
+  const TetMesh mesh = testing::cube_grid(3, 0.3);  // jittered: full mantissas
+  const TetMesh back = read_text(write_text(mesh));
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.node_markers, std::vector<int>(mesh.num_nodes(), 0));
+  EXPECT_EQ(back.extras.tet_tags, std::vector<int>(mesh.num_tets(), 0));
+  EXPECT_TRUE(back.fixed.empty()) << "no node is pinned";
+}
+
+// Medit has no point elements: Gmsh points become RequiredVertices, so
+// they stay pinned; physical tags become references.
+TEST(MeditIo, GmshPointsBecomeRequiredVertices) {
+  const TetMesh gmsh = read_gmsh_file(testing::data_path("gmsh_sparse41.msh"));
+  const TetMesh back = read_text(write_text(gmsh));
+  EXPECT_EQ(back.xyz, gmsh.xyz);
+  EXPECT_EQ(back.tets, gmsh.tets);
+  EXPECT_EQ(back.extras.tet_tags, gmsh.extras.tet_tags);
+  EXPECT_EQ(back.extras.required_nodes, (std::vector<std::int32_t>{0}));
+  ASSERT_EQ(back.extras.blocks.size(), 1u);
+  EXPECT_EQ(back.extras.blocks[0].connectivity, gmsh.extras.blocks[1].connectivity);
+  EXPECT_EQ(back.extras.blocks[0].tags, gmsh.extras.blocks[1].tags);
+  EXPECT_EQ(back.fixed, gmsh.fixed);
+}
+
+struct BadText {
+  const char* from;
+  const char* to;
+  const char* where;
+  const char* what;
+};
+
+TEST(MeditIo, BadInputNamesFileAndLine) {
+  const BadText cases[] = {
+      {"1 2 3 4 0\n", "1 2 3 5 0\n", "t.mesh:11:", "vertex index 5 is outside 1..4"},
+      {"1 2 3 4 0\n", "0 2 3 4 0\n", "t.mesh:11:", "vertex index 0 is outside 1..4"},
+      {"1 0 0 0\n", "nan 0 0 0\n", "t.mesh:6:", "non-finite vertex coordinate"},
+      {"0 1 0 0\n", "0 inf 0 0\n", "t.mesh:7:", "non-finite vertex coordinate"},
+      {"End\n", "Foo 1\nEnd\n", "t.mesh:12:", "unknown or unsupported Medit keyword 'Foo'"},
+      {"Vertices\n4\n", "Vertices\n3\n", "t.mesh:8:", "unexpected number '0' where a keyword belongs"},
+      {"Tetrahedra\n1\n", "Tetrahedra\n2\n", "t.mesh:12:", "expected an integer vertex index, found 'End'"},
+      {"Tetrahedra\n1\n1 2 3 4 0\n", "Tetrahedra\n0\n", "t.mesh:11:", "no Tetrahedra"},
+      {"Dimension 3", "Dimension 2", "t.mesh:2:", "only 3-D meshes are read"},
+      {"MeshVersionFormatted 2", "MeshVersionFormatted 9", "t.mesh:1:", "unsupported MeshVersionFormatted 9"},
+      {"MeshVersionFormatted 2\n", "Vertices\n", "t.mesh:1:", "not a Medit mesh"},
+      {"Vertices\n4\n", "Tetrahedra\n1\n1 2 3 4 0\nVertices\n4\n", "t.mesh:3:", "Tetrahedra before Vertices"},
+      {"End\n", "Vertices 0\nEnd\n", "t.mesh:12:", "a second Vertices section"},
+      {"1 2 3 4 0\n", "1 2 3 4 0.5\n", "t.mesh:11:", "expected an integer tetrahedron reference, found '0.5'"},
+  };
+  for (const BadText& c : cases) {
+    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+  const std::string text = kMinimal;
+  const std::string truncated = read_error(text.substr(0, text.find("1 2 3 4 0")));
+  EXPECT_NE(truncated.find("t.mesh:10: unexpected end of file, expected vertex index"), std::string::npos)
+      << truncated;
+}
+
+TEST(MeditIo, WriterRefusesWhatMeditCannotHold) {
+  TetMesh mesh = testing::regular_tet();
+  PassThroughBlock polygon;
+  polygon.kind = "polygon";
+  polygon.nodes_per_element = 5;
+  polygon.connectivity = {0, 1, 2, 3, 0};
+  mesh.extras.blocks.push_back(polygon);
+  EXPECT_THROW(write_text(mesh), OutputError);
+  EXPECT_THROW(write_text(TetMesh{}), OutputError);
+}
+
+TEST(MeditIo, FileWriterReplacesTargetOrThrows) {
+  const auto dir = std::filesystem::temp_directory_path() / "tetsmooth_medit_io";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const TetMesh mesh = testing::cube_grid(2);
+  const std::string path = (dir / "out.mesh").string();
+  write_medit_file(mesh, path);
+  EXPECT_EQ(read_medit_file(path).xyz, mesh.xyz);
+  EXPECT_THROW(write_medit_file(mesh, (dir / "missing" / "out.mesh").string()), OutputError);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tetsmooth

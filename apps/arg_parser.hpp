@@ -11,8 +11,8 @@
 namespace tetsmooth::cli {
 
 struct OptionSpec {
-  std::string name;      // long name without the dashes, e.g. "max-iter"
-  char short_name = 0;   // e.g. 'o'; 0 for none
+  std::string name;     // long name without the dashes, e.g. "max-iter"
+  char short_name = 0;  // e.g. 'o'; 0 for none
   bool takes_value = false;
 };
 

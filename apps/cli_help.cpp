@@ -12,7 +12,8 @@ namespace {
 const char* const kExitCodes = R"(Exit status:
   0  success
   1  internal error (a bug, or out of memory)
-  2  usage error: unknown option, bad value, options that do not fit together
+  2  usage error: unknown command or option, bad value, unknown file extension
+     or model name
   3  bad input: unreadable or malformed mesh file, invalid mesh
      (node index out of range, non-finite coordinate, no tets)
   4  output error: an output file or report cannot be written
@@ -24,8 +25,9 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
   .node/.ele  tetgen        TetGen node + element files (give either name, or the base name)
   .vtu        vtu           VTK XML UnstructuredGrid
   .vtk        vtk           legacy VTK, ASCII
-  .msh        msh41         Gmsh 4.1 ASCII (reading accepts 2.2 and 4.1, ASCII or binary)
-              msh41-binary  Gmsh 4.1 binary      msh22  Gmsh 2.2 ASCII
+  .msh        msh41         Gmsh 4.1 ASCII (reading detects 2.2 or 4.1, ASCII or binary)
+              msh41-binary  Gmsh 4.1 binary
+              msh22         Gmsh 2.2 ASCII
   .mesh       medit         Medit ASCII
   .tsm        tsm           tetsmooth binary cache
 )";
@@ -52,7 +54,8 @@ the geometry and the boundary surface are unchanged. Quality is the radius
 ratio q = 3 r_in / R: 1 for the regular tet, near 0 for a sliver, negative for
 an inverted tet. Reports and messages go to stderr; `quality` writes to stdout.
 
-)") + kFormats + "\n" + kExitCodes;
+)") + kFormats +
+         "\n" + kExitCodes;
 }
 
 std::string generate_help() {
@@ -89,7 +92,8 @@ Options:
   --strategy coloured|multiblock|singleblock
                             CUDA: how sweeps are launched (default coloured)
   --layout aos|soa          CUDA: coordinates as xyz triples or three arrays (default aos)
-  --precision float|double  arithmetic of the smoother (default double)
+  --precision float|double  CUDA: arithmetic of the smoother; the CPU always uses double
+                            (default double)
   --max-iter N              at most N sweeps (default 100)
   --tol X                   stop when no node moves farther than X times the mean edge
                             length in a sweep (default 1e-4)
@@ -101,7 +105,8 @@ Options:
 VTU, VTK and MSH outputs carry a per-tet field "quality" (radius ratio) and a
 per-node field "boundary" (1 on the boundary surface) for ParaView or Gmsh.
 
-)") + kFormats + "\n" + kExitCodes;
+)") + kFormats +
+         "\n" + kExitCodes;
 }
 
 std::string quality_help() {
@@ -133,7 +138,8 @@ Options:
   --output-format F   write OUT as format F
   -q, --quiet         print nothing but errors
 
-)") + kFormats + "\n" + kExitCodes;
+)") + kFormats +
+         "\n" + kExitCodes;
 }
 
 }  // namespace

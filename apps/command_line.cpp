@@ -47,10 +47,21 @@ GenerateCommand parse_generate(const std::vector<std::string>& args) {
 
 SmoothCommand parse_smooth(const std::vector<std::string>& args) {
   const ParsedArgs p = parse_args(args,
-                                  {kHelp, kQuiet, kOutput, kFormat, kOutputFormat, {"method", 0, true},
-                                   {"form", 0, true}, {"strategy", 0, true}, {"layout", 0, true},
-                                   {"device", 0, true}, {"threads", 0, true}, {"precision", 0, true},
-                                   {"max-iter", 0, true}, {"tol", 0, true}, {"report", 0, true}},
+                                  {kHelp,
+                                   kQuiet,
+                                   kOutput,
+                                   kFormat,
+                                   kOutputFormat,
+                                   {"method", 0, true},
+                                   {"form", 0, true},
+                                   {"strategy", 0, true},
+                                   {"layout", 0, true},
+                                   {"device", 0, true},
+                                   {"threads", 0, true},
+                                   {"precision", 0, true},
+                                   {"max-iter", 0, true},
+                                   {"tol", 0, true},
+                                   {"report", 0, true}},
                                   "smooth");
   expect_positionals(p, 1, "input mesh IN", "smooth");
   SmoothCommand c;
@@ -66,8 +77,7 @@ SmoothCommand parse_smooth(const std::vector<std::string>& args) {
   if (p.has("device")) c.device = parse_device("--device", p.value("device"));
   if (p.has("threads")) c.options.threads = parse_int_option("--threads", p.value("threads"), 0, 4096);
   if (p.has("precision")) c.options.precision = parse_precision("--precision", p.value("precision"));
-  if (p.has("max-iter"))
-    c.options.max_iterations = parse_int_option("--max-iter", p.value("max-iter"), 1, INT_MAX);
+  if (p.has("max-iter")) c.options.max_iterations = parse_int_option("--max-iter", p.value("max-iter"), 1, INT_MAX);
   if (p.has("tol")) c.options.tolerance = parse_nonnegative_option("--tol", p.value("tol"));
   if (p.has("report")) {
     c.report_path = p.value("report");
@@ -85,8 +95,7 @@ SmoothCommand parse_smooth(const std::vector<std::string>& args) {
 }
 
 QualityCommand parse_quality(const std::vector<std::string>& args) {
-  const ParsedArgs p =
-      parse_args(args, {kHelp, kQuiet, kFormat, {"json", 0, false}, {"worst", 0, true}}, "quality");
+  const ParsedArgs p = parse_args(args, {kHelp, kQuiet, kFormat, {"json", 0, false}, {"worst", 0, true}}, "quality");
   expect_positionals(p, 1, "input mesh IN", "quality");
   QualityCommand c;
   c.input = p.positionals[0];

@@ -7,8 +7,7 @@
 namespace tetsmooth::cli {
 namespace {
 
-constexpr std::pair<const char*, Method> kMethods[] = {{"adaptive", Method::Adaptive},
-                                                       {"ordinary", Method::Ordinary}};
+constexpr std::pair<const char*, Method> kMethods[] = {{"adaptive", Method::Adaptive}, {"ordinary", Method::Ordinary}};
 constexpr std::pair<const char*, Form> kForms[] = {{"A", Form::A}, {"B", Form::B}};
 constexpr std::pair<const char*, Strategy> kStrategies[] = {
     {"coloured", Strategy::Coloured}, {"multiblock", Strategy::MultiBlock}, {"singleblock", Strategy::SingleBlock}};
@@ -21,8 +20,7 @@ constexpr std::pair<const char*, Ordering> kOrderings[] = {{"natural", Ordering:
                                                            {"coloured", Ordering::Coloured}};
 
 template <class Enum, std::size_t N>
-Enum parse_name(const std::pair<const char*, Enum> (&table)[N], const std::string& option,
-                const std::string& text) {
+Enum parse_name(const std::pair<const char*, Enum> (&table)[N], const std::string& option, const std::string& text) {
   std::string accepted;
   for (const auto& [name, value] : table) {
     if (text == name) return value;

@@ -11,10 +11,8 @@ bool format_carries_fields(MeshFormat format) {
     case MeshFormat::Vtk:
     case MeshFormat::Msh41:
     case MeshFormat::Msh41Binary:
-    case MeshFormat::Msh22:
-      return true;
-    default:
-      return false;
+    case MeshFormat::Msh22: return true;
+    default: return false;
   }
 }
 

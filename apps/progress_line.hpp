@@ -15,8 +15,7 @@ class ProgressLine {
 
   // Draws only when `enabled`, not before `delay` has passed since
   // construction, and at most every `interval`.
-  ProgressLine(std::ostream& os, bool enabled, int max_sweeps,
-               Clock::duration delay = std::chrono::milliseconds(500),
+  ProgressLine(std::ostream& os, bool enabled, int max_sweeps, Clock::duration delay = std::chrono::milliseconds(500),
                Clock::duration interval = std::chrono::milliseconds(100));
 
   void update(const SweepProgress& progress);

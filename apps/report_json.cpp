@@ -16,16 +16,11 @@ nlohmann::ordered_json mesh_counts_json(const ValidationReport& v) {
 
 nlohmann::ordered_json options_json(const SmoothCommand& c) {
   const SmoothOptions& o = c.options;
-  return {{"method", option_name(o.method)},
-          {"form", option_name(o.form)},
-          {"strategy", option_name(o.strategy)},
-          {"layout", option_name(o.layout)},
-          {"device", option_name(c.device)},
-          {"threads", o.threads},
-          {"precision", option_name(o.precision)},
-          {"cpu_ordering", option_name(o.ordering)},
-          {"max_iterations", o.max_iterations},
-          {"tolerance", o.tolerance}};
+  return {{"method", option_name(o.method)},       {"form", option_name(o.form)},
+          {"strategy", option_name(o.strategy)},   {"layout", option_name(o.layout)},
+          {"device", option_name(c.device)},       {"threads", o.threads},
+          {"precision", option_name(o.precision)}, {"cpu_ordering", option_name(o.ordering)},
+          {"max_iterations", o.max_iterations},    {"tolerance", o.tolerance}};
 }
 
 }  // namespace
@@ -86,12 +81,9 @@ nlohmann::ordered_json quality_report_json(const QualityCommand& command, const 
   input["format"] = input_format_name(record.format);
   input["boundary_nodes"] = record.boundary_nodes;
   input["movable_nodes"] = record.movable_nodes;
-  return {{"tool", "tetsmooth"},
-          {"version", TETSMOOTH_VERSION},
-          {"command", "quality"},
-          {"input", input},
-          {"index_base", 0},
-          {"quality", summary_json(record.summary)},
+  return {{"tool", "tetsmooth"},  {"version", TETSMOOTH_VERSION},
+          {"command", "quality"}, {"input", input},
+          {"index_base", 0},      {"quality", summary_json(record.summary)},
           {"worst_tets", worst}};
 }
 

@@ -3,10 +3,9 @@
 // Keys keep the order written here (ordered_json), so the files read top
 // down: what was run, what it did, what came of it. Readers should ignore
 // fields they do not know; fields are only added.
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "apps/command_line.hpp"
 #include "apps/worst_tets.hpp"
@@ -19,7 +18,7 @@ namespace tetsmooth::cli {
 // Everything a smooth run did besides the smoother's own result.
 struct SmoothRecord {
   MeshFormat input_format = MeshFormat::Auto, output_format = MeshFormat::Auto;
-  ValidationReport input;   // counts of the mesh as read
+  ValidationReport input;       // counts of the mesh as read
   Device device = Device::Cpu;  // the device that ran (never Auto)
   SmoothResult result;
   double read_ms = 0, write_ms = 0, total_ms = 0;

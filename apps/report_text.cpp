@@ -36,7 +36,8 @@ std::string quality_text(double q) {
 
 std::string with_thousands(std::size_t n) {
   std::string digits = std::to_string(n);
-  for (int pos = static_cast<int>(digits.size()) - 3; pos > 0; pos -= 3) digits.insert(static_cast<std::size_t>(pos), ",");
+  for (int pos = static_cast<int>(digits.size()) - 3; pos > 0; pos -= 3)
+    digits.insert(static_cast<std::size_t>(pos), ",");
   return digits;
 }
 
@@ -101,7 +102,8 @@ void write_worst_tets(std::ostream& os, const std::vector<RankedTet>& worst) {
   if (worst.empty()) return;
   os << "  " << worst.size() << (worst.size() == 1 ? " worst tet" : " worst tets")
      << " (0-based tet and node indices)\n";
-  os << "  " << std::setw(12) << "tet" << std::setw(12) << "quality" << "   nodes\n";
+  os << "  " << std::setw(12) << "tet" << std::setw(12) << "quality"
+     << "   nodes\n";
   for (const RankedTet& t : worst) {
     os << "  " << std::setw(12) << t.tet << std::setw(12) << quality_text(t.quality) << "  ";
     for (index_t n : t.nodes) os << ' ' << n;

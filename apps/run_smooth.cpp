@@ -33,7 +33,8 @@ Device choose_device(Device requested, std::string& why_not_cuda) {
 
 std::vector<std::string> ignored_option_warnings(const SmoothCommand& c, Device device) {
   std::vector<std::string> warnings;
-  if (device == Device::Cuda && c.threads_given) warnings.emplace_back("--threads applies to the CPU only; ignored on CUDA");
+  if (device == Device::Cuda && c.threads_given)
+    warnings.emplace_back("--threads applies to the CPU only; ignored on CUDA");
   if (device == Device::Cpu) {
     if (c.strategy_given) warnings.emplace_back("--strategy selects a CUDA launch scheme; ignored on the CPU");
     if (c.layout_given) warnings.emplace_back("--layout selects the CUDA data layout; ignored on the CPU");
@@ -73,12 +74,13 @@ void print_report(const Console& console, const SmoothRecord& record) {
   const SmoothResult& r = record.result;
   std::ostream& os = console.err;
   os << "done: " << r.sweeps << " sweep(s), " << stop_phrase(r.stop) << "\n"
-     << "  " << with_thousands(r.movable_nodes) << " of " << with_thousands(record.input.nodes)
-     << " nodes movable";
+     << "  " << with_thousands(r.movable_nodes) << " of " << with_thousands(record.input.nodes) << " nodes movable";
   if (r.num_colours > 0) os << ", " << r.num_colours << " colours";
-  if (r.reverted_moves > 0) os << ", " << with_thousands(static_cast<std::size_t>(r.reverted_moves)) << " moves reverted";
+  if (r.reverted_moves > 0)
+    os << ", " << with_thousands(static_cast<std::size_t>(r.reverted_moves)) << " moves reverted";
   os << "\n  time (ms): read " << fixed_digits(record.read_ms, 1) << ", topology " << fixed_digits(r.topology_ms, 1)
-     << ", colouring " << fixed_digits(r.colouring_ms, 1) << ", smoothing " << fixed_digits(r.smoothing_ms, 1) << "\n\n";
+     << ", colouring " << fixed_digits(r.colouring_ms, 1) << ", smoothing " << fixed_digits(r.smoothing_ms, 1)
+     << "\n\n";
   const std::vector<SummaryColumn> columns{{"before", &r.before}, {"after", &r.after}};
   write_quality_table(os, columns);
   os << '\n';

@@ -10,8 +10,9 @@ std::vector<RankedTet> worst_tets(const TetMesh& mesh, const std::vector<double>
   std::iota(order.begin(), order.end(), index_t{0});
   k = std::min(k, order.size());
   // Partial sort: only k of possibly millions of tets are wanted.
-  std::partial_sort(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
-                    [&](index_t a, index_t b) { return qualities[a] < qualities[b] || (qualities[a] == qualities[b] && a < b); });
+  std::partial_sort(
+      order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
+      [&](index_t a, index_t b) { return qualities[a] < qualities[b] || (qualities[a] == qualities[b] && a < b); });
   std::vector<RankedTet> ranked(k);
   for (std::size_t r = 0; r < k; ++r) {
     const index_t t = order[r];

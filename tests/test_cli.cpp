@@ -5,10 +5,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <numeric>
 #include <sstream>
-
-#include <nlohmann/json.hpp>
 
 #include "apps/arg_parser.hpp"
 #include "apps/cli.hpp"
@@ -62,8 +61,7 @@ class CliFiles : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("tetsmooth_test_cli_" + std::to_string(::getpid()) + "_" + info->name());
+    dir_ = fs::temp_directory_path() / ("tetsmooth_test_cli_" + std::to_string(::getpid()) + "_" + info->name());
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -110,10 +108,29 @@ TEST(CliParse, SmoothDefaultsAreThoseDocumented) {
 }
 
 TEST(CliParse, SmoothTakesEveryOptionInBothSpellings) {
-  const auto c = parse_as<SmoothCommand>({"smooth", "--method=ordinary", "--form", "A", "--strategy=multiblock",
-                                          "--layout", "soa", "--device=cpu", "--threads", "3", "--precision",
-                                          "float", "--max-iter=7", "--tol", "0.5", "--report", "r.json",
-                                          "--format", "msh", "--output-format=vtk", "-q", "in.msh", "--output",
+  const auto c = parse_as<SmoothCommand>({"smooth",
+                                          "--method=ordinary",
+                                          "--form",
+                                          "A",
+                                          "--strategy=multiblock",
+                                          "--layout",
+                                          "soa",
+                                          "--device=cpu",
+                                          "--threads",
+                                          "3",
+                                          "--precision",
+                                          "float",
+                                          "--max-iter=7",
+                                          "--tol",
+                                          "0.5",
+                                          "--report",
+                                          "r.json",
+                                          "--format",
+                                          "msh",
+                                          "--output-format=vtk",
+                                          "-q",
+                                          "in.msh",
+                                          "--output",
                                           "out.txt"});
   EXPECT_EQ(c.input, "in.msh");
   EXPECT_EQ(c.output, "out.txt");
@@ -194,8 +211,7 @@ TEST(CliParse, UsageErrorsNameTheProblem) {
   EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o"}).find("-o needs a value"), std::string::npos);
   EXPECT_NE(usage_error_of({"convert", "a.vtu"}).find("missing OUT"), std::string::npos);
   EXPECT_NE(usage_error_of({"quality", "a.vtu", "--json=yes"}).find("takes no value"), std::string::npos);
-  EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--form", "C"}).find("expected A|B"),
-            std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--form", "C"}).find("expected A|B"), std::string::npos);
   EXPECT_NE(usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--device", "gpu"}).find("expected auto|cpu|cuda"),
             std::string::npos);
 }
@@ -248,9 +264,7 @@ TEST(CliExit, UnknownModelIsAUsageError) {
   EXPECT_EQ(run({"generate", "no-such-model", "-o", "/tmp/never-written.vtu"}).code, kExitUsage);
 }
 
-TEST(CliExit, UnknownExtensionIsAUsageError) {
-  EXPECT_EQ(run({"convert", "a.vtu", "b.xyz"}).code, kExitUsage);
-}
+TEST(CliExit, UnknownExtensionIsAUsageError) { EXPECT_EQ(run({"convert", "a.vtu", "b.xyz"}).code, kExitUsage); }
 
 TEST_F(CliFiles, MissingInputExitsWith3) {
   const CliRun r = run({"quality", path("absent.vtu")});
@@ -298,8 +312,8 @@ TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {
 
 TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
   const std::string in = lattice(4);
-  const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--threads", "2", "--max-iter",
-                        "50", "--report", path("report.json")});
+  const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--threads", "2", "--max-iter", "50",
+                        "--report", path("report.json")});
   ASSERT_EQ(r.code, kExitOk) << r.err;
   nlohmann::json j;
   std::ifstream(path("report.json")) >> j;

@@ -230,9 +230,12 @@ INSTANTIATE_TEST_SUITE_P(Flavours, GmshRoundTrip,
                          ::testing::Values(MshFlavour::V41Ascii, MshFlavour::V41Binary, MshFlavour::V22Ascii),
                          [](const ::testing::TestParamInfo<MshFlavour>& p) {
                            switch (p.param) {
-                             case MshFlavour::V41Ascii: return std::string("V41Ascii");
-                             case MshFlavour::V41Binary: return std::string("V41Binary");
-                             case MshFlavour::V22Ascii: return std::string("V22Ascii");
+                             case MshFlavour::V41Ascii:
+                               return std::string("V41Ascii");
+                             case MshFlavour::V41Binary:
+                               return std::string("V41Binary");
+                             case MshFlavour::V22Ascii:
+                               return std::string("V22Ascii");
                            }
                            return std::string("unknown");
                          });
@@ -281,8 +284,8 @@ struct BadText {
 
 TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
   const BadText cases[] = {
-      {"3 1 4 1\n1 1 2 3 4\n", "3 1 11 1\n1 1 2 3 4 1 2 3 4 1 2\n", "t.msh:18:",
-       "unsupported element type 11 (10-node tetrahedron)"},
+      {"3 1 4 1\n1 1 2 3 4\n", "3 1 11 1\n1 1 2 3 4 1 2 3 4 1 2\n",
+       "t.msh:18:", "unsupported element type 11 (10-node tetrahedron)"},
       {"1 1 2 3 4\n", "1 1 2 3 9\n", "t.msh:19:", "node tag 9, which is not in $Nodes"},
       {"1 0 0\n", "nan 0 0\n", "t.msh:12:", "non-finite node coordinate"},
       {"1 4 1 4\n", "1 5 1 5\n", "t.msh:14:", "hold 4 nodes, not the 5 announced"},
@@ -374,8 +377,7 @@ TEST(GmshIo, FileWriterReplacesTargetOrThrows) {
   const TetMesh mesh = testing::cube_grid(2);
   write_gmsh_file(mesh, path, MshFlavour::V41Binary, {});
   EXPECT_EQ(read_gmsh_file(path).xyz, mesh.xyz);
-  EXPECT_THROW(write_gmsh_file(mesh, (dir / "missing" / "out.msh").string(), MshFlavour::V41Ascii, {}),
-               OutputError);
+  EXPECT_THROW(write_gmsh_file(mesh, (dir / "missing" / "out.msh").string(), MshFlavour::V41Ascii, {}), OutputError);
   std::filesystem::remove_all(dir);
 }
 

@@ -143,8 +143,7 @@ TEST(MeditIo, BadInputNamesFileAndLine) {
   }
   const std::string text = kMinimal;
   const std::string truncated = read_error(text.substr(0, text.find("1 2 3 4 0")));
-  EXPECT_NE(truncated.find("t.mesh:10: unexpected end of file, expected vertex index"), std::string::npos)
-      << truncated;
+  EXPECT_NE(truncated.find("t.mesh:10: unexpected end of file, expected vertex index"), std::string::npos) << truncated;
 }
 
 TEST(MeditIo, WriterRefusesWhatMeditCannotHold) {

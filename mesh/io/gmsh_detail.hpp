@@ -21,7 +21,7 @@ struct ElementType {
 
 inline constexpr int kTetType = 4;
 
-const ElementType* element_type(int id);                    // nullptr if not handled
+const ElementType* element_type(int id);                           // nullptr if not handled
 const ElementType* element_type_of_kind(const std::string& kind);  // nullptr if none
 // "unsupported element type 11 (10-node tetrahedron)"; the name is left out
 // for ids Gmsh does not define either.

@@ -7,8 +7,8 @@ namespace {
 
 // Node ordering within each type is Gmsh's; pass-through blocks keep it.
 constexpr ElementType kTypes[] = {
-    {1, "line", 2, 1},    {2, "triangle", 3, 2},   {3, "quad", 4, 2},  {4, "tetra", 4, 3},
-    {5, "hexahedron", 8, 3}, {6, "wedge", 6, 3}, {7, "pyramid", 5, 3}, {15, "vertex", 1, 0},
+    {1, "line", 2, 1},       {2, "triangle", 3, 2}, {3, "quad", 4, 2},    {4, "tetra", 4, 3},
+    {5, "hexahedron", 8, 3}, {6, "wedge", 6, 3},    {7, "pyramid", 5, 3}, {15, "vertex", 1, 0},
 };
 
 // Names of the higher-order types of the MSH specification, for messages.
@@ -17,14 +17,18 @@ struct TypeName {
   const char* name;
 };
 constexpr TypeName kOtherNames[] = {
-    {8, "3-node line"},           {9, "6-node triangle"},       {10, "9-node quadrangle"},
-    {11, "10-node tetrahedron"},  {12, "27-node hexahedron"},   {13, "18-node prism"},
-    {14, "14-node pyramid"},      {16, "8-node quadrangle"},    {17, "20-node hexahedron"},
-    {18, "15-node prism"},        {19, "13-node pyramid"},      {20, "9-node incomplete triangle"},
-    {21, "10-node triangle"},     {22, "12-node incomplete triangle"}, {23, "15-node triangle"},
-    {24, "15-node incomplete triangle"}, {25, "21-node triangle"}, {26, "4-node edge"},
-    {27, "5-node edge"},          {28, "6-node edge"},          {29, "20-node tetrahedron"},
-    {30, "35-node tetrahedron"},  {31, "56-node tetrahedron"},  {92, "64-node hexahedron"},
+    {8, "3-node line"},          {9, "6-node triangle"},
+    {10, "9-node quadrangle"},   {11, "10-node tetrahedron"},
+    {12, "27-node hexahedron"},  {13, "18-node prism"},
+    {14, "14-node pyramid"},     {16, "8-node quadrangle"},
+    {17, "20-node hexahedron"},  {18, "15-node prism"},
+    {19, "13-node pyramid"},     {20, "9-node incomplete triangle"},
+    {21, "10-node triangle"},    {22, "12-node incomplete triangle"},
+    {23, "15-node triangle"},    {24, "15-node incomplete triangle"},
+    {25, "21-node triangle"},    {26, "4-node edge"},
+    {27, "5-node edge"},         {28, "6-node edge"},
+    {29, "20-node tetrahedron"}, {30, "35-node tetrahedron"},
+    {31, "56-node tetrahedron"}, {92, "64-node hexahedron"},
     {93, "125-node hexahedron"},
 };
 

@@ -86,7 +86,8 @@ void read_nodes_v41(Source& src, ReadState& state) {
     const int parametric = src.int_value("parametric flag");
     const std::uint64_t count = src.size_value("number of nodes in the block");
     if (dim < 0 || dim > 3) src.fail("entity dimension " + std::to_string(dim) + " is not 0, 1, 2 or 3");
-    if (parametric != 0 && parametric != 1) src.fail("parametric flag " + std::to_string(parametric) + " is not 0 or 1");
+    if (parametric != 0 && parametric != 1)
+      src.fail("parametric flag " + std::to_string(parametric) + " is not 0 or 1");
     if (count > total - extras.node_tags.size())
       src.fail("the node blocks hold more nodes than the " + std::to_string(total) + " announced");
     // Parametric coordinates (u, v, w up to the entity dimension) follow the
@@ -130,7 +131,8 @@ void read_elements_v41(Source& src, ReadState& state) {
     if (type->dim != dim)
       src.fail("element type " + std::to_string(type_id) + " (" + type->kind + ") in a block of dimension " +
                std::to_string(dim));
-    if (count > total - seen) src.fail("the element blocks hold more elements than the " + std::to_string(total) + " announced");
+    if (count > total - seen)
+      src.fail("the element blocks hold more elements than the " + std::to_string(total) + " announced");
     seen += count;
     const std::size_t reserve = src.reservable(count, 8 * (1 + static_cast<std::size_t>(type->nodes)));
 

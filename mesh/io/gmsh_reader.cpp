@@ -105,8 +105,7 @@ void map_physicals(ReadState& state) {
   if (!any) return;
   FileExtras& extras = state.mesh.extras;
   extras.tet_tags.clear();
-  for (int entity : extras.tet_entity_tags)
-    extras.tet_tags.push_back(gmsh::first_physical(state.entities, 3, entity));
+  for (int entity : extras.tet_entity_tags) extras.tet_tags.push_back(gmsh::first_physical(state.entities, 3, entity));
   for (PassThroughBlock& block : extras.blocks) {
     const int dim = gmsh::element_type_of_kind(block.kind)->dim;
     block.tags.clear();

@@ -56,13 +56,23 @@ std::string_view AsciiSource::token(const char* what) {
 std::string_view AsciiSource::next_section() {
   while (!started_ || taken_ >= lines_.size())
     if (!advance()) return {};
-  return lines_.token(taken_++, "a section");
+  const std::string_view name = lines_.token(taken_++, "a section");
+  alone_on_line(name);
+  return name;
 }
 
 void AsciiSource::expect_end(std::string_view end_name) {
   const std::string name(end_name);
   const std::string_view found = token(name.c_str());
   if (found != end_name) fail(end_mismatch(end_name, found));
+  alone_on_line(found);
+}
+
+// Section lines hold nothing else, so that a section body starts on a line
+// of its own (and is kept verbatim as whole lines).
+void AsciiSource::alone_on_line(std::string_view name) const {
+  if (taken_ < lines_.size())
+    fail("unexpected " + quoted(lines_.token(taken_, "a value")) + " after " + std::string(name.substr(0, 40)));
 }
 
 void AsciiSource::skip_section(std::string_view end_name) {

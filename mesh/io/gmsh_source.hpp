@@ -57,6 +57,7 @@ class AsciiSource {
   static constexpr std::size_t kReserveCap = std::size_t{1} << 16;
 
   bool advance();  // to the next line holding a token; false at the end
+  void alone_on_line(std::string_view name) const;
   std::string_view token(const char* what);
   std::string_view current_line() const;
 
@@ -118,7 +119,7 @@ class NodeLookup {
   index_t find(long long tag) const;  // -1 when absent
 
  private:
-  std::vector<index_t> dense_;                        // by tag, when tags are dense enough
+  std::vector<index_t> dense_;                         // by tag, when tags are dense enough
   std::vector<std::pair<long long, index_t>> sparse_;  // sorted by tag, otherwise
 };
 

@@ -35,8 +35,8 @@ struct WritePlan {
   std::vector<int> node_dims;        // per node: the entity it is classified on
   std::vector<int> node_entities;
   Entities entities;
-  std::string entities_text;   // $Entities body as written in ASCII
-  std::string physical_names;  // $PhysicalNames body, or empty
+  std::string entities_text;         // $Entities body as written in ASCII
+  std::string physical_names;        // $PhysicalNames body, or empty
   std::vector<ElementGroup> groups;  // tets first; element tags run 1, 2, ... in this order
   std::size_t element_count = 0;
 };

@@ -72,18 +72,19 @@ void check_fields(const TetMesh& mesh, const MeshFields& fields) {
   for (const auto& [name, values] : fields.node_scalars)
     if (values.size() != mesh.num_nodes())
       throw std::invalid_argument("node field '" + name + "' has " + std::to_string(values.size()) + " values for " +
-                        std::to_string(mesh.num_nodes()) + " nodes");
+                                  std::to_string(mesh.num_nodes()) + " nodes");
   for (const auto& [name, values] : fields.tet_scalars)
     if (values.size() != mesh.num_tets())
       throw std::invalid_argument("tet field '" + name + "' has " + std::to_string(values.size()) + " values for " +
-                        std::to_string(mesh.num_tets()) + " tets");
+                                  std::to_string(mesh.num_tets()) + " tets");
 }
 
 // One $NodeData or $ElementData view at time 0. The header is text in
 // every flavour; the binary body holds each tag as a 4-byte int (unlike
 // $Nodes and $Elements, where tags are size_t), then the value.
 long long data_tag(long long tag) {
-  if (tag > INT_MAX) throw OutputError("tag " + std::to_string(tag) + " is too large for MSH field data (a 32-bit int)");
+  if (tag > INT_MAX)
+    throw OutputError("tag " + std::to_string(tag) + " is too large for MSH field data (a 32-bit int)");
   return tag;
 }
 
@@ -205,7 +206,8 @@ void write_elements_v41(std::ostream& out, Sink& sink, const WritePlan& plan) {
       for (std::size_t e = first; e < last; ++e) {
         sink.size(tag++);
         for (std::size_t k = 0; k < nodes; ++k)
-          sink.size(static_cast<std::uint64_t>(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]));
+          sink.size(
+              static_cast<std::uint64_t>(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]));
         sink.end_record();
       }
       first = last;

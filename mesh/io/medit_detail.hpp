@@ -10,7 +10,7 @@ struct ElementKeyword {
   int nodes;
 };
 inline constexpr ElementKeyword kElementKeywords[] = {
-    {"Edges", "line", 2},          {"Triangles", "triangle", 3}, {"Quadrilaterals", "quad", 4},
+    {"Edges", "line", 2},           {"Triangles", "triangle", 3}, {"Quadrilaterals", "quad", 4},
     {"Hexahedra", "hexahedron", 8}, {"Prisms", "wedge", 6},       {"Pyramids", "pyramid", 5},
 };
 
@@ -23,10 +23,18 @@ struct KeptKeyword {
   int reals;
 };
 inline constexpr KeptKeyword kKeptKeywords[] = {
-    {"Ridges", 1, 0},           {"RequiredEdges", 1, 0},          {"RequiredTriangles", 1, 0},
-    {"RequiredQuadrilaterals", 1, 0}, {"RequiredTetrahedra", 1, 0}, {"RequiredHexahedra", 1, 0},
-    {"Normals", 0, 3},          {"Tangents", 0, 3},               {"NormalAtVertices", 2, 0},
-    {"TangentAtVertices", 2, 0}, {"NormalAtTriangleVertices", 3, 0}, {"NormalAtQuadrilateralVertices", 3, 0},
+    {"Ridges", 1, 0},
+    {"RequiredEdges", 1, 0},
+    {"RequiredTriangles", 1, 0},
+    {"RequiredQuadrilaterals", 1, 0},
+    {"RequiredTetrahedra", 1, 0},
+    {"RequiredHexahedra", 1, 0},
+    {"Normals", 0, 3},
+    {"Tangents", 0, 3},
+    {"NormalAtVertices", 2, 0},
+    {"TangentAtVertices", 2, 0},
+    {"NormalAtTriangleVertices", 3, 0},
+    {"NormalAtQuadrilateralVertices", 3, 0},
 };
 
 }  // namespace tetsmooth::medit

@@ -58,7 +58,8 @@ std::size_t MeditReader::count(const char* what) {
 
 int MeditReader::integer(const char* what) {
   const long long v = lines_.next_integer(what);
-  if (v < INT_MIN || v > INT_MAX) lines_.fail(std::string(what) + " " + std::to_string(v) + " is out of the 32-bit range");
+  if (v < INT_MIN || v > INT_MAX)
+    lines_.fail(std::string(what) + " " + std::to_string(v) + " is out of the 32-bit range");
   return static_cast<int>(v);
 }
 
@@ -140,10 +141,12 @@ void MeditReader::kept(const medit::KeptKeyword& kw) {
       const std::string_view token = lines_.next_token("a value");
       if (k < kw.integers) {
         long long v = 0;
-        if (!parse_integer(token, v) || v < 1) lines_.fail("expected a positive index, found '" + std::string(token.substr(0, 40)) + "'");
+        if (!parse_integer(token, v) || v < 1)
+          lines_.fail("expected a positive index, found '" + std::string(token.substr(0, 40)) + "'");
       } else {
         double v = 0;
-        if (!parse_real(token, v) || !std::isfinite(v)) lines_.fail("expected a finite number, found '" + std::string(token.substr(0, 40)) + "'");
+        if (!parse_real(token, v) || !std::isfinite(v))
+          lines_.fail("expected a finite number, found '" + std::string(token.substr(0, 40)) + "'");
       }
       body += token;
       body += k + 1 < kw.integers + kw.reals ? ' ' : '\n';

@@ -247,6 +247,23 @@ class GenerateSmoothQuality(CliTestCase):
         self.assertEqual(proc.stderr, "")
         self.assertEqual(proc.stdout, "")
 
+    def test_every_format_round_trips_exactly(self):
+        # The .tsm cache stores raw doubles, so byte equality after a trip
+        # through another format means coordinates and tets were kept bit
+        # for bit (the lattice's jittered coordinates need all 17 digits).
+        source = self.path("exact.tsm")
+        run("generate", "lattice-5", "-o", source, "-q")
+        with open(source, "rb") as f:
+            original = f.read()
+        for name, extra in (("rt.vtu", ()), ("rt.vtk", ()), ("rt.msh", ()), ("rt_bin.msh", ("--output-format", "msh41-binary")),
+                            ("rt22.msh", ("--output-format", "msh22")), ("rt.mesh", ()), ("rt.node", ())):
+            with self.subTest(format=name):
+                middle, back = self.path(name), self.path(name + ".tsm")
+                run("convert", source, middle, "-q", *extra)
+                run("convert", middle, back, "-q")
+                with open(back, "rb") as f:
+                    self.assertEqual(f.read(), original)
+
     def test_convert_keeps_the_mesh(self):
         out = self.path("converted.mesh")
         run("convert", self.model, out, "-q")

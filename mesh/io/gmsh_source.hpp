@@ -1,8 +1,9 @@
 #pragma once
-// The values of an MSH file read one at a time, either as text tokens (ASCII
-// files) or as raw bytes (binary files), so that one parser per section
-// serves both encodings. Both sources name the file and the line (ASCII) or
-// byte offset (binary) in every error. Internal to the Gmsh reader.
+// Internals of the Gmsh reader. A source hands out the values of an MSH file
+// one at a time, as text tokens (ASCII files) or raw bytes (binary files),
+// so that one parser per section serves both encodings; both name the file
+// and the line (ASCII) or byte offset (binary) in every error. The section
+// parsers fill a ReadState, which gmsh_reader.cpp turns into the TetMesh.
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -79,16 +79,20 @@ void check_fields(const TetMesh& mesh, const MeshFields& fields) {
                                   std::to_string(mesh.num_tets()) + " tets");
 }
 
-// One $NodeData or $ElementData view at time 0. The header is text in
-// every flavour; the binary body holds each tag as a 4-byte int (unlike
-// $Nodes and $Elements, where tags are size_t), then the value.
-long long data_tag(long long tag) {
-  if (tag > INT_MAX)
-    throw OutputError("tag " + std::to_string(tag) + " is too large for MSH field data (a 32-bit int)");
-  return tag;
+// Field data name their nodes and elements by 4-byte int tags (unlike
+// $Nodes and $Elements, where tags are size_t).
+void check_field_tags(const WritePlan& plan, const MeshFields& fields) {
+  const auto too_large = [](long long tag) {
+    if (tag > INT_MAX)
+      throw OutputError("tag " + std::to_string(tag) + " is too large for MSH field data (a 32-bit int)");
+  };
+  if (!fields.node_scalars.empty())
+    for (long long tag : plan.node_tags) too_large(tag);
+  if (!fields.tet_scalars.empty()) too_large(static_cast<long long>(plan.element_count));
 }
 
-template <class Sink>
+// One $NodeData or $ElementData view at time 0; the header is text in
+// every flavour.
 void write_data_header(std::ostream& out, const char* section, const std::string& name, std::size_t count) {
   std::string title = name;
   std::replace(title.begin(), title.end(), '"', '\'');
@@ -98,9 +102,9 @@ void write_data_header(std::ostream& out, const char* section, const std::string
 template <class Sink>
 void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const MeshFields& fields) {
   for (const auto& [name, values] : fields.node_scalars) {
-    write_data_header<Sink>(out, "NodeData", name, values.size());
+    write_data_header(out, "NodeData", name, values.size());
     for (std::size_t i = 0; i < values.size(); ++i) {
-      sink.integer(data_tag(plan.node_tags[i]));
+      sink.integer(plan.node_tags[i]);
       sink.real(values[i]);
       sink.end_record();
     }
@@ -110,9 +114,9 @@ void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const Me
   // Tets are elements 1..T. The other elements get NaN ("no value") rather
   // than no entry: readers such as meshio expect a value for every element.
   for (const auto& [name, values] : fields.tet_scalars) {
-    write_data_header<Sink>(out, "ElementData", name, plan.element_count);
+    write_data_header(out, "ElementData", name, plan.element_count);
     for (std::size_t e = 0; e < plan.element_count; ++e) {
-      sink.integer(data_tag(static_cast<long long>(e + 1)));
+      sink.integer(static_cast<long long>(e + 1));
       sink.real(e < values.size() ? values[e] : std::numeric_limits<double>::quiet_NaN());
       sink.end_record();
     }
@@ -290,6 +294,7 @@ void write_planned(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, c
 void write_gmsh(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, const MeshFields& fields) {
   check_fields(mesh, fields);
   const WritePlan plan = gmsh::plan_gmsh_output(mesh);
+  check_field_tags(plan, fields);
   write_planned(mesh, out, flavour, plan, fields);
   if (!out) throw OutputError("the MSH output stream failed");
 }
@@ -299,6 +304,7 @@ void write_gmsh_file(const TetMesh& mesh, const std::string& path, MshFlavour fl
   WritePlan plan;
   try {
     plan = gmsh::plan_gmsh_output(mesh);
+    check_field_tags(plan, fields);
   } catch (const OutputError& e) {
     throw OutputError("cannot write '" + path + "': " + e.what());
   }

@@ -361,6 +361,13 @@ TEST(GmshIo, WriterRefusesWhatMshCannotHold) {
   MeshFields fields;
   fields.tet_scalars.push_back({"short", {}});
   EXPECT_THROW(write_text(mesh, MshFlavour::V41Ascii, fields), std::invalid_argument);
+  // Field data tags are 32-bit: a node tag beyond that cannot carry a value.
+  TetMesh sparse = mesh;
+  sparse.extras.node_tags = {1, 2, 3, 1LL << 40};
+  MeshFields node_field;
+  node_field.node_scalars.push_back({"p", {0, 1, 2, 3}});
+  EXPECT_THROW(write_text(sparse, MshFlavour::V41Binary, node_field), OutputError);
+  EXPECT_NO_THROW(write_text(sparse, MshFlavour::V41Binary));
   PassThroughBlock polygon;
   polygon.kind = "polygon";
   polygon.nodes_per_element = 5;

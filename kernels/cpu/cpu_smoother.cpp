@@ -55,7 +55,8 @@ SweepStats sweep_in_place(const MeshView& view, AosCoords<double> xyz, const ind
 template <bool kAdaptive>
 SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, std::vector<double>& next,
                         std::size_t num_tets, const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& moved,
-                        std::vector<double>& old_min, std::int64_t& reverted_total, int threads) {
+                        std::vector<std::uint8_t>& revert, std::vector<double>& old_min, std::int64_t& reverted_total,
+                        int threads) {
   const AosCoords<double> from{const_cast<double*>(prev.data())};
   const AosCoords<double> to{next.data()};
   const index_t n = static_cast<index_t>(movable.size());
@@ -72,7 +73,6 @@ SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, s
     }
   }
   if (kAdaptive) {
-    std::vector<std::uint8_t> revert(movable.size(), 0);
     for (int pass = 0; pass < kMaxRepairPasses; ++pass) {
       std::int64_t objecting = 0;
 #pragma omp parallel for num_threads(threads) if (threads > 1) schedule(static) reduction(+ : objecting)
@@ -120,11 +120,12 @@ void run_sweeps(TetMesh& mesh, const Topology& topo, const Colouring* colouring,
                       topo.node_tets.offsets.data(), topo.node_tets.items.data()};
   std::vector<index_t> natural;
   std::vector<double> other, old_min;
-  std::vector<std::uint8_t> moved;
+  std::vector<std::uint8_t> moved, revert;  // Form A: this sweep's movers, and those to put back
   if (opt.form == Form::A) {
     other.resize(mesh.xyz.size());
     old_min.resize(mesh.num_nodes());
     moved.resize(mesh.num_nodes());
+    revert.assign(mesh.num_nodes(), 0);
   } else if (!colouring) {
     natural.resize(mesh.num_nodes());
     for (std::size_t i = 0; i < natural.size(); ++i) natural[i] = static_cast<index_t>(i);
@@ -133,7 +134,7 @@ void run_sweeps(TetMesh& mesh, const Topology& topo, const Colouring* colouring,
   while (log.wants_another_sweep()) {
     SweepStats s;
     if (opt.form == Form::A) {
-      s = sweep_jacobi<kAdaptive>(view, mesh.xyz, other, mesh.num_tets(), topo.movable, moved, old_min,
+      s = sweep_jacobi<kAdaptive>(view, mesh.xyz, other, mesh.num_tets(), topo.movable, moved, revert, old_min,
                                   result.reverted_moves, threads);
       mesh.xyz.swap(other);
     } else if (colouring) {

@@ -110,6 +110,42 @@ __global__ void sweep_kernel(MeshView m, Coords read, Coords write, const index_
   if (F == Form::B) add_sweep_stats(c, st->sweep, accepted, disp2);
 }
 
+// The steps of the Form A repair, shared by the multi-launch kernels and
+// single_block_kernel.
+
+// Flags the movers of tet t when it objects to the sweep's result.
+template <class Real, class Coords>
+__device__ __forceinline__ bool flag_objecting_tet(const index_t* tets, index_t t, const Coords& before,
+                                                   const Coords& after, const std::uint8_t* moved, const Real* old_min,
+                                                   std::uint8_t* revert) {
+  const index_t* tet = tets + 4 * t;
+  if (!tet_rejects_movers(tet, before, after, moved, old_min)) return false;
+  for (int k = 0; k < 4; ++k)
+    if (moved[tet[k]]) revert[tet[k]] = 1;  // every writer stores the same value
+  return true;
+}
+
+// Puts node i back where it was when flagged (or when undoing the whole
+// sweep); clears its flag. Returns whether it was reverted.
+template <class Coords>
+__device__ __forceinline__ bool revert_if_flagged(index_t i, const Coords& before, const Coords& after,
+                                                  std::uint8_t* moved, std::uint8_t* revert, bool undo_all) {
+  const bool back = moved[i] && (revert[i] || undo_all);
+  if (back) {
+    after.set(i, before.get(i));
+    moved[i] = 0;
+  }
+  revert[i] = 0;
+  return back;
+}
+
+// Squared length of node i's surviving move (0 when it did not move).
+template <class Coords>
+__device__ __forceinline__ double surviving_disp2(index_t i, const Coords& before, const Coords& after,
+                                                  const std::uint8_t* moved) {
+  return moved[i] ? static_cast<double>(norm2(after.get(i) - before.get(i))) : 0.0;
+}
+
 // Form A conflict repair, pass `pass` (see node_update.hpp): flag the movers
 // of objecting tets. Skipped when the previous pass found nothing.
 template <class Real, class Coords>
@@ -118,10 +154,7 @@ __global__ void repair_check_kernel(const index_t* tets, index_t num_tets, Coord
                                     SweepState* st, SweepCounters c, int pass) {
   if (st->done || (pass > 0 && !c.repair_found[pass - 1])) return;
   const index_t t = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
-  if (t >= num_tets || !tet_rejects_movers(tets + 4 * t, before, after, moved, old_min)) return;
-  for (int k = 0; k < 4; ++k)
-    if (moved[tets[4 * t + k]]) revert[tets[4 * t + k]] = 1;
-  c.repair_found[pass] = 1;
+  if (t < num_tets && flag_objecting_tet(tets, t, before, after, moved, old_min, revert)) c.repair_found[pass] = 1;
 }
 
 template <class Coords>
@@ -130,13 +163,7 @@ __global__ void repair_apply_kernel(index_t n, Coords before, Coords after, std:
   if (st->done || !c.repair_found[pass]) return;
   const bool undo_all = pass == kMaxRepairPasses - 1;
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
-  unsigned reverted = 0;
-  if (i < n && moved[i] && (revert[i] || undo_all)) {
-    after.set(i, before.get(i));
-    moved[i] = 0;
-    reverted = 1;
-  }
-  if (i < n) revert[i] = 0;
+  unsigned reverted = i < n && revert_if_flagged(i, before, after, moved, revert, undo_all);
   for (int offset = 16; offset > 0; offset >>= 1) reverted += __shfl_down_sync(0xffffffffu, reverted, offset);
   if ((threadIdx.x & 31) == 0 && reverted) atomicAdd(&st->reverted, static_cast<unsigned long long>(reverted));
 }
@@ -147,13 +174,8 @@ __global__ void count_moves_kernel(index_t n, Coords before, Coords after, const
                                    SweepCounters c) {
   if (st->done) return;
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
-  unsigned accepted = 0;
-  double disp2 = 0;
-  if (i < n && moved[i]) {
-    accepted = 1;
-    disp2 = static_cast<double>(norm2(after.get(i) - before.get(i)));
-  }
-  add_sweep_stats(c, st->sweep, accepted, disp2);
+  const bool live = i < n && moved[i];
+  add_sweep_stats(c, st->sweep, live, live ? surviving_disp2(i, before, after, moved) : 0.0);
 }
 
 // Applies the stopping rule to the sweep just finished (one thread) and
@@ -211,34 +233,23 @@ __global__ void __launch_bounds__(kSingleBlockThreads)
         if (threadIdx.x == 0) s_flag = 0;
         __syncthreads();
         for (index_t t = threadIdx.x; t < num_tets; t += blockDim.x)
-          if (tet_rejects_movers(m.tets + 4 * t, read, write, moved, old_min)) {
-            for (int k = 0; k < 4; ++k)
-              if (moved[m.tets[4 * t + k]]) revert[m.tets[4 * t + k]] = 1;
-            atomicOr(&s_flag, 1);
-          }
+          if (flag_objecting_tet(m.tets, t, read, write, moved, old_min, revert)) atomicOr(&s_flag, 1);
         __syncthreads();
         const int found = s_flag;
         if (!found) break;
         const bool undo_all = pass == kMaxRepairPasses - 1;
         unsigned reverted = 0;
-        for (index_t i = threadIdx.x; i < n; i += blockDim.x) {
-          if (moved[i] && (revert[i] || undo_all)) {
-            write.set(i, read.get(i));
-            moved[i] = 0;
-            ++reverted;
-          }
-          revert[i] = 0;
-        }
+        for (index_t i = threadIdx.x; i < n; i += blockDim.x)
+          reverted += revert_if_flagged(i, read, write, moved, revert, undo_all);
         if (reverted) atomicAdd(&st->reverted, static_cast<unsigned long long>(reverted));
         __syncthreads();
       }
       accepted = 0;
       disp2 = 0;
-      for (index_t i = threadIdx.x; i < n; i += blockDim.x)
-        if (moved[i]) {
-          ++accepted;
-          disp2 = fmax(disp2, static_cast<double>(norm2(write.get(i) - read.get(i))));
-        }
+      for (index_t i = threadIdx.x; i < n; i += blockDim.x) {
+        accepted += moved[i];
+        disp2 = fmax(disp2, surviving_disp2(i, read, write, moved));
+      }
     }
     if (accepted) {
       atomicAdd(&s_accepted, static_cast<unsigned long long>(accepted));

@@ -59,6 +59,7 @@ nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const Sm
           {"accepted_per_sweep", r.accepted_per_sweep},
           {"max_displacement_per_sweep", r.max_displacement_per_sweep},
           {"reverted_moves", r.reverted_moves},
+          {"node_evaluations", r.evaluations},
           {"colours", r.num_colours},
           {"movable_nodes", r.movable_nodes},
           {"mean_edge_length", r.mean_edge_length},

@@ -21,7 +21,8 @@ struct SweepFootprint {
 // cache would serve them.
 double bytes_per_sweep(const SweepFootprint& f);
 
-// sweeps, accepted, phase times, ms per sweep, node updates/s, bytes/s.
+// sweeps, accepted, evaluations, phase times, ms per sweep, node updates
+// (evaluations) per second, bytes/s.
 void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f);
 
 // Quality before and after: min, mean, q < 0.1, inverted, 10-bin histograms.

@@ -42,11 +42,26 @@ struct NodeMove {
 // can share one node (lane l handles entries l, l + stride, ...) and combine
 // the parts; the CPU calls them with lane 0 and stride 1.
 
+// Does nothing with a neighbour (see neighbour_sum).
+struct IgnoreNeighbour {
+  TS_HD void operator()(index_t) const {}
+};
+
 // Sum of the neighbours' positions over this lane's share of the row.
-template <class Real, class Coords>
-TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, int lane, int stride) {
+// `visit(j)` is called for each neighbour j on the way, so a caller that
+// needs more of the row reads it in the same pass.
+#ifdef __CUDACC__
+#pragma nv_exec_check_disable
+#endif
+template <class Real, class Coords, class Visit = IgnoreNeighbour>
+TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, int lane, int stride,
+                               Visit&& visit = {}) {
   Vec3<Real> s{0, 0, 0};
-  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) s = s + xyz.get(m.nbr[k]);
+  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) {
+    const index_t j = m.nbr[k];
+    visit(j);
+    s = s + xyz.get(j);
+  }
   return s;
 }
 
@@ -79,16 +94,55 @@ TS_HD StarQuality<Real> merge(StarQuality<Real> a, StarQuality<Real> b) {
           a.valid && b.valid};
 }
 
+// A tet's radius ratio with node i at `at` (the tet's own corner order).
 template <class Real, class Coords>
+TS_HD Real tet_quality_with(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> at) {
+  Vec3<Real> v[4];
+  tet_corners(m, xyz, t, i, at, v);
+  return radius_ratio(v[0], v[1], v[2], v[3]);
+}
+
+// Where star_quality gets a tet's quality with the node where it stands now:
+// recomputed from the coordinates (the reference, every backend), or read
+// from a per-tet cache that the caller keeps current (the GPU coloured loop;
+// see kernels/cuda/coloured_loop_kernel.cuh).
+struct FreshOldQuality {
+  template <class Real, class Coords>
+  TS_HD Real operator()(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> p) const {
+    return tet_quality_with(m, xyz, t, i, p);
+  }
+};
+
+template <class Real>
+struct CachedOldQuality {
+  const Real* q;  // one per tet
+  template <class Coords>
+  TS_HD Real operator()(const MeshView&, const Coords&, index_t t, index_t, Vec3<Real>) const {
+    return q[t];
+  }
+};
+
+// Does nothing with a tet's quality at the target (see star_quality).
+struct IgnoreNewQuality {
+  template <class Real>
+  TS_HD void operator()(index_t, Real) const {}
+};
+
+// `keep_new(k, q)` receives the quality q at the target of the tet at
+// incidence entry k, for a caller that stores what it may need again.
+#ifdef __CUDACC__
+#pragma nv_exec_check_disable
+#endif
+template <class Real, class Coords, class OldQuality = FreshOldQuality, class KeepNew = IgnoreNewQuality>
 TS_HD StarQuality<Real> star_quality(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
-                                     int lane, int stride) {
+                                     int lane, int stride, const OldQuality& old_quality = {},
+                                     KeepNew&& keep_new = {}) {
   StarQuality<Real> sq{Real(2), Real(2), true};
   for (index_t k = m.inc_off[i] + lane; k < m.inc_off[i + 1]; k += stride) {
-    Vec3<Real> v[4];
-    tet_corners(m, xyz, m.inc[k], i, p, v);
-    const Real q_old = radius_ratio(v[0], v[1], v[2], v[3]);
-    tet_corners(m, xyz, m.inc[k], i, target, v);
-    const Real q_new = radius_ratio(v[0], v[1], v[2], v[3]);
+    const index_t t = m.inc[k];
+    const Real q_old = old_quality(m, xyz, t, i, p);
+    const Real q_new = tet_quality_with(m, xyz, t, i, target);
+    keep_new(k, q_new);
     sq = merge(sq, StarQuality<Real>{q_old, q_new, keeps_validity(q_old, q_new)});
   }
   return sq;

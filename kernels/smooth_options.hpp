@@ -43,8 +43,14 @@ struct SmoothOptions {
   int threads = 1;                // CPU threads; 0 = all cores
   int max_iterations = 100;
   double tolerance = 1e-4;        // relative to the mean edge length
-  int check_every = 4;            // CUDA: sweeps between host checks of the stop flag
-  // Called after each sweep when set (CPU: every sweep; CUDA: at each check).
+  int check_every = 4;            // CUDA MultiBlock: sweeps between host checks of the stop flag
+                                  // (SingleBlock and Coloured run the whole loop in one launch)
+  // CUDA Coloured: skip a node when neither it nor a neighbour moved since it
+  // was last evaluated; the same inputs would give the same rejection, so the
+  // result is unchanged (kernels/cuda/coloured_loop_kernel.cuh).
+  bool skip_settled = true;
+  // Called after each sweep when set (CPU: every sweep; CUDA: at each host
+  // check, for SingleBlock and Coloured once the loop has ended).
   std::function<void(const SweepProgress&)> progress;
 };
 
@@ -54,6 +60,7 @@ struct SmoothResult {
   std::vector<std::int64_t> accepted_per_sweep;
   std::vector<double> max_displacement_per_sweep;
   std::int64_t reverted_moves = 0;  // Form A: accepted moves undone by the conflict repair
+  std::int64_t evaluations = 0;     // node evaluations over all sweeps (movable x sweeps unless skipped)
   int num_colours = 0;
   std::size_t movable_nodes = 0;
   double mean_edge_length = 0;

@@ -193,6 +193,7 @@ SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& opt, const Colouring
   else
     run_sweeps<false>(mesh, topo, colouring, opt, threads, tol_abs, result);
   result.smoothing_ms = ms_since(t0);
+  result.evaluations = static_cast<std::int64_t>(result.movable_nodes) * result.sweeps;
   result.after = summarize_quality(mesh, topo.movable);
   return result;
 }

@@ -2,7 +2,8 @@
 // colour_nodes() (mesh/colouring.cpp): same priorities, same first-fit rule,
 // so the same colours and the same number of rounds.
 //
-// Each round is one kernel over all nodes. A node's state is round_of[i]:
+// All rounds run in one cooperative launch, a grid barrier between rounds,
+// kColourLanes threads per node. A node's state is round_of[i]:
 // 0 for nodes that never move, r >= 1 for the round that coloured it,
 // kUncoloured while it waits. Round r only treats a neighbour j as coloured
 // when round_of[j] < r, so it sees exactly the colours of earlier rounds:
@@ -11,23 +12,27 @@
 //  * a neighbour reading round_of[i] of such a winner gets kUncoloured or r,
 //    both >= r, so it decides the same either way (and it loses to i, which
 //    beats all its uncoloured neighbours);
-//  * colour[j] is only read when round_of[j] < r, i.e. written by an earlier
-//    kernel on the same stream, never by this one;
+//  * colour[j] is only read when round_of[j] < r, i.e. written before an
+//    earlier barrier, never in this round;
 //  * two winners are never neighbours: colours_before is a strict order.
 //
-// The host reads the per-round "still waiting" counts back once per batch of
-// rounds; rounds past the last one find nothing to do.
+// The device stops after the first round that leaves no node waiting; the
+// host reads the numbers of rounds and colours back once.
 //
 // Classes: the colours (non-movable nodes as the sentinel num_colours) are
 // radix sorted with the node indices as values; the sort is stable, so each
 // class lists its nodes ascending, and only the bits of num_colours are sorted.
+#include <cooperative_groups.h>
 #include <cub/device/device_radix_sort.cuh>
+
+#include <algorithm>
 
 #include <string>
 
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_topology.hpp"
 #include "kernels/cuda/device_topology_detail.cuh"
+#include "kernels/cuda/lane_groups.cuh"
 #include "mesh/colouring.hpp"
 #include "mesh/errors.hpp"
 
@@ -38,11 +43,13 @@ using detail::blocks_for;
 using detail::kBlock;
 
 constexpr unsigned kUncoloured = 0xffffffffu;
-constexpr int kRoundsPerCheck = 8;
 
+// Written by the device, read back once. Round r counts its waiting nodes
+// into waiting[r % 3]: a slot is cleared two rounds after it was read.
 struct RoundCounts {
-  unsigned waiting[kRoundsPerCheck];  // movable nodes still uncoloured after each round of the batch
+  unsigned waiting[3];
   int max_colour;
+  unsigned rounds;  // rounds taken; 0 if the loop gave up
 };
 
 __global__ void init_rounds(std::size_t n, const std::uint8_t* movable, unsigned* round_of) {
@@ -50,21 +57,16 @@ __global__ void init_rounds(std::size_t n, const std::uint8_t* movable, unsigned
   if (i < n) round_of[i] = movable[i] ? kUncoloured : 0u;
 }
 
-__device__ bool beats_waiting_neighbours(const index_t* nbr, index_t b, index_t e, const unsigned* round_of,
-                                         unsigned r, index_t i) {
-  for (index_t k = b; k < e; ++k) {
-    const index_t j = nbr[k];
-    if (round_of[j] >= r && colours_before(static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i)))
-      return false;
-  }
-  return true;
-}
+// Threads per node in a round: two read a node's ~14 neighbours, and the
+// ~270k resident threads then take all of a 109k-node mesh at once (on an
+// H100 two lanes coloured 109k nodes in 0.66 ms, eight in 0.72 ms).
+constexpr int kColourLanes = 2;
 
 // The smallest colour none of the earlier-coloured neighbours has, looked
-// for 64 colours at a time.
+// for 64 colours at a time, on one thread (the rare case of 64+ colours).
 __device__ int first_free_colour(const index_t* nbr, index_t b, index_t e, const unsigned* round_of,
-                                 const int* colour, unsigned r) {
-  for (int base = 0;; base += 64) {
+                                 const int* colour, unsigned r, int from) {
+  for (int base = from;; base += 64) {
     unsigned long long used = 0;
     for (index_t k = b; k < e; ++k) {
       const index_t j = nbr[k];
@@ -76,27 +78,69 @@ __device__ int first_free_colour(const index_t* nbr, index_t b, index_t e, const
   }
 }
 
-// Launched over whole blocks: the block and warp reductions need every thread.
-__global__ void colour_round(std::size_t n, const index_t* nbr_off, const index_t* nbr, unsigned r,
-                             unsigned* round_of, int* colour, unsigned* waiting, int* max_colour) {
-  const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
-  bool waits = false;
-  int picked = -1;
-  if (i < n && round_of[i] == kUncoloured) {
-    const auto node = static_cast<index_t>(i);
-    const index_t b = nbr_off[i], e = nbr_off[i + 1];
-    if (beats_waiting_neighbours(nbr, b, e, round_of, r, node)) {
-      picked = first_free_colour(nbr, b, e, round_of, colour, r);
-      colour[i] = picked;
-      round_of[i] = r;
+// Round r for node i on the G lanes of its group (mask: those lanes).
+// Returns whether i must wait for a later round; sets `picked` on lane 0
+// when i takes a colour now.
+__device__ bool colour_node(std::size_t i, const index_t* nbr_off, const index_t* nbr, unsigned r,
+                            unsigned* round_of, int* colour, int lane, unsigned mask, int& picked) {
+  constexpr int G = kColourLanes;
+  const bool candidate = round_of[i] == kUncoloured;
+  if (!candidate) return false;  // the whole group leaves together
+  const index_t b = nbr_off[i], e = nbr_off[i + 1];
+  bool beaten = false;
+  unsigned long long used = 0;  // colours 0..63 of neighbours coloured in earlier rounds
+  for (index_t k = b + lane; k < e; k += G) {
+    const index_t j = nbr[k];
+    if (round_of[j] >= r) {
+      beaten = beaten || colours_before(static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i));
     } else {
-      waits = true;
+      const int c = colour[j];  // -1 for nodes that never move
+      if (c >= 0 && c < 64) used |= 1ull << c;
     }
   }
-  const int block_waiting = __syncthreads_count(waits);
-  if (threadIdx.x == 0 && block_waiting > 0) atomicAdd(waiting, static_cast<unsigned>(block_waiting));
-  const int warp_max = __reduce_max_sync(0xffffffffu, picked);
-  if (threadIdx.x % 32 == 0 && warp_max >= 0) atomicMax(max_colour, warp_max);
+  beaten = group_or<G>(static_cast<unsigned>(beaten), mask) != 0;
+  used = group_or<G>(used, mask);
+  if (beaten) return true;
+  if (lane == 0) {
+    picked = ~used != 0 ? __ffsll(static_cast<long long>(~used)) - 1
+                        : first_free_colour(nbr, b, e, round_of, colour, r, 64);
+    colour[i] = picked;
+    round_of[i] = r;
+  }
+  return false;
+}
+
+// Every round in one cooperative launch, a grid barrier between rounds;
+// stops after the first round that leaves no node waiting. Groups of G
+// lanes take the nodes in a grid-stride loop.
+__global__ void __launch_bounds__(kBlock) colour_rounds_kernel(std::size_t n, const index_t* nbr_off,
+                                                               const index_t* nbr, unsigned* round_of, int* colour,
+                                                               RoundCounts* counts, unsigned max_rounds) {
+  namespace cg = cooperative_groups;
+  constexpr int G = kColourLanes;
+  cg::grid_group grid = cg::this_grid();
+  const unsigned long long tid = grid.thread_rank(), groups = grid.size() / G;
+  const int lane = static_cast<int>(tid % G);
+  const unsigned mask = group_mask<G>();
+  for (unsigned r = 1; r <= max_rounds; ++r) {
+    unsigned waiting = 0;
+    int picked = -1;
+    for (unsigned long long i = tid / G; i < n; i += groups)
+      waiting += colour_node(i, nbr_off, nbr, r, round_of, colour, lane, mask, picked) && lane == 0;
+    __syncwarp();
+    for (int offset = 16; offset > 0; offset >>= 1) waiting += __shfl_down_sync(0xffffffffu, waiting, offset);
+    const int warp_max = __reduce_max_sync(0xffffffffu, picked);
+    if ((threadIdx.x & 31) == 0) {
+      if (waiting) atomicAdd(&counts->waiting[r % 3], waiting);
+      if (warp_max >= 0) atomicMax(&counts->max_colour, warp_max);
+    }
+    if (tid == 0) counts->waiting[(r + 1) % 3] = 0;
+    grid.sync();
+    if (__ldcg(&counts->waiting[r % 3]) == 0) {
+      if (tid == 0) counts->rounds = r;
+      return;
+    }
+  }
 }
 
 __global__ void class_keys(std::size_t n, const int* colour, std::uint32_t sentinel, std::uint32_t* keys,
@@ -129,25 +173,29 @@ void run_rounds(DeviceTopology& topo, cudaStream_t stream) {
 
   init_rounds<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.movable.data(), round_of);
   CUDA_CHECK_LAUNCH();
+  CUDA_CHECK(cudaMemsetAsync(counts, 0, sizeof(RoundCounts), stream));
   CUDA_CHECK(cudaMemsetAsync(&counts->max_colour, 0xff, sizeof(int), stream));
+  // As many blocks as can be resident at once (the grid barrier needs that).
+  int device = 0, sms = 0, per_sm = 0;
+  CUDA_CHECK(cudaGetDevice(&device));
+  CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
+  CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_sm, colour_rounds_kernel, kBlock, 0));
+  const unsigned blocks = std::max(1u, std::min(blocks_for(n * kColourLanes), static_cast<unsigned>(per_sm * sms)));
+  const index_t* nbr_off = topo.nbr_off.data();
+  const index_t* nbr = topo.nbr.data();
+  int* colour = topo.colour.data();
   // Every round colours at least the waiting node of highest priority.
-  for (unsigned first = 1; first <= topo.movable_count; first += kRoundsPerCheck) {
-    CUDA_CHECK(cudaMemsetAsync(counts->waiting, 0, sizeof(counts->waiting), stream));
-    for (int s = 0; s < kRoundsPerCheck; ++s) {
-      colour_round<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.nbr_off.data(), topo.nbr.data(), first + s,
-                                                         round_of, topo.colour.data(), &counts->waiting[s],
-                                                         &counts->max_colour);
-      CUDA_CHECK_LAUNCH();
-    }
-    RoundCounts host{};
-    CUDA_CHECK(cudaMemcpyAsync(&host, counts, sizeof(RoundCounts), cudaMemcpyDeviceToHost, stream));
-    CUDA_CHECK(cudaStreamSynchronize(stream));
-    for (int s = 0; s < kRoundsPerCheck; ++s)
-      if (host.waiting[s] == 0) {
-        topo.colour_rounds = static_cast<int>(first) + s;
-        topo.num_colours = host.max_colour + 1;
-        return;
-      }
+  auto max_rounds = static_cast<unsigned>(topo.movable_count);
+  void* params[] = {const_cast<std::size_t*>(&n), &nbr_off, &nbr, &round_of, &colour, &counts, &max_rounds};
+  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(colour_rounds_kernel), dim3(blocks),
+                                         dim3(kBlock), params, 0, stream));
+  RoundCounts host{};
+  CUDA_CHECK(cudaMemcpyAsync(&host, counts, sizeof(RoundCounts), cudaMemcpyDeviceToHost, stream));
+  CUDA_CHECK(cudaStreamSynchronize(stream));
+  if (host.rounds > 0) {
+    topo.colour_rounds = static_cast<int>(host.rounds);
+    topo.num_colours = host.max_colour + 1;
+    return;
   }
   throw DeviceError("colour_device: Jones-Plassmann left nodes uncoloured after " +
                     std::to_string(topo.movable_count) + " rounds");

@@ -8,7 +8,8 @@
 //             node becomes the sentinel N << w, which sorts last and falls in
 //             no row; the sort visits 2w bits.
 //   incidence node << u | tet, 4 per tet; a repeated node's second entry is a
-//             sentinel N << u, so each (node, tet) appears once, as on the CPU.
+//             sentinel N << u, so each (node, tet) appears once, as on the CPU;
+//             the sort visits only the w node bits (stable, keys in tet order).
 //   face      see device_topology_boundary.cu (64 or 96 bits).
 //
 // Memory, to size a run (bytes per tet T; a lattice has N ~ T / 6):
@@ -49,19 +50,25 @@ struct BuildCounts {
   unsigned movable;
 };
 
+// One thread per key, so neighbouring threads write neighbouring keys: key
+// 12t + 2p + d is edge p of tet t ((0,1) (0,2) (0,3) (1,2) (1,3) (2,3)),
+// forward for d = 0 and reversed for d = 1.
 __global__ void emit_edges(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int w,
                            std::uint64_t* keys) {
-  const std::size_t t = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
-  if (t >= num_tets) return;
-  std::uint64_t v[4];
-  for (int k = 0; k < 4; ++k) v[k] = static_cast<std::uint32_t>(tets[4 * t + k]);
-  std::uint64_t* out = keys + 12 * t;
-  for (int a = 0; a < 4; ++a)
-    for (int b = a + 1; b < 4; ++b) {
-      const bool loop = v[a] == v[b];
-      *out++ = loop ? num_nodes << w : (v[a] << w | v[b]);
-      *out++ = loop ? num_nodes << w : (v[b] << w | v[a]);
-    }
+  const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (k >= 12 * num_tets) return;
+  const std::size_t t = k / 12;
+  const int p = static_cast<int>(k % 12) / 2;
+  const int first = p < 3 ? 0 : (p < 5 ? 1 : 2);
+  const int second = p < 3 ? p + 1 : (p < 5 ? p - 1 : 3);
+  std::uint64_t a = static_cast<std::uint32_t>(tets[4 * t + first]);
+  std::uint64_t b = static_cast<std::uint32_t>(tets[4 * t + second]);
+  if (k & 1) {
+    const std::uint64_t swap = a;
+    a = b;
+    b = swap;
+  }
+  keys[k] = a == b ? num_nodes << w : (a << w | b);
 }
 
 __global__ void emit_incidence(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int u,
@@ -124,7 +131,7 @@ std::size_t cub_temp_bytes(std::size_t num_tets, std::size_t num_nodes, int w, i
   CUDA_CHECK(cub::DeviceSelect::Unique(nullptr, bytes, none.Current(), none.Current(),
                                        static_cast<unsigned long long*>(nullptr), 12 * num_tets));
   need = std::max(need, bytes);
-  CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, 0, w + u));
+  CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, u, w + u));
   return std::max(need, bytes);
 }
 
@@ -153,7 +160,7 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   // Neighbours: 12 directed edges per tet, sorted, made unique; rows follow.
   cub::DoubleBuffer<std::uint64_t> edges(s.keys[0], s.keys[1]);
   if (nt > 0) {
-    emit_edges<<<blocks_for(nt), kBlock, 0, stream>>>(d_tets, nt, n, w, s.keys[0]);
+    emit_edges<<<blocks_for(12 * nt), kBlock, 0, stream>>>(d_tets, nt, n, w, s.keys[0]);
     CUDA_CHECK_LAUNCH();
     CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, edges, 12 * nt, 0, 2 * w, stream));
     CUDA_CHECK(cub::DeviceSelect::Unique(s.temp, temp_size, edges.Current(), edges.Alternate(),
@@ -172,7 +179,9 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   if (nt > 0) {
     emit_incidence<<<blocks_for(nt), kBlock, 0, stream>>>(d_tets, nt, n, u, inc.Current());
     CUDA_CHECK_LAUNCH();
-    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, inc, 4 * nt, 0, w + u, stream));
+    // Keys are emitted in tet order and the radix sort is stable, so sorting
+    // the node bits alone leaves each row's tets ascending.
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, inc, 4 * nt, u, w + u, stream));
   }
   detail::csr_from_sorted<<<blocks_for(4 * nt + 1), kBlock, 0, stream>>>(
       detail::PackedRows{inc.Current(), u}, static_cast<const unsigned long long*>(nullptr), 4 * nt, rows,

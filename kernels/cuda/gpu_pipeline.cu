@@ -48,6 +48,8 @@ struct GpuPipeline::Impl {
   DeviceBuffer<double> input;           // 3n, AoS, mesh units
   DeviceBuffer<double> buf0, buf1;      // working coordinates (3n Real)
   DeviceBuffer<double> old_min;         // n Real
+  DeviceBuffer<double> tet_quality;     // t Real (Coloured)
+  DeviceBuffer<int> moved_at;           // n (Coloured)
   DeviceBuffer<std::uint8_t> moved, revert;
   DeviceBuffer<SweepState> state;
   DeviceBuffer<unsigned long long> accepted, max_disp2;
@@ -56,7 +58,7 @@ struct GpuPipeline::Impl {
   SweepState* host_state = nullptr;     // pinned
   DeviceTopology topo;
   std::vector<index_t> override_off;
-  DeviceBuffer<index_t> override_nodes;
+  DeviceBuffer<index_t> override_off_dev, override_nodes;
   // What restore_coordinates loaded, and where the result of the last run is.
   Precision precision = Precision::Double;
   Layout layout = Layout::AoS;
@@ -102,6 +104,8 @@ GpuPipeline::GpuPipeline(const TetMesh& mesh) : impl_(std::make_unique<Impl>()) 
   m.buf0.resize(3 * m.n);
   m.buf1.resize(3 * m.n);
   m.old_min.resize(m.n);
+  m.tet_quality.resize(m.t);
+  m.moved_at.resize(m.n);
   m.moved.resize(m.n);
   m.revert.resize(m.n);
   m.output.resize(3 * m.n);
@@ -190,19 +194,23 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   CUDA_CHECK_LAUNCH();
   e_topo.record(m.stream);
 
-  const std::vector<index_t>* class_off = nullptr;
+  const std::vector<index_t>* class_off = nullptr;  // host copy
+  const index_t* class_off_dev = nullptr;
   const index_t* class_nodes = nullptr;
   int num_colours = 0;
   if (o.strategy == Strategy::Coloured) {
     if (colouring) {
       m.override_off = colouring->classes.offsets;
       m.override_nodes.upload(colouring->classes.items, m.stream);
+      m.override_off_dev.upload(m.override_off, m.stream);
       class_off = &m.override_off;
+      class_off_dev = m.override_off_dev.data();
       class_nodes = m.override_nodes.data();
       num_colours = colouring->num_colours;
     } else {
       colour_device(m.topo, m.stream);
       class_off = &m.topo.class_off_host;
+      class_off_dev = m.topo.class_off.data();
       class_nodes = m.topo.class_nodes.data();
       num_colours = m.topo.num_colours;
     }
@@ -223,7 +231,13 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   a.host_state = m.host_state;
   a.counters = SweepCounters{m.accepted.data(), m.max_disp2.data(), m.repair_found.data()};
   a.class_nodes = class_nodes;
-  a.class_off = class_off;
+  a.class_off = class_off_dev;
+  a.num_colours = class_off ? static_cast<int>(class_off->size()) - 1 : 0;
+  if (class_off)
+    for (std::size_t c = 0; c + 1 < class_off->size(); ++c)
+      a.largest_class = std::max(a.largest_class, (*class_off)[c + 1] - (*class_off)[c]);
+  a.tet_quality = m.tet_quality.data();
+  a.moved_at = m.moved_at.data();
   a.stream = m.stream;
   const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
   e_end.record(m.stream);
@@ -243,6 +257,11 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   r.sweeps = st.sweep;
   r.stop = o.max_iterations == 0 ? StopReason::MaxIterations : to_stop_reason(static_cast<SweepVerdict>(st.verdict));
   r.reverted_moves = static_cast<std::int64_t>(st.reverted);
+  // Only the coloured loop skips nodes; the other strategies evaluate every
+  // movable node in every sweep.
+  r.evaluations = o.strategy == Strategy::Coloured
+                      ? static_cast<std::int64_t>(st.evaluated)
+                      : static_cast<std::int64_t>(m.topo.movable_count) * st.sweep;
   r.num_colours = num_colours;
   r.movable_nodes = m.topo.movable_count;
   r.mean_edge_length = (st.edge_count ? st.edge_sum / static_cast<double>(st.edge_count) : 0.0) * (is_float ? m.scale : 1.0);

@@ -1,15 +1,18 @@
 #pragma once
-// The smoothing kernels: one per-node body (smooth_node, around the shared
-// evaluate_node) used by every strategy.
-//   MultiBlock: one thread per node, a launch per sweep (the paper's).
-//   Coloured:   MultiBlock over one colour class at a time; nodes of one
-//               colour share no tet, so in-place updates are race-free.
+// The smoothing kernels: one per-node body (the shared evaluate_node of
+// node_update.hpp, split over a group of lanes where several threads share a
+// node) used by every strategy.
+//   MultiBlock: a thread group per node, a launch per sweep (the paper's).
+//   Coloured:   one colour class at a time, all sweeps in one cooperative
+//               launch (coloured_loop_kernel.cuh); nodes of one colour share
+//               no tet, so in-place updates are race-free.
 //   SingleBlock: one block of 1024 threads runs every sweep in one launch,
 //               __syncthreads() between sweeps.
 // Form A (Jacobi) reads `read` and writes `write`; Form B reads and writes
 // `read` in place (racy under MultiBlock and SingleBlock, as in the paper).
 #include <cuda_runtime.h>
 
+#include "kernels/cuda/lane_groups.cuh"
 #include "kernels/cuda/sweep_state.cuh"
 #include "kernels/node_update.hpp"
 #include "kernels/smooth_options.hpp"
@@ -18,9 +21,8 @@ namespace tetsmooth::cuda {
 
 inline constexpr int kSingleBlockThreads = 1024;
 
-// Threads that share one node in MultiBlock and Coloured sweeps: a small
-// colour class has too few nodes to fill the GPU with one thread each, and
-// each node's ~25 incident tets would run one after another.
+// Threads that share one node in MultiBlock sweeps: each node's ~25
+// incident tets would otherwise run one after another on one thread.
 inline constexpr int kLanesPerNode = 8;
 
 // Applies an evaluated move; returns whether the node moved.
@@ -46,64 +48,61 @@ __device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& rea
   return apply_move<Real, F>(evaluate_node<Real, kAdaptive>(m, read, i), read, write, i, old_min, moved, disp2);
 }
 
-// Sum over a group of G lanes, the total taken from lane 0 so every lane
-// holds bit-identical values.
-template <int G, class T>
-__device__ __forceinline__ T group_sum(T v) {
-  for (int offset = G / 2; offset > 0; offset >>= 1) v += __shfl_down_sync(0xffffffffu, v, offset, G);
-  return __shfl_sync(0xffffffffu, v, 0, G);
-}
-
-template <int G, class T>
-__device__ __forceinline__ T group_min(T v) {
-  for (int offset = G / 2; offset > 0; offset >>= 1) {
-    const T w = __shfl_xor_sync(0xffffffffu, v, offset, G);
-    v = w < v ? w : v;
-  }
-  return v;
-}
-
 // evaluate_node split over the G lanes of a group (lane = this thread's
-// place in it). Every lane of the warp must call it; lanes of an inactive
-// group contribute nothing. All lanes of a group return the same move.
-template <class Real, bool kAdaptive, int G, class Coords>
-__device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
-                                                              bool active) {
-  Vec3<Real> p{0, 0, 0}, sum{0, 0, 0};
-  if (active) {
-    p = xyz.get(i);
-    sum = neighbour_sum<Real>(m, xyz, i, lane, G);
-  }
-  sum = Vec3<Real>{group_sum<G>(sum.x), group_sum<G>(sum.y), group_sum<G>(sum.z)};
+// place in it), in two steps so that a caller can act between them. Every
+// lane named in `mask` (lane_groups.cuh) must call them; lanes of an inactive
+// group contribute nothing. All lanes of a group get the same result.
+
+// The centroid of node i's neighbours; `visit` as in neighbour_sum.
+template <class Real, int G, class Coords, class Visit = IgnoreNeighbour>
+__device__ __forceinline__ Vec3<Real> centroid_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
+                                                     bool active, unsigned mask = 0xffffffffu, Visit&& visit = {}) {
+  Vec3<Real> sum{0, 0, 0};
+  if (active) sum = neighbour_sum<Real>(m, xyz, i, lane, G, visit);
+  sum = Vec3<Real>{group_sum<G>(sum.x, mask), group_sum<G>(sum.y, mask), group_sum<G>(sum.z, mask)};
   const Real degree = active ? Real(m.nbr_off[i + 1] - m.nbr_off[i]) : Real(1);
-  const Vec3<Real> target = (Real(1) / degree) * sum;
+  return (Real(1) / degree) * sum;
+}
+
+// The decision on moving node i from p to target; `old_quality` and
+// `keep_new` as in star_quality (node_update.hpp).
+template <class Real, bool kAdaptive, int G, class Coords, class OldQuality = FreshOldQuality,
+          class KeepNew = IgnoreNewQuality>
+__device__ __forceinline__ NodeMove<Real> judge_move_group(const MeshView& m, const Coords& xyz, index_t i,
+                                                           Vec3<Real> p, Vec3<Real> target, int lane, bool active,
+                                                           const OldQuality& old_quality = {},
+                                                           unsigned mask = 0xffffffffu, KeepNew&& keep_new = {}) {
   StarQuality<Real> sq{Real(1), Real(1), true};
   if (kAdaptive) {
     sq = StarQuality<Real>{Real(2), Real(2), true};
-    if (active) sq = star_quality(m, xyz, i, p, target, lane, G);
-    sq.old_min = group_min<G>(sq.old_min);
-    sq.new_min = group_min<G>(sq.new_min);
-    sq.valid = group_min<G>(static_cast<int>(sq.valid)) != 0;
+    if (active) sq = star_quality(m, xyz, i, p, target, lane, G, old_quality, keep_new);
+    sq.old_min = group_min<G>(sq.old_min, mask);
+    sq.new_min = group_min<G>(sq.new_min, mask);
+    sq.valid = group_min<G>(static_cast<int>(sq.valid), mask) != 0;
   }
   return decide_move<Real, kAdaptive>(p, target, sq);
 }
 
-// One sweep (MultiBlock: nodes == nullptr, all N nodes) or one colour class,
-// kLanesPerNode threads per node. Form A leaves the counting to
-// count_moves_kernel, after the repair.
+template <class Real, bool kAdaptive, int G, class Coords>
+__device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
+                                                              bool active) {
+  const Vec3<Real> p = active ? xyz.get(i) : Vec3<Real>{0, 0, 0};
+  const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, active);
+  return judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active);
+}
+
+// One MultiBlock sweep over all N nodes, kLanesPerNode threads per node.
+// Form A leaves the counting to count_moves_kernel, after the repair.
 template <class Real, bool kAdaptive, Form F, class Coords>
-__global__ void sweep_kernel(MeshView m, Coords read, Coords write, const index_t* nodes, index_t count,
-                             const std::uint8_t* movable, Real* old_min, std::uint8_t* moved, SweepState* st,
-                             SweepCounters c) {
+__global__ void sweep_kernel(MeshView m, Coords read, Coords write, index_t n, const std::uint8_t* movable,
+                             Real* old_min, std::uint8_t* moved, SweepState* st, SweepCounters c) {
   if (st->done) return;
   constexpr int G = kLanesPerNode;
   const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
-  const index_t k = static_cast<index_t>(gid / G);
+  const index_t i = static_cast<index_t>(gid / G);
   const int lane = static_cast<int>(gid % G);
-  bool active = k < count;
-  const index_t i = active ? (nodes ? nodes[k] : k) : 0;
-  active = active && (nodes || movable[i]);
-  const NodeMove<Real> mv = evaluate_node_group<Real, kAdaptive, G>(m, read, i, lane, active);
+  const bool active = i < n && movable[i];
+  const NodeMove<Real> mv = evaluate_node_group<Real, kAdaptive, G>(m, read, active ? i : 0, lane, active);
   unsigned accepted = 0;
   double disp2 = 0;
   if (active && lane == 0) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);

@@ -1,6 +1,7 @@
 #pragma once
 // The host side of the sweep loop: launches sweeps per strategy and reads
-// the device's stop flag every `check_every` sweeps.
+// the device's stop flag every `check_every` sweeps; Coloured runs the whole
+// loop in one cooperative launch (coloured_loop_kernel.cuh).
 #include <cuda_runtime.h>
 
 #include <vector>
@@ -24,7 +25,11 @@ struct SweepLoopArgs {
   SweepState* host_state = nullptr;  // pinned
   SweepCounters counters{};
   const index_t* class_nodes = nullptr;
-  const std::vector<index_t>* class_off = nullptr;  // host copy, num_colours + 1
+  const index_t* class_off = nullptr;  // device, num_colours + 1
+  int num_colours = 0;
+  index_t largest_class = 0;
+  void* tet_quality = nullptr;  // Coloured: num_tets Real
+  int* moved_at = nullptr;      // Coloured: n
   cudaStream_t stream = nullptr;
 };
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "kernels/cuda/coloured_loop_kernel.cuh"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/sweep_kernels.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
@@ -54,8 +55,9 @@ class SweepLauncher {
           o_.max_iterations);
       CUDA_CHECK_LAUNCH();
       ++stats_.launches;
-      return stats_;
+      return finish_on_device();
     }
+    if (o_.strategy == Strategy::Coloured) return run_coloured();
     for (int s = 0; s < o_.max_iterations;) {
       const int chunk = std::min(o_.check_every, o_.max_iterations - s);
       for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
@@ -74,21 +76,9 @@ class SweepLauncher {
   void launch_sweep(int s) {
     const Coords& read = (F == Form::A && (s & 1)) ? c1_ : c0_;
     const Coords& write = (F == Form::A && (s & 1)) ? c0_ : c1_;
-    if (o_.strategy == Strategy::Coloured) {
-      const std::vector<index_t>& off = *a_.class_off;
-      for (std::size_t c = 0; c + 1 < off.size(); ++c) {
-        const index_t count = off[c + 1] - off[c];
-        if (count == 0) continue;
-        sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(count), kBlock, 0, a_.stream>>>(
-            a_.view, read, write, a_.class_nodes + off[c], count, a_.movable, old_min(), a_.moved, a_.state,
-            a_.counters);
-        launched();
-      }
-    } else {
-      sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(a_.n), kBlock, 0, a_.stream>>>(
-          a_.view, read, write, nullptr, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
-      launched();
-    }
+    sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(a_.n), kBlock, 0, a_.stream>>>(
+        a_.view, read, write, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
+    launched();
     if (F == Form::A) {
       for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
         repair_check_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(
@@ -104,6 +94,48 @@ class SweepLauncher {
     }
     verdict_kernel<<<1, 1, 0, a_.stream>>>(a_.state, a_.counters, o_.max_iterations);
     launched();
+  }
+
+  // Coloured Form B: one cooperative launch with as many blocks as fit on
+  // the device at once (a grid barrier needs them all resident), fewer when
+  // the largest class needs fewer.
+  SweepLoopStats run_coloured() {
+    const auto kernel = coloured_loop_kernel<Real, kAdaptive, Coords>;
+    int device = 0, sms = 0, per_sm = 0;
+    CUDA_CHECK(cudaGetDevice(&device));
+    CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
+    CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_sm, kernel, kColouredBlock, 0));
+    if (per_sm < 1) throw DeviceError("coloured sweep kernel: no block fits on a multiprocessor");
+    const std::size_t wanted =
+        (static_cast<std::size_t>(std::max<index_t>(a_.largest_class, 1)) * kColouredLanes + kColouredBlock - 1) /
+        kColouredBlock;
+    const unsigned blocks = static_cast<unsigned>(std::min<std::size_t>(wanted, static_cast<std::size_t>(per_sm) * sms));
+    MeshView view = a_.view;
+    Coords xyz = c0_;
+    ColourClassesView cls{a_.class_off, a_.class_nodes, a_.num_colours};
+    Real* tet_q = static_cast<Real*>(a_.tet_quality);
+    int* moved_at = a_.moved_at;
+    index_t n = a_.n, num_tets = a_.num_tets;
+    SweepState* st = a_.state;
+    SweepCounters counters = a_.counters;
+    int max_iterations = o_.max_iterations;
+    bool skip = o_.skip_settled;
+    void* params[] = {&view, &xyz, &cls, &tet_q, &moved_at, &n, &num_tets, &st, &counters, &max_iterations, &skip};
+    CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(kColouredBlock),
+                                           params, 0, a_.stream));
+    launched();
+    return finish_on_device();
+  }
+
+  // After a loop that ran entirely on the device: the host waits only when
+  // it has progress to report (the caller reads the final state anyway).
+  SweepLoopStats finish_on_device() {
+    if (!o_.progress) return stats_;
+    CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
+    CUDA_CHECK(cudaStreamSynchronize(a_.stream));
+    ++stats_.host_checks;
+    report_progress();
+    return stats_;
   }
 
   void launched() {

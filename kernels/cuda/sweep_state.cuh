@@ -13,6 +13,7 @@ struct SweepState {
   int verdict; // SweepVerdict of the last sweep
   int pad;
   unsigned long long reverted;  // Form A moves undone by the conflict repair
+  unsigned long long evaluated; // node evaluations skipped by nobody (coloured loop only)
   double edge_sum;              // for the mean edge length
   unsigned long long edge_count;
   double tol_abs;               // tolerance x mean edge length, working units

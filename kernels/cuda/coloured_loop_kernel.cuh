@@ -1,0 +1,137 @@
+#pragma once
+// Coloured Form B with the whole sweep loop in one cooperative launch: grid
+// barriers separate the colour classes instead of kernel launches, and after
+// a sweep's last colour every block applies the stopping rule to the same
+// finished counters, so the host neither launches per colour nor looks at
+// the device between sweeps. The order of updates is the CPU's coloured
+// order: within a sweep, colour by colour.
+//
+// A node's latency sets the pace (a class is small: ~1/12 of the nodes), so
+// a whole warp takes each node (kColouredLanes): its ~25 tets are one or two
+// per lane instead of a few one after another.
+//
+// Two savings that leave every decision as it was:
+//  * tet_q caches each tet's radius ratio at the current coordinates. A
+//    node that moves rewrites the entries of its incident tets; nodes of one
+//    colour share no tet, so those writes never collide. A star's current
+//    minimum is then read, and only the quality at the target is computed
+//    (and kept for the update). An entry is what a fresh computation would
+//    give: the same function of the same coordinates.
+//  * moved_at[j] is the step (sweep * colours + colour) of node j's last
+//    move, -1 before any. A node's decision depends only on its own position
+//    and its neighbours' (the corners of its star are exactly its
+//    neighbours), so when none of them moved since the node was last looked
+//    at, one sweep earlier, the same inputs would give the same rejection
+//    and the node is skipped (skip_settled; a test compares runs with and
+//    without it bit for bit). The steps are read in the same pass as the
+//    neighbours' positions.
+#include <cooperative_groups.h>
+
+#include "kernels/cuda/sweep_kernels.cuh"
+
+namespace tetsmooth::cuda {
+
+inline constexpr int kColouredBlock = 256;
+inline constexpr int kColouredLanes = 32;
+
+// Colour classes on the device: class c lists nodes[off[c] .. off[c+1]).
+struct ColourClassesView {
+  const index_t* off;  // count + 1
+  const index_t* nodes;
+  int count;
+};
+
+// Resident blocks per multiprocessor asked of the compiler: more blocks
+// take more of a class at once, but cap the registers per thread. Double
+// needs ~110 registers: two blocks; three spill, and ran slower on an H100.
+template <class Real>
+inline constexpr int kColouredMinBlocks = sizeof(Real) == 4 ? 3 : 2;
+
+template <class Real, bool kAdaptive, class Coords>
+__global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
+    coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* moved_at, index_t n,
+                         index_t num_tets, SweepState* st, SweepCounters c, int max_iterations, bool skip_settled) {
+  namespace cg = cooperative_groups;
+  constexpr int G = kColouredLanes;
+  cg::grid_group grid = cg::this_grid();
+  const unsigned long long tid = grid.thread_rank(), threads = grid.size();
+  if (kAdaptive)
+    for (unsigned long long t = tid; t < static_cast<unsigned long long>(num_tets); t += threads) {
+      const index_t* tet = m.tets + 4 * t;
+      tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
+    }
+  for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) moved_at[i] = -1;
+  grid.sync();
+
+  // Whole warps step through a class together (blockDim is a multiple of
+  // 32 and of G), so a group's shuffles find all of its lanes.
+  const long long groups = static_cast<long long>(threads / G), group = static_cast<long long>(tid / G);
+  const int lane = static_cast<int>(tid % G);
+  const unsigned mask = group_mask<G>();
+  const CachedOldQuality<Real> cached{tet_q};
+  for (int s = 0; s < max_iterations; ++s) {
+    unsigned accepted = 0;
+    unsigned evaluated = 0;
+    double disp2 = 0;
+    for (int col = 0; col < cls.count; ++col) {
+      const long long begin = cls.off[col], end = cls.off[col + 1];
+      const int step = s * cls.count + col;
+      for (long long base = begin; base < end; base += groups) {
+        const long long k = base + group;
+        const bool in_class = k < end;
+        const index_t i = in_class ? cls.nodes[k] : 0;
+        int latest = in_class && lane == 0 ? moved_at[i] : -1;
+        const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, in_class, mask,
+                                                          [&](index_t j) { latest = max(latest, moved_at[j]); });
+        // Settled: nothing in the neighbourhood moved since the previous
+        // sweep's look at this node (at step - colours).
+        const bool active =
+            in_class && (!skip_settled || s == 0 || group_max<G>(latest, mask) >= step - cls.count);
+        const Vec3<Real> p = active ? xyz.get(i) : Vec3<Real>{0, 0, 0};
+        // A lane's first tet (its only one unless the node has more than G)
+        // keeps its quality at the target for the cache update.
+        index_t first_k = -1;
+        Real first_q = 0;
+        const NodeMove<Real> mv = judge_move_group<Real, kAdaptive, G>(
+            m, xyz, i, p, target, lane, active, cached, mask, [&](index_t k, Real q) {
+              if (first_k < 0) {
+                first_k = k;
+                first_q = q;
+              }
+            });
+        if (active && mv.accept && mv.displacement2 > Real(0)) {
+          // tet_quality_with never reads node i's stored position, so lane 0
+          // may overwrite it meanwhile.
+          if (kAdaptive)
+            for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G)
+              tet_q[m.inc[e]] = e == first_k ? first_q : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
+          if (lane == 0) {
+            xyz.set(i, mv.target);
+            moved_at[i] = step;
+            ++accepted;
+            disp2 = fmax(disp2, static_cast<double>(mv.displacement2));
+          }
+        }
+        evaluated += active && lane == 0;
+      }
+      if (col + 1 < cls.count) grid.sync();  // the next colour reads these moves
+    }
+    add_sweep_stats(c, s, accepted, disp2);
+    for (int offset = 16; offset > 0; offset >>= 1) evaluated += __shfl_down_sync(0xffffffffu, evaluated, offset);
+    if ((threadIdx.x & 31) == 0 && evaluated) atomicAdd(&st->evaluated, static_cast<unsigned long long>(evaluated));
+    grid.sync();
+    // The counters of sweep s are final now; every block reads them (past
+    // L1) and reaches the same verdict.
+    const double max_disp = sqrt(__longlong_as_double(static_cast<long long>(__ldcg(&c.max_disp2_bits[s]))));
+    const SweepVerdict v = sweep_verdict(s + 1, static_cast<long long>(__ldcg(&c.accepted[s])), max_disp,
+                                         __ldcg(&st->tol_abs), max_iterations);
+    if (tid == 0) {
+      st->sweep = s + 1;
+      st->verdict = static_cast<int>(v);
+      st->done = v != SweepVerdict::Continue;
+    }
+    if (v != SweepVerdict::Continue) break;
+  }
+}
+
+}  // namespace tetsmooth::cuda

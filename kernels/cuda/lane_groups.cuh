@@ -1,0 +1,54 @@
+#pragma once
+// Reductions over a group of G consecutive lanes of a warp (G a power of two
+// up to 32), for kernels that give one item (a node) to several threads.
+// Every lane named in `mask` must call them: the whole warp by default (also
+// lanes whose group is idle), or just the group (group_mask) where groups of
+// one warp run apart. All lanes of a group get the same, bit-identical result.
+#include <cuda_runtime.h>
+
+namespace tetsmooth::cuda {
+
+// The lanes of this thread's group of G.
+template <int G>
+__device__ __forceinline__ unsigned group_mask() {
+  if constexpr (G == 32) {
+    return 0xffffffffu;
+  } else {
+    const unsigned first = (threadIdx.x & 31u) & ~static_cast<unsigned>(G - 1);
+    return ((1u << G) - 1u) << first;
+  }
+}
+
+// Sum with the total taken from the group's first lane, so every lane holds
+// the same bits whatever the order of additions.
+template <int G, class T>
+__device__ __forceinline__ T group_sum(T v, unsigned mask = 0xffffffffu) {
+  for (int offset = G / 2; offset > 0; offset >>= 1) v += __shfl_down_sync(mask, v, offset, G);
+  return __shfl_sync(mask, v, 0, G);
+}
+
+template <int G, class T>
+__device__ __forceinline__ T group_min(T v, unsigned mask = 0xffffffffu) {
+  for (int offset = G / 2; offset > 0; offset >>= 1) {
+    const T w = __shfl_xor_sync(mask, v, offset, G);
+    v = w < v ? w : v;
+  }
+  return v;
+}
+
+template <int G, class T>
+__device__ __forceinline__ T group_max(T v, unsigned mask = 0xffffffffu) {
+  for (int offset = G / 2; offset > 0; offset >>= 1) {
+    const T w = __shfl_xor_sync(mask, v, offset, G);
+    v = w > v ? w : v;
+  }
+  return v;
+}
+
+template <int G, class T>
+__device__ __forceinline__ T group_or(T v, unsigned mask = 0xffffffffu) {
+  for (int offset = G / 2; offset > 0; offset >>= 1) v |= __shfl_xor_sync(mask, v, offset, G);
+  return v;
+}
+
+}  // namespace tetsmooth::cuda

@@ -106,6 +106,7 @@ void gpu_family(benchmark::State& state, std::string label, SmoothOptions o, boo
   set_run_counters(state, r, f);
   state.counters["launches"] = p.last_times().launches;
   state.counters["host_checks"] = p.last_times().host_checks;
+  state.counters["lanes_per_node"] = p.last_times().lanes_per_node;
   if (!scaling) {
     TetMesh after = bm.mesh;
     after.xyz = p.download_xyz();
@@ -124,6 +125,7 @@ void register_gpu(const std::string& label, const BenchConfig& c, bool scaling) 
         o.layout = layout;
         o.strategy = strategy;
         o.precision = c.precision;
+        o.coloured_lanes = c.coloured_lanes;
         const std::string name = std::string(form == Form::A ? "FormA/" : "FormB/") + to_string(layout) + "/" +
                                  to_string(strategy) + "/" + label;
         benchmark::RegisterBenchmark(name.c_str(), gpu_family, label, o, scaling)

@@ -18,6 +18,7 @@ struct BenchConfig {
   std::vector<std::string> models{"5k", "10k", "59k", "77k", "109k"};  // paper models, by Table 2 label
   std::vector<std::string> scaling;  // lattice-N meshes, GPU Form B only
   Precision precision = Precision::Double;
+  int coloured_lanes = 0;  // GPU Coloured threads per node; 0 = automatic (SmoothOptions)
   bool cpu = true;
   bool gpu = true;
 };

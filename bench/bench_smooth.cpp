@@ -1,6 +1,7 @@
 // bench_smooth: the study of the paper's Tables 3-6 and Figures 9-13.
 // Own flags (before Google Benchmark's): --models=5k,10k,59k,77k,109k
-// --scaling=lattice-215 --precision=double|float --no-cpu --no-gpu.
+// --scaling=lattice-215 --precision=double|float --coloured-lanes=0|8|16|32
+// --no-cpu --no-gpu.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -37,6 +38,8 @@ tetsmooth::bench::BenchConfig take_own_flags(int& argc, char** argv) {
       c.precision = tetsmooth::Precision::Float;
     } else if (a == "--precision=double") {
       c.precision = tetsmooth::Precision::Double;
+    } else if (a.rfind("--coloured-lanes=", 0) == 0) {
+      c.coloured_lanes = std::stoi(value("--coloured-lanes="));
     } else if (a == "--no-cpu") {
       c.cpu = false;
     } else if (a == "--no-gpu") {

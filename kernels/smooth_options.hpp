@@ -49,6 +49,9 @@ struct SmoothOptions {
   // was last evaluated; the same inputs would give the same rejection, so the
   // result is unchanged (kernels/cuda/coloured_loop_kernel.cuh).
   bool skip_settled = true;
+  // CUDA Coloured: threads per node, 8, 16 or 32; 0 picks by the size of
+  // the colour classes (kernels/cuda/sweep_loop_impl.cuh).
+  int coloured_lanes = 0;
   // Called after each sweep when set (CPU: every sweep; CUDA: at each host
   // check, for SingleBlock and Coloured once the loop has ended).
   std::function<void(const SweepProgress&)> progress;

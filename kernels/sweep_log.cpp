@@ -13,6 +13,8 @@ void check_smooth_options(const SmoothOptions& opt) {
     throw UsageError("tolerance must be a finite number >= 0, got " + std::to_string(opt.tolerance));
   if (opt.threads < 0) throw UsageError("threads must be >= 0 (0 = all cores), got " + std::to_string(opt.threads));
   if (opt.check_every < 1) throw UsageError("check_every must be >= 1");
+  if (opt.coloured_lanes != 0 && opt.coloured_lanes != 8 && opt.coloured_lanes != 16 && opt.coloured_lanes != 32)
+    throw UsageError("coloured_lanes must be 0 (automatic), 8, 16 or 32");
 }
 
 StopReason to_stop_reason(SweepVerdict v) {

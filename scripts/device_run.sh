@@ -43,8 +43,11 @@ for step in $steps; do
         --benchmark_min_time=0.01 --benchmark_out="$out/bench_quick.json" --benchmark_out_format=json 2>&1 | tail -30
       ;;
     float)
-      "$b/bench_smooth" --precision=float --no-cpu --models=5k,10k,59k,77k,109k --scaling=lattice-215 \
-        --benchmark_filter='Memory|FormB/.*/(Coloured|MultiBlock)/' --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
+      # The CPU baselines of the 109k model come along, so the float GPU times
+      # have their serial and threaded references in the same run.
+      "$b/bench_smooth" --precision=float --models=5k,10k,59k,77k,109k --scaling=lattice-215 \
+        --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/.*/(Coloured|MultiBlock)/' \
+        --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
         --benchmark_out="$out/bench_float.json" --benchmark_out_format=json 2>&1 | grep -v "^\[" | cut -c1-160 | tail -30
       ;;
     study)

@@ -6,9 +6,11 @@
 // the device between sweeps. The order of updates is the CPU's coloured
 // order: within a sweep, colour by colour.
 //
-// A node's latency sets the pace (a class is small: ~1/12 of the nodes), so
-// a whole warp takes each node (kColouredLanes): its ~25 tets are one or two
-// per lane instead of a few one after another.
+// Lanes per node, G: where a class is small (~1/12 of the nodes) next to
+// what the device holds at once, a node's latency sets the pace, so a whole
+// warp takes each node and its ~25 tets are one or two per lane instead of a
+// few one after another. Where classes are many times the resident threads,
+// throughput does, and 8 lanes waste fewer (sweep_loop_impl.cuh chooses).
 //
 // Two savings that leave every decision as it was:
 //  * tet_q caches each tet's radius ratio at the current coordinates. A
@@ -32,7 +34,7 @@
 namespace tetsmooth::cuda {
 
 inline constexpr int kColouredBlock = 256;
-inline constexpr int kColouredLanes = 32;
+inline constexpr int kLatencyLanes = 32, kThroughputLanes = 8;
 
 // Colour classes on the device: class c lists nodes[off[c] .. off[c+1]).
 struct ColourClassesView {
@@ -47,12 +49,11 @@ struct ColourClassesView {
 template <class Real>
 inline constexpr int kColouredMinBlocks = sizeof(Real) == 4 ? 3 : 2;
 
-template <class Real, bool kAdaptive, class Coords>
+template <class Real, bool kAdaptive, int G, class Coords>
 __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
     coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* moved_at, index_t n,
                          index_t num_tets, SweepState* st, SweepCounters c, int max_iterations, bool skip_settled) {
   namespace cg = cooperative_groups;
-  constexpr int G = kColouredLanes;
   cg::grid_group grid = cg::this_grid();
   const unsigned long long tid = grid.thread_rank(), threads = grid.size();
   if (kAdaptive)
@@ -80,6 +81,9 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
         const long long k = base + group;
         const bool in_class = k < end;
         const index_t i = in_class ? cls.nodes[k] : 0;
+        // Loaded with the node's own step, before they are needed, so the
+        // load does not wait behind the neighbours'.
+        const Vec3<Real> p = in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
         int latest = in_class && lane == 0 ? moved_at[i] : -1;
         const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, in_class, mask,
                                                           [&](index_t j) { latest = max(latest, moved_at[j]); });
@@ -87,7 +91,6 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
         // sweep's look at this node (at step - colours).
         const bool active =
             in_class && (!skip_settled || s == 0 || group_max<G>(latest, mask) >= step - cls.count);
-        const Vec3<Real> p = active ? xyz.get(i) : Vec3<Real>{0, 0, 0};
         // A lane's first tet (its only one unless the node has more than G)
         // keeps its quality at the target for the cache update.
         index_t first_k = -1;

@@ -57,10 +57,13 @@ __global__ void init_rounds(std::size_t n, const std::uint8_t* movable, unsigned
   if (i < n) round_of[i] = movable[i] ? kUncoloured : 0u;
 }
 
-// Threads per node in a round: two read a node's ~14 neighbours, and the
-// ~270k resident threads then take all of a 109k-node mesh at once (on an
-// H100 two lanes coloured 109k nodes in 0.66 ms, eight in 0.72 ms).
-constexpr int kColourLanes = 2;
+// Threads per node in a round, and neighbours each lane reads at once: a
+// lane loads kColourChunk neighbour indices, then all their rounds, then all
+// their colours, so a node's ~14 neighbours cost three dependent loads, not
+// three per neighbour. Four lanes: ~440k threads for the 109k model, near the
+// ~270k an H100 holds at once.
+constexpr int kColourLanes = 4;
+constexpr int kColourChunk = 4;
 
 // The smallest colour none of the earlier-coloured neighbours has, looked
 // for 64 colours at a time, on one thread (the rare case of 64+ colours).
@@ -89,13 +92,23 @@ __device__ bool colour_node(std::size_t i, const index_t* nbr_off, const index_t
   const index_t b = nbr_off[i], e = nbr_off[i + 1];
   bool beaten = false;
   unsigned long long used = 0;  // colours 0..63 of neighbours coloured in earlier rounds
-  for (index_t k = b + lane; k < e; k += G) {
-    const index_t j = nbr[k];
-    if (round_of[j] >= r) {
-      beaten = beaten || colours_before(static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i));
-    } else {
-      const int c = colour[j];  // -1 for nodes that never move
-      if (c >= 0 && c < 64) used |= 1ull << c;
+  for (index_t first = b + lane; first < e; first += G * kColourChunk) {
+    index_t j[kColourChunk];
+    unsigned rj[kColourChunk];
+    int cj[kColourChunk];
+#pragma unroll
+    for (int u = 0; u < kColourChunk; ++u) j[u] = first + u * G < e ? nbr[first + u * G] : -1;
+#pragma unroll
+    for (int u = 0; u < kColourChunk; ++u) rj[u] = j[u] >= 0 ? round_of[j[u]] : 0u;
+#pragma unroll
+    for (int u = 0; u < kColourChunk; ++u) cj[u] = j[u] >= 0 && rj[u] < r ? colour[j[u]] : -1;  // -1: never moves
+#pragma unroll
+    for (int u = 0; u < kColourChunk; ++u) {
+      if (j[u] < 0) continue;
+      if (rj[u] >= r)
+        beaten = beaten || colours_before(static_cast<std::uint32_t>(j[u]), static_cast<std::uint32_t>(i));
+      else if (cj[u] >= 0 && cj[u] < 64)
+        used |= 1ull << cj[u];
     }
   }
   beaten = group_or<G>(static_cast<unsigned>(beaten), mask) != 0;
@@ -112,8 +125,9 @@ __device__ bool colour_node(std::size_t i, const index_t* nbr_off, const index_t
 
 // Every round in one cooperative launch, a grid barrier between rounds;
 // stops after the first round that leaves no node waiting. Groups of G
-// lanes take the nodes in a grid-stride loop.
-__global__ void __launch_bounds__(kBlock) colour_rounds_kernel(std::size_t n, const index_t* nbr_off,
+// lanes take the nodes in a grid-stride loop. Eight blocks of 256 fill a
+// multiprocessor (the bound keeps the kernel within 32 registers).
+__global__ void __launch_bounds__(kBlock, 8) colour_rounds_kernel(std::size_t n, const index_t* nbr_off,
                                                                const index_t* nbr, unsigned* round_of, int* colour,
                                                                RoundCounts* counts, unsigned max_rounds) {
   namespace cg = cooperative_groups;

@@ -250,6 +250,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   m.times.total_ms = e_end.ms_since(e_start);
   m.times.launches = loop.launches;
   m.times.host_checks = loop.host_checks;
+  m.times.lanes_per_node = loop.lanes_per_node;
 
   const SweepState st = *m.host_state;
   SmoothResult r;

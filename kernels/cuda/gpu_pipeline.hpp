@@ -28,6 +28,7 @@ struct GpuRunTimes {
   double topology_ms = 0, colouring_ms = 0, smoothing_ms = 0, total_ms = 0;
   int launches = 0;        // kernel launches issued by the smoothing phase
   int host_checks = 0;     // times the host read the stop flag back
+  int lanes_per_node = 0;  // threads per node of the sweep kernel (0 for SingleBlock)
 };
 
 class GpuPipeline {

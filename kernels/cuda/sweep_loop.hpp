@@ -36,6 +36,7 @@ struct SweepLoopArgs {
 struct SweepLoopStats {
   int launches = 0;
   int host_checks = 0;
+  int lanes_per_node = 0;  // threads per node of the sweep kernel
 };
 
 // Runs sweeps until the device says stop; Real is float or double.

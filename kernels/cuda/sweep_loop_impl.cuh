@@ -79,6 +79,7 @@ class SweepLauncher {
     sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(a_.n), kBlock, 0, a_.stream>>>(
         a_.view, read, write, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
     launched();
+    stats_.lanes_per_node = kLanesPerNode;
     if (F == Form::A) {
       for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
         repair_check_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(
@@ -98,18 +99,38 @@ class SweepLauncher {
 
   // Coloured Form B: one cooperative launch with as many blocks as fit on
   // the device at once (a grid barrier needs them all resident), fewer when
-  // the largest class needs fewer.
+  // the largest class needs fewer. A warp per node while the largest class
+  // takes at most kMaxLatencyWaves rounds of the resident warps, else 8 lanes
+  // (coloured_loop_kernel.cuh): the 109k model has 4, a 10M-node lattice
+  // hundreds.
+  static constexpr std::size_t kMaxLatencyWaves = 16;
+
   SweepLoopStats run_coloured() {
-    const auto kernel = coloured_loop_kernel<Real, kAdaptive, Coords>;
+    if (o_.coloured_lanes == kLatencyLanes) return launch_coloured<kLatencyLanes>();
+    if (o_.coloured_lanes == kThroughputLanes) return launch_coloured<kThroughputLanes>();
+    if (o_.coloured_lanes == 16) return launch_coloured<16>();
+    const std::size_t resident = resident_threads(coloured_loop_kernel<Real, kAdaptive, kLatencyLanes, Coords>);
+    const std::size_t largest = static_cast<std::size_t>(std::max<index_t>(a_.largest_class, 1));
+    if (largest * kLatencyLanes <= kMaxLatencyWaves * resident) return launch_coloured<kLatencyLanes>();
+    return launch_coloured<kThroughputLanes>();
+  }
+
+  template <class Kernel>
+  static std::size_t resident_threads(Kernel kernel) {
     int device = 0, sms = 0, per_sm = 0;
     CUDA_CHECK(cudaGetDevice(&device));
     CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
     CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_sm, kernel, kColouredBlock, 0));
     if (per_sm < 1) throw DeviceError("coloured sweep kernel: no block fits on a multiprocessor");
-    const std::size_t wanted =
-        (static_cast<std::size_t>(std::max<index_t>(a_.largest_class, 1)) * kColouredLanes + kColouredBlock - 1) /
-        kColouredBlock;
-    const unsigned blocks = static_cast<unsigned>(std::min<std::size_t>(wanted, static_cast<std::size_t>(per_sm) * sms));
+    return static_cast<std::size_t>(per_sm) * sms * kColouredBlock;
+  }
+
+  template <int G>
+  SweepLoopStats launch_coloured() {
+    const auto kernel = coloured_loop_kernel<Real, kAdaptive, G, Coords>;
+    const std::size_t wanted = static_cast<std::size_t>(std::max<index_t>(a_.largest_class, 1)) * G;
+    const auto blocks =
+        static_cast<unsigned>((std::min(wanted, resident_threads(kernel)) + kColouredBlock - 1) / kColouredBlock);
     MeshView view = a_.view;
     Coords xyz = c0_;
     ColourClassesView cls{a_.class_off, a_.class_nodes, a_.num_colours};
@@ -124,6 +145,7 @@ class SweepLauncher {
     CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(kColouredBlock),
                                            params, 0, a_.stream));
     launched();
+    stats_.lanes_per_node = G;
     return finish_on_device();
   }
 

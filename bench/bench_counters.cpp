@@ -7,11 +7,11 @@ namespace tetsmooth::bench {
 
 double bytes_per_sweep(const SweepFootprint& f) {
   const double coords = 2.0 * 3.0 * static_cast<double>(f.nodes) * static_cast<double>(f.real_bytes);
-  const double offsets = 2.0 * 4.0 * static_cast<double>(f.nodes + 1);
-  const double rows = 4.0 * static_cast<double>(f.neighbour_entries + f.incidence_entries);
-  const double tets = 16.0 * static_cast<double>(f.tets);
+  const double neighbours = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.neighbour_entries);
   const double flags = static_cast<double>(f.nodes);
-  return coords + offsets + rows + tets + flags;
+  const double stars = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
+                       16.0 * static_cast<double>(f.tets);
+  return coords + neighbours + flags + f.evaluated_share * stars;
 }
 
 void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f) {
@@ -30,14 +30,12 @@ void set_run_counters(benchmark::State& state, const SmoothResult& r, const Swee
   state.counters["reverted"] = static_cast<double>(r.reverted_moves);
   state.counters["evaluations"] = static_cast<double>(r.evaluations);
   if (r.sweeps > 0 && smooth_s > 0) {
-    // A sweep that skips settled nodes (CUDA Coloured) must move only their
-    // share of the traffic, so the bytes are scaled by the evaluated share;
-    // this lowers the floor a run is compared with, never raises it.
     const double full = static_cast<double>(r.movable_nodes) * r.sweeps;
-    const double share = full > 0 ? std::min(1.0, static_cast<double>(r.evaluations) / full) : 1.0;
+    SweepFootprint g = f;
+    g.evaluated_share = full > 0 ? std::min(1.0, static_cast<double>(r.evaluations) / full) : 1.0;
     state.counters["ms_per_sweep"] = r.smoothing_ms / r.sweeps;
     state.counters["node_updates_per_s"] = static_cast<double>(r.evaluations) / smooth_s;
-    state.counters["bytes_per_s"] = bytes_per_sweep(f) * share * r.sweeps / smooth_s;
+    state.counters["bytes_per_s"] = bytes_per_sweep(g) * r.sweeps / smooth_s;
   }
 }
 

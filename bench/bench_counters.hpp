@@ -12,13 +12,17 @@ namespace tetsmooth::bench {
 struct SweepFootprint {
   std::size_t nodes = 0, tets = 0, neighbour_entries = 0, incidence_entries = 0;
   std::size_t real_bytes = 8;  // sizeof(Real) of the coordinates
+  double evaluated_share = 1;  // nodes evaluated / (movable nodes x sweeps)
 };
 
 // The fewest bytes one sweep must move through device memory: every
-// coordinate read once and written once, and the topology a sweep walks
-// (neighbour and incidence CSR with offsets, the tets, the movable flags)
-// read once. Re-reads of neighbour coordinates are not counted: an ideal
-// cache would serve them.
+// coordinate read once and written once, the neighbour CSR with offsets and
+// the movable flags read once, and the stars (incidence CSR with offsets,
+// the tets) read once for the share of nodes evaluated: a sweep that skips
+// settled nodes (CUDA Coloured) still reads every neighbour row, but no star
+// of a skipped node. Re-reads of neighbour coordinates are not counted: an
+// ideal cache would serve them. Nor are a variant's own helpers (the
+// Coloured tet quality cache, its move steps): the floor is the smoothing's.
 double bytes_per_sweep(const SweepFootprint& f);
 
 // sweeps, accepted, evaluations, phase times, ms per sweep, node updates

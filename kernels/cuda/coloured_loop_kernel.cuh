@@ -22,11 +22,13 @@
 //  * moved_at[j] is the step (sweep * colours + colour) of node j's last
 //    move, -1 before any. A node's decision depends only on its own position
 //    and its neighbours' (the corners of its star are exactly its
-//    neighbours), so when none of them moved since the node was last looked
-//    at, one sweep earlier, the same inputs would give the same rejection
-//    and the node is skipped (skip_settled; a test compares runs with and
-//    without it bit for bit). The steps are read in the same pass as the
-//    neighbours' positions.
+//    neighbours). Its turn one sweep earlier either evaluated it and it did
+//    not move, or skipped it, which by the same argument stands for an
+//    evaluation that would not have moved it; so when nothing in the
+//    neighbourhood moved since that turn, the same inputs would give the
+//    same rejection, and the node is skipped again (skip_settled; a test
+//    compares runs with and without it bit for bit). The steps are read in
+//    the same pass as the neighbours' positions.
 #include <cooperative_groups.h>
 
 #include "kernels/cuda/sweep_kernels.cuh"
@@ -35,6 +37,7 @@ namespace tetsmooth::cuda {
 
 inline constexpr int kColouredBlock = 256;
 inline constexpr int kLatencyLanes = 32, kThroughputLanes = 8;
+inline constexpr int kMiddleLanes = 16;  // only when asked for (SmoothOptions::coloured_lanes)
 
 // Colour classes on the device: class c lists nodes[off[c] .. off[c+1]).
 struct ColourClassesView {
@@ -44,8 +47,9 @@ struct ColourClassesView {
 };
 
 // Resident blocks per multiprocessor asked of the compiler: more blocks
-// take more of a class at once, but cap the registers per thread. Double
-// needs ~110 registers: two blocks; three spill, and ran slower on an H100.
+// take more of a class at once, but cap the registers per thread. Adaptive
+// double uses the 128 two blocks allow; three (80) spill, and ran slower on
+// an H100 (5.45 against 4.80 ms on the 109k model).
 template <class Real>
 inline constexpr int kColouredMinBlocks = sizeof(Real) == 4 ? 3 : 2;
 
@@ -87,8 +91,8 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
         int latest = in_class && lane == 0 ? moved_at[i] : -1;
         const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, in_class, mask,
                                                           [&](index_t j) { latest = max(latest, moved_at[j]); });
-        // Settled: nothing in the neighbourhood moved since the previous
-        // sweep's look at this node (at step - colours).
+        // Settled: nothing in the neighbourhood moved since this node's turn
+        // in the previous sweep (step - colours); see the top of the file.
         const bool active =
             in_class && (!skip_settled || s == 0 || group_max<G>(latest, mask) >= step - cls.count);
         // A lane's first tet (its only one unless the node has more than G)
@@ -120,19 +124,14 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
       if (col + 1 < cls.count) grid.sync();  // the next colour reads these moves
     }
     add_sweep_stats(c, s, accepted, disp2);
-    for (int offset = 16; offset > 0; offset >>= 1) evaluated += __shfl_down_sync(0xffffffffu, evaluated, offset);
-    if ((threadIdx.x & 31) == 0 && evaluated) atomicAdd(&st->evaluated, static_cast<unsigned long long>(evaluated));
+    warp_atomic_add(&st->evaluated, evaluated);
     grid.sync();
     // The counters of sweep s are final now; every block reads them (past
     // L1) and reaches the same verdict.
     const double max_disp = sqrt(__longlong_as_double(static_cast<long long>(__ldcg(&c.max_disp2_bits[s]))));
     const SweepVerdict v = sweep_verdict(s + 1, static_cast<long long>(__ldcg(&c.accepted[s])), max_disp,
                                          __ldcg(&st->tol_abs), max_iterations);
-    if (tid == 0) {
-      st->sweep = s + 1;
-      st->verdict = static_cast<int>(v);
-      st->done = v != SweepVerdict::Continue;
-    }
+    if (tid == 0) record_verdict(st, s, v);
     if (v != SweepVerdict::Continue) break;
   }
 }

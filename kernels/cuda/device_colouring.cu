@@ -33,6 +33,7 @@
 #include "kernels/cuda/device_topology.hpp"
 #include "kernels/cuda/device_topology_detail.cuh"
 #include "kernels/cuda/lane_groups.cuh"
+#include "kernels/cuda/resident_blocks.cuh"
 #include "mesh/colouring.hpp"
 #include "mesh/errors.hpp"
 
@@ -82,8 +83,9 @@ __device__ int first_free_colour(const index_t* nbr, index_t b, index_t e, const
 }
 
 // Round r for node i on the G lanes of its group (mask: those lanes).
-// Returns whether i must wait for a later round; sets `picked` on lane 0
-// when i takes a colour now.
+// Returns whether i must wait for a later round. When i takes a colour now,
+// lane 0 raises `picked` to it: a group may colour several nodes in a round,
+// and the largest colour of all of them must reach the colour count.
 __device__ bool colour_node(std::size_t i, const index_t* nbr_off, const index_t* nbr, unsigned r,
                             unsigned* round_of, int* colour, int lane, unsigned mask, int& picked) {
   constexpr int G = kColourLanes;
@@ -115,10 +117,11 @@ __device__ bool colour_node(std::size_t i, const index_t* nbr_off, const index_t
   used = group_or<G>(used, mask);
   if (beaten) return true;
   if (lane == 0) {
-    picked = ~used != 0 ? __ffsll(static_cast<long long>(~used)) - 1
-                        : first_free_colour(nbr, b, e, round_of, colour, r, 64);
-    colour[i] = picked;
+    const int c = ~used != 0 ? __ffsll(static_cast<long long>(~used)) - 1
+                             : first_free_colour(nbr, b, e, round_of, colour, r, 64);
+    colour[i] = c;
     round_of[i] = r;
+    picked = max(picked, c);
   }
   return false;
 }
@@ -142,12 +145,9 @@ __global__ void __launch_bounds__(kBlock, 8) colour_rounds_kernel(std::size_t n,
     for (unsigned long long i = tid / G; i < n; i += groups)
       waiting += colour_node(i, nbr_off, nbr, r, round_of, colour, lane, mask, picked) && lane == 0;
     __syncwarp();
-    for (int offset = 16; offset > 0; offset >>= 1) waiting += __shfl_down_sync(0xffffffffu, waiting, offset);
+    warp_atomic_add(&counts->waiting[r % 3], waiting);
     const int warp_max = __reduce_max_sync(0xffffffffu, picked);
-    if ((threadIdx.x & 31) == 0) {
-      if (waiting) atomicAdd(&counts->waiting[r % 3], waiting);
-      if (warp_max >= 0) atomicMax(&counts->max_colour, warp_max);
-    }
+    if ((threadIdx.x & 31) == 0 && warp_max >= 0) atomicMax(&counts->max_colour, warp_max);
     if (tid == 0) counts->waiting[(r + 1) % 3] = 0;
     grid.sync();
     if (__ldcg(&counts->waiting[r % 3]) == 0) {
@@ -172,7 +172,7 @@ struct ColourRows {
   __device__ index_t item(unsigned long long k) const { return nodes[k]; }
 };
 
-void run_rounds(DeviceTopology& topo, cudaStream_t stream) {
+void run_rounds(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
   const std::size_t n = topo.num_nodes;
   const auto carve = [n](unsigned char* base, unsigned*& round_of, RoundCounts*& counts) {
     detail::ScratchCarver carver(base);
@@ -189,12 +189,11 @@ void run_rounds(DeviceTopology& topo, cudaStream_t stream) {
   CUDA_CHECK_LAUNCH();
   CUDA_CHECK(cudaMemsetAsync(counts, 0, sizeof(RoundCounts), stream));
   CUDA_CHECK(cudaMemsetAsync(&counts->max_colour, 0xff, sizeof(int), stream));
-  // As many blocks as can be resident at once (the grid barrier needs that).
-  int device = 0, sms = 0, per_sm = 0;
-  CUDA_CHECK(cudaGetDevice(&device));
-  CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
-  CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_sm, colour_rounds_kernel, kBlock, 0));
-  const unsigned blocks = std::max(1u, std::min(blocks_for(n * kColourLanes), static_cast<unsigned>(per_sm * sms)));
+  // As many blocks as can be resident at once (the grid barrier needs that),
+  // or fewer when asked.
+  unsigned blocks = std::min(blocks_for(n * kColourLanes), resident_blocks(colour_rounds_kernel, kBlock));
+  if (max_blocks > 0) blocks = std::min(blocks, max_blocks);
+  blocks = std::max(blocks, 1u);
   const index_t* nbr_off = topo.nbr_off.data();
   const index_t* nbr = topo.nbr.data();
   int* colour = topo.colour.data();
@@ -260,12 +259,12 @@ void build_classes(DeviceTopology& topo, cudaStream_t stream) {
 
 }  // namespace
 
-void colour_device(DeviceTopology& topo, cudaStream_t stream) {
+void colour_device(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
   topo.colour.resize(topo.num_nodes);
   if (topo.num_nodes > 0) CUDA_CHECK(cudaMemsetAsync(topo.colour.data(), 0xff, topo.colour.bytes(), stream));
   topo.num_colours = 0;
   topo.colour_rounds = 0;
-  if (topo.movable_count > 0) run_rounds(topo, stream);
+  if (topo.movable_count > 0) run_rounds(topo, stream, max_blocks);
   build_classes(topo, stream);
 }
 

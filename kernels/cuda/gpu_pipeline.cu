@@ -48,8 +48,10 @@ struct GpuPipeline::Impl {
   DeviceBuffer<double> input;           // 3n, AoS, mesh units
   DeviceBuffer<double> buf0, buf1;      // working coordinates (3n Real)
   DeviceBuffer<double> old_min;         // n Real
-  DeviceBuffer<double> tet_quality;     // t Real (Coloured)
-  DeviceBuffer<int> moved_at;           // n (Coloured)
+  // Coloured only, allocated by its first run: 8 B per tet and 4 B per node
+  // (0.5 GB for the 60M-tet lattice).
+  DeviceBuffer<double> tet_quality;     // t Real
+  DeviceBuffer<int> moved_at;           // n
   DeviceBuffer<std::uint8_t> moved, revert;
   DeviceBuffer<SweepState> state;
   DeviceBuffer<unsigned long long> accepted, max_disp2;
@@ -104,8 +106,6 @@ GpuPipeline::GpuPipeline(const TetMesh& mesh) : impl_(std::make_unique<Impl>()) 
   m.buf0.resize(3 * m.n);
   m.buf1.resize(3 * m.n);
   m.old_min.resize(m.n);
-  m.tet_quality.resize(m.t);
-  m.moved_at.resize(m.n);
   m.moved.resize(m.n);
   m.revert.resize(m.n);
   m.output.resize(3 * m.n);
@@ -236,8 +236,12 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   if (class_off)
     for (std::size_t c = 0; c + 1 < class_off->size(); ++c)
       a.largest_class = std::max(a.largest_class, (*class_off)[c + 1] - (*class_off)[c]);
-  a.tet_quality = m.tet_quality.data();
-  a.moved_at = m.moved_at.data();
+  if (o.strategy == Strategy::Coloured) {
+    m.tet_quality.resize(m.t);
+    m.moved_at.resize(m.n);
+    a.tet_quality = m.tet_quality.data();
+    a.moved_at = m.moved_at.data();
+  }
   a.stream = m.stream;
   const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
   e_end.record(m.stream);

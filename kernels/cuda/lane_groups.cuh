@@ -3,7 +3,9 @@
 // up to 32), for kernels that give one item (a node) to several threads.
 // Every lane named in `mask` must call them: the whole warp by default (also
 // lanes whose group is idle), or just the group (group_mask) where groups of
-// one warp run apart. All lanes of a group get the same, bit-identical result.
+// one warp run apart. All lanes of a group get the same result: the same bits
+// for sums; for min and max, values that compare equal (a zero may keep its
+// sign).
 #include <cuda_runtime.h>
 
 namespace tetsmooth::cuda {
@@ -49,6 +51,14 @@ template <int G, class T>
 __device__ __forceinline__ T group_or(T v, unsigned mask = 0xffffffffu) {
   for (int offset = G / 2; offset > 0; offset >>= 1) v |= __shfl_xor_sync(mask, v, offset, G);
   return v;
+}
+
+// Adds every lane's v to *target with one atomic per warp (none when the
+// warp's total is zero). Every lane of the warp must call it.
+template <class Target, class T>
+__device__ __forceinline__ void warp_atomic_add(Target* target, T v) {
+  v = group_sum<32>(v);
+  if ((threadIdx.x & 31) == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
 }
 
 }  // namespace tetsmooth::cuda

@@ -1,7 +1,8 @@
 #pragma once
-// The smoothing kernels: one per-node body (the shared evaluate_node of
-// node_update.hpp, split over a group of lanes where several threads share a
-// node) used by every strategy.
+// The smoothing kernels. Every strategy runs the per-node math of
+// node_update.hpp: SingleBlock through evaluate_node on one thread, the
+// others through centroid_group and judge_move_group below, the same steps
+// split over a group of lanes that share a node.
 //   MultiBlock: a thread group per node, a launch per sweep (the paper's).
 //   Coloured:   one colour class at a time, all sweeps in one cooperative
 //               launch (coloured_loop_kernel.cuh); nodes of one colour share
@@ -163,8 +164,7 @@ __global__ void repair_apply_kernel(index_t n, Coords before, Coords after, std:
   const bool undo_all = pass == kMaxRepairPasses - 1;
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
   unsigned reverted = i < n && revert_if_flagged(i, before, after, moved, revert, undo_all);
-  for (int offset = 16; offset > 0; offset >>= 1) reverted += __shfl_down_sync(0xffffffffu, reverted, offset);
-  if ((threadIdx.x & 31) == 0 && reverted) atomicAdd(&st->reverted, static_cast<unsigned long long>(reverted));
+  warp_atomic_add(&st->reverted, reverted);
 }
 
 // Form A: count the moves that survived the repair.
@@ -186,9 +186,7 @@ static __global__ void verdict_kernel(SweepState* st, SweepCounters c, int max_i
   const double disp = sqrt(__longlong_as_double(static_cast<long long>(c.max_disp2_bits[s])));
   const SweepVerdict v =
       sweep_verdict(s + 1, static_cast<long long>(c.accepted[s]), disp, st->tol_abs, max_iterations);
-  st->sweep = s + 1;
-  st->verdict = static_cast<int>(v);
-  st->done = v != SweepVerdict::Continue;
+  record_verdict(st, s, v);
   for (int k = 0; k < kMaxRepairPasses; ++k) c.repair_found[k] = 0;
 }
 
@@ -260,9 +258,7 @@ __global__ void __launch_bounds__(kSingleBlockThreads)
       c.max_disp2_bits[s] = static_cast<unsigned long long>(__double_as_longlong(s_disp2));
       const SweepVerdict v = sweep_verdict(s + 1, static_cast<long long>(s_accepted), sqrt(s_disp2), st->tol_abs,
                                            max_iterations);
-      st->sweep = s + 1;
-      st->verdict = static_cast<int>(v);
-      st->done = v != SweepVerdict::Continue;
+      record_verdict(st, s, v);
       s_flag = st->done;
     }
     __syncthreads();
@@ -307,14 +303,8 @@ __global__ void edge_length_kernel(MeshView m, Coords xyz, index_t n, SweepState
       sum += sqrt(static_cast<double>(norm2(xyz.get(j) - xyz.get(i))));
       ++count;
     }
-  for (int offset = 16; offset > 0; offset >>= 1) {
-    sum += __shfl_down_sync(0xffffffffu, sum, offset);
-    count += __shfl_down_sync(0xffffffffu, count, offset);
-  }
-  if ((threadIdx.x & 31) == 0 && count) {
-    atomicAdd(&st->edge_sum, sum);
-    atomicAdd(&st->edge_count, static_cast<unsigned long long>(count));
-  }
+  warp_atomic_add(&st->edge_sum, sum);
+  warp_atomic_add(&st->edge_count, count);
 }
 
 }  // namespace tetsmooth::cuda

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "kernels/cuda/coloured_loop_kernel.cuh"
+#include "kernels/cuda/coloured_loop_launch.cuh"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/sweep_kernels.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
@@ -57,7 +57,11 @@ class SweepLauncher {
       ++stats_.launches;
       return finish_on_device();
     }
-    if (o_.strategy == Strategy::Coloured) return run_coloured();
+    if (o_.strategy == Strategy::Coloured) {
+      stats_.lanes_per_node = launch_coloured_loop<Real, kAdaptive>(a_, o_, c0_);
+      ++stats_.launches;
+      return finish_on_device();
+    }
     for (int s = 0; s < o_.max_iterations;) {
       const int chunk = std::min(o_.check_every, o_.max_iterations - s);
       for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
@@ -95,58 +99,6 @@ class SweepLauncher {
     }
     verdict_kernel<<<1, 1, 0, a_.stream>>>(a_.state, a_.counters, o_.max_iterations);
     launched();
-  }
-
-  // Coloured Form B: one cooperative launch with as many blocks as fit on
-  // the device at once (a grid barrier needs them all resident), fewer when
-  // the largest class needs fewer. A warp per node while the largest class
-  // takes at most kMaxLatencyWaves rounds of the resident warps, else 8 lanes
-  // (coloured_loop_kernel.cuh): the 109k model has 4, a 10M-node lattice
-  // hundreds.
-  static constexpr std::size_t kMaxLatencyWaves = 16;
-
-  SweepLoopStats run_coloured() {
-    if (o_.coloured_lanes == kLatencyLanes) return launch_coloured<kLatencyLanes>();
-    if (o_.coloured_lanes == kThroughputLanes) return launch_coloured<kThroughputLanes>();
-    if (o_.coloured_lanes == 16) return launch_coloured<16>();
-    const std::size_t resident = resident_threads(coloured_loop_kernel<Real, kAdaptive, kLatencyLanes, Coords>);
-    const std::size_t largest = static_cast<std::size_t>(std::max<index_t>(a_.largest_class, 1));
-    if (largest * kLatencyLanes <= kMaxLatencyWaves * resident) return launch_coloured<kLatencyLanes>();
-    return launch_coloured<kThroughputLanes>();
-  }
-
-  template <class Kernel>
-  static std::size_t resident_threads(Kernel kernel) {
-    int device = 0, sms = 0, per_sm = 0;
-    CUDA_CHECK(cudaGetDevice(&device));
-    CUDA_CHECK(cudaDeviceGetAttribute(&sms, cudaDevAttrMultiProcessorCount, device));
-    CUDA_CHECK(cudaOccupancyMaxActiveBlocksPerMultiprocessor(&per_sm, kernel, kColouredBlock, 0));
-    if (per_sm < 1) throw DeviceError("coloured sweep kernel: no block fits on a multiprocessor");
-    return static_cast<std::size_t>(per_sm) * sms * kColouredBlock;
-  }
-
-  template <int G>
-  SweepLoopStats launch_coloured() {
-    const auto kernel = coloured_loop_kernel<Real, kAdaptive, G, Coords>;
-    const std::size_t wanted = static_cast<std::size_t>(std::max<index_t>(a_.largest_class, 1)) * G;
-    const auto blocks =
-        static_cast<unsigned>((std::min(wanted, resident_threads(kernel)) + kColouredBlock - 1) / kColouredBlock);
-    MeshView view = a_.view;
-    Coords xyz = c0_;
-    ColourClassesView cls{a_.class_off, a_.class_nodes, a_.num_colours};
-    Real* tet_q = static_cast<Real*>(a_.tet_quality);
-    int* moved_at = a_.moved_at;
-    index_t n = a_.n, num_tets = a_.num_tets;
-    SweepState* st = a_.state;
-    SweepCounters counters = a_.counters;
-    int max_iterations = o_.max_iterations;
-    bool skip = o_.skip_settled;
-    void* params[] = {&view, &xyz, &cls, &tet_q, &moved_at, &n, &num_tets, &st, &counters, &max_iterations, &skip};
-    CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(kColouredBlock),
-                                           params, 0, a_.stream));
-    launched();
-    stats_.lanes_per_node = G;
-    return finish_on_device();
   }
 
   // After a loop that ran entirely on the device: the host waits only when

@@ -13,7 +13,7 @@ struct SweepState {
   int verdict; // SweepVerdict of the last sweep
   int pad;
   unsigned long long reverted;  // Form A moves undone by the conflict repair
-  unsigned long long evaluated; // node evaluations skipped by nobody (coloured loop only)
+  unsigned long long evaluated; // nodes evaluated, not skipped as settled (coloured loop only)
   double edge_sum;              // for the mean edge length
   unsigned long long edge_count;
   double tol_abs;               // tolerance x mean edge length, working units
@@ -25,6 +25,13 @@ struct SweepCounters {
   unsigned long long* max_disp2_bits;  // a non-negative double's bits order like the double
   int* repair_found;                   // kMaxRepairPasses flags of the current sweep
 };
+
+// Records the stopping rule's verdict on sweep s (0-based), just finished.
+__device__ __forceinline__ void record_verdict(SweepState* st, int s, SweepVerdict v) {
+  st->sweep = s + 1;
+  st->verdict = static_cast<int>(v);
+  st->done = v != SweepVerdict::Continue;
+}
 
 // Warp-aggregated accumulation of one sweep's accepted moves and largest
 // squared displacement. Every lane of the warp must call it.

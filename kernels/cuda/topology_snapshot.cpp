@@ -7,7 +7,7 @@
 
 namespace tetsmooth::cuda {
 
-TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh) {
+TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_blocks) {
   const cudaStream_t stream = nullptr;
   DeviceBuffer<index_t> tets;
   DeviceBuffer<std::uint8_t> fixed;
@@ -16,7 +16,7 @@ TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh) {
 
   DeviceTopology topo;
   build_device_topology(topo, tets.data(), mesh.num_tets(), mesh.num_nodes(), fixed.data(), stream);
-  colour_device(topo, stream);
+  colour_device(topo, stream, colour_blocks);
 
   TopologySnapshot snap;
   snap.neighbours = Csr{topo.nbr_off.download(stream), topo.nbr.download(stream)};

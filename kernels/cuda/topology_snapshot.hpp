@@ -17,6 +17,7 @@ struct TopologySnapshot {
 };
 
 // Uploads the mesh, builds topology and colouring on the GPU, downloads all.
-TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh);
+// colour_blocks > 0 caps the colouring launch (see colour_device).
+TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_blocks = 0);
 
 }  // namespace tetsmooth::cuda

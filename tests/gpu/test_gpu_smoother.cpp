@@ -41,10 +41,12 @@ SmoothOptions gpu_options(Form form, Layout layout, Strategy strategy, Method me
 // MultiBlock/SingleBlock variants read neighbours while they move.
 bool race_free(Form form, Strategy strategy) { return form == Form::A || strategy == Strategy::Coloured; }
 
-// Given the CPU's colouring, the coloured Form B in double does the CPU's
-// arithmetic in the CPU's order. nvcc may fuse a*b+c into one rounding
-// (FMA), so a quality can differ in its last bits; an accept decision can
-// then flip only where the new and old minimum agree to ~1e-15. We count
+// Given the CPU's colouring, the coloured Form B in double visits nodes in
+// the CPU's order and makes the same decisions up to rounding: the lanes
+// sharing a node add its neighbours in another order, and nvcc may fuse
+// a*b+c into one rounding (FMA), so a centroid or a quality can differ in
+// its last bits; an accept decision can then flip only where the new and
+// old minimum agree to ~1e-15. We count
 // nodes that end elsewhere (more than 1e-9 mean edge lengths apart) and
 // allow at most 0.5% of the movable nodes; the count is printed.
 TEST(GpuSmoother, ColouredFormBDoubleMatchesCpuGivenSameColouring) {

@@ -39,10 +39,10 @@ template <class T>
   return ::testing::AssertionSuccess();
 }
 
-void expect_same_as_cpu(const TetMesh& mesh) {
+void expect_same_as_cpu(const TetMesh& mesh, unsigned colour_blocks = 0) {
   const Topology cpu = build_topology(mesh);
   const Colouring cpu_colouring = colour_nodes(cpu.neighbours, cpu.movable);
-  const cuda::TopologySnapshot gpu = cuda::gpu_topology_snapshot(mesh);
+  const cuda::TopologySnapshot gpu = cuda::gpu_topology_snapshot(mesh, colour_blocks);
 
   EXPECT_TRUE(same(gpu.neighbours.offsets, cpu.neighbours.offsets)) << "neighbour offsets";
   EXPECT_TRUE(same(gpu.neighbours.items, cpu.neighbours.items)) << "neighbours";
@@ -68,6 +68,10 @@ TEST_F(GpuTopology, JitteredCubeGrid) { expect_same_as_cpu(testing::cube_grid(4,
 TEST_F(GpuTopology, RandomDelaunay) { expect_same_as_cpu(testing::random_delaunay(2000, 3)); }
 
 TEST_F(GpuTopology, Model5k) { expect_same_as_cpu(generate_model("5k")); }
+
+// One block of the colouring kernel: each thread group colours ~80 nodes of
+// the 5k model per round, as groups do on meshes far larger than the GPU.
+TEST_F(GpuTopology, Model5kWithOneColouringBlock) { expect_same_as_cpu(generate_model("5k"), 1); }
 
 // File-pinned nodes leave the colouring; a node in no tet has an empty row
 // and is neither boundary nor movable.

@@ -50,7 +50,7 @@ struct SmoothOptions {
   // result is unchanged (kernels/cuda/coloured_loop_kernel.cuh).
   bool skip_settled = true;
   // CUDA Coloured: threads per node, 8, 16 or 32; 0 picks by the size of
-  // the colour classes (kernels/cuda/sweep_loop_impl.cuh).
+  // the colour classes (kernels/cuda/coloured_loop_launch.cuh).
   int coloured_lanes = 0;
   // Called after each sweep when set (CPU: every sweep; CUDA: at each host
   // check, for SingleBlock and Coloured once the loop has ended).

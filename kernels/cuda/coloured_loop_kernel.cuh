@@ -10,7 +10,7 @@
 // what the device holds at once, a node's latency sets the pace, so a whole
 // warp takes each node and its ~25 tets are one or two per lane instead of a
 // few one after another. Where classes are many times the resident threads,
-// throughput does, and 8 lanes waste fewer (sweep_loop_impl.cuh chooses).
+// throughput does, and 8 lanes waste fewer (coloured_loop_launch.cuh chooses).
 //
 // Two savings that leave every decision as it was:
 //  * tet_q caches each tet's radius ratio at the current coordinates. A
@@ -85,8 +85,7 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
         const long long k = base + group;
         const bool in_class = k < end;
         const index_t i = in_class ? cls.nodes[k] : 0;
-        // Loaded with the node's own step, before they are needed, so the
-        // load does not wait behind the neighbours'.
+        // The node's own position and move step, read up front.
         const Vec3<Real> p = in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
         int latest = in_class && lane == 0 ? moved_at[i] : -1;
         const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, in_class, mask,

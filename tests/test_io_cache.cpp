@@ -11,6 +11,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/tsm_cache.hpp"
 #include "support/test_meshes.hpp"
+#include "input_error.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -24,13 +25,8 @@ std::string bytes_of(const TetMesh& mesh) {
 // The InputError message from reading `bytes` as cube.tsm, or a test failure.
 std::string read_error(const std::string& bytes) {
   std::istringstream in(bytes);
-  try {
-    read_cache(in, "cube.tsm");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "read_cache accepted " << bytes.size() << " bytes";
-  return "";
+  return testing::input_error_message([&] { read_cache(in, "cube.tsm"); },
+                                      "read_cache, " + std::to_string(bytes.size()) + " bytes");
 }
 
 TEST(TsmCache, LayoutMatchesTheDocumentedSize) {

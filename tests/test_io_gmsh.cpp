@@ -14,6 +14,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "support/test_meshes.hpp"
+#include "input_error.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -38,13 +39,7 @@ std::string write_text(const TetMesh& mesh, MshFlavour flavour, const MeshFields
 
 // The InputError message from reading `text` as t.msh.
 std::string read_error(const std::string& text) {
-  try {
-    read_text(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "read_gmsh accepted:\n" << text;
-  return "";
+  return testing::input_error_message([&] { read_text(text); }, "read_gmsh:\n" + text);
 }
 
 const std::string* raw_section(const TetMesh& mesh, const std::string& name) {

@@ -10,6 +10,7 @@
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "support/test_meshes.hpp"
+#include "input_error.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -26,13 +27,7 @@ std::string write_text(const TetMesh& mesh) {
 }
 
 std::string read_error(const std::string& text) {
-  try {
-    read_text(text);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "read_medit accepted:\n" << text;
-  return "";
+  return testing::input_error_message([&] { read_text(text); }, "read_medit:\n" + text);
 }
 
 // Lines 3-8 the vertices, 9-11 the tet, 12 End.

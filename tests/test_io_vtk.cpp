@@ -14,6 +14,7 @@
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
 #include "support/test_meshes.hpp"
+#include "input_error.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -50,13 +51,7 @@ void expect_same_mesh(const TetMesh& back, const TetMesh& mesh) {
 template <class Read>
 std::string read_error(Read read, const std::string& text, const std::string& source) {
   std::istringstream in(text);
-  try {
-    read(in, source);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "reader accepted:\n" << text.substr(0, 2000);
-  return "";
+  return testing::input_error_message([&] { read(in, source); }, "the reader:\n" + text.substr(0, 2000));
 }
 
 std::string vtu_error(const std::string& text) { return read_error(read_vtu, text, "mesh.vtu"); }

@@ -10,19 +10,14 @@
 #include "mesh/errors.hpp"
 #include "mesh/validate.hpp"
 #include "support/test_meshes.hpp"
+#include "input_error.hpp"
 
 namespace tetsmooth {
 namespace {
 
 // The message of the InputError that validation throws, or a test failure.
 std::string validation_error(const TetMesh& mesh) {
-  try {
-    validate_mesh(mesh, "part.vtu");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "validate_mesh accepted the mesh";
-  return "";
+  return testing::input_error_message([&] { validate_mesh(mesh, "part.vtu"); }, "validate_mesh, the mesh");
 }
 
 TEST(Validate, ValidMeshesPassWithNothingCounted) {

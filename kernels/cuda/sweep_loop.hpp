@@ -4,7 +4,6 @@
 // loop in one cooperative launch (coloured_loop_kernel.cuh).
 #include <cuda_runtime.h>
 
-#include <vector>
 
 #include "kernels/cuda/sweep_state.cuh"
 #include "kernels/node_update.hpp"

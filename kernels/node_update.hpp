@@ -33,7 +33,6 @@ template <class Real>
 struct NodeMove {
   Vec3<Real> target;  // the centroid
   Real old_min;       // min q over incident tets at the old position
-  Real new_min;       // min q with the node at the target
   Real displacement2; // squared move length
   bool accept;
 };
@@ -80,20 +79,6 @@ TS_HD bool keeps_validity(Real q_old, Real q_new) {
   return q_old > Real(0) ? q_new > Real(0) : q_new >= q_old;
 }
 
-// Quality of a node's incident tets (this lane's share) at the old position
-// p and at the target.
-template <class Real>
-struct StarQuality {
-  Real old_min, new_min;
-  bool valid;  // every tet keeps its validity (keeps_validity)
-};
-
-template <class Real>
-TS_HD StarQuality<Real> merge(StarQuality<Real> a, StarQuality<Real> b) {
-  return {a.old_min < b.old_min ? a.old_min : b.old_min, a.new_min < b.new_min ? a.new_min : b.new_min,
-          a.valid && b.valid};
-}
-
 // A tet's radius ratio with node i at `at` (the tet's own corner order).
 template <class Real, class Coords>
 TS_HD Real tet_quality_with(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> at) {
@@ -102,10 +87,10 @@ TS_HD Real tet_quality_with(const MeshView& m, const Coords& xyz, index_t t, ind
   return radius_ratio(v[0], v[1], v[2], v[3]);
 }
 
-// Where star_quality gets a tet's quality with the node where it stands now:
-// recomputed from the coordinates (the reference, every backend), or read
-// from a per-tet cache that the caller keeps current (the GPU coloured loop;
-// see kernels/cuda/coloured_loop_kernel.cuh).
+// Where the adaptive test gets a tet's quality with the node where it
+// stands now: recomputed from the coordinates (the reference, every
+// backend), or read from a per-tet cache that the caller keeps current (the
+// GPU coloured loop; see kernels/cuda/coloured_loop_kernel.cuh).
 struct FreshOldQuality {
   template <class Real, class Coords>
   TS_HD Real operator()(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> p) const {
@@ -122,41 +107,75 @@ struct CachedOldQuality {
   }
 };
 
-// Does nothing with a tet's quality at the target (see star_quality).
+// The adaptive test in two passes. The first finds the star's minimum
+// quality with the node where it stands (this lane's share; a group takes
+// the minimum over its lanes). The second computes each tet's quality with
+// the node at the target and stops at the first tet that objects: the
+// accept rule holds exactly when every tet's new quality beats that minimum
+// and keeps its validity, so the first objection settles the rejection and
+// the remaining tets need not be computed. A tet whose new quality beats
+// the minimum and is positive keeps its validity whatever its old quality,
+// so the old quality is looked at again only for a new q <= 0 (rare).
+template <class Real, class Coords, class OldQuality = FreshOldQuality>
+TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, int lane, int stride,
+                        const OldQuality& old_quality = {}) {
+  Real q_min = Real(2);
+  for (index_t k = m.inc_off[i] + lane; k < m.inc_off[i + 1]; k += stride) {
+    const Real q = old_quality(m, xyz, m.inc[k], i, p);
+    q_min = q < q_min ? q : q_min;
+  }
+  return q_min;
+}
+
+// Does nothing with a tet's quality at the target (see star_improves).
 struct IgnoreNewQuality {
   template <class Real>
   TS_HD void operator()(index_t, Real) const {}
 };
 
-// `keep_new(k, q)` receives the quality q at the target of the tet at
-// incidence entry k, for a caller that stores what it may need again.
+// One thread per node: a lane's objection is the node's.
+struct SoleLane {
+  TS_HD bool operator()(bool objects) const { return objects; }
+};
+
+// The second pass. Lanes take the star's tets in rounds of `stride`;
+// `any(objects)` tells every lane of the group whether any lane's tet in the
+// round objected (all lanes of the group call it, the same number of
+// times). `keep_new(k, q)` receives the new quality q of the tet at
+// incidence entry k, round by round, for a caller that stores what it may
+// need again. `old_min` is the whole star's minimum (star_old_min).
 #ifdef __CUDACC__
 #pragma nv_exec_check_disable
 #endif
-template <class Real, class Coords, class OldQuality = FreshOldQuality, class KeepNew = IgnoreNewQuality>
-TS_HD StarQuality<Real> star_quality(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
-                                     int lane, int stride, const OldQuality& old_quality = {},
-                                     KeepNew&& keep_new = {}) {
-  StarQuality<Real> sq{Real(2), Real(2), true};
-  for (index_t k = m.inc_off[i] + lane; k < m.inc_off[i + 1]; k += stride) {
-    const index_t t = m.inc[k];
-    const Real q_old = old_quality(m, xyz, t, i, p);
-    const Real q_new = tet_quality_with(m, xyz, t, i, target);
-    keep_new(k, q_new);
-    sq = merge(sq, StarQuality<Real>{q_old, q_new, keeps_validity(q_old, q_new)});
+template <class Real, class Coords, class OldQuality = FreshOldQuality, class KeepNew = IgnoreNewQuality,
+          class Any = SoleLane>
+TS_HD bool star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
+                         Real old_min, int lane, int stride, const OldQuality& old_quality = {},
+                         KeepNew&& keep_new = {}, Any&& any = {}) {
+  const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
+  for (index_t base = begin; base < end; base += stride) {
+    const index_t k = base + lane;
+    bool objects = false;
+    if (k < end) {
+      const index_t t = m.inc[k];
+      const Real q_new = tet_quality_with(m, xyz, t, i, target);
+      keep_new(k, q_new);
+      // Written so that a NaN objects.
+      objects = !(q_new > old_min) || (!(q_new > Real(0)) && !keeps_validity(old_quality(m, xyz, t, i, p), q_new));
+    }
+    if (any(objects)) return false;
   }
-  return sq;
+  return end > begin;  // a node without tets has nothing to improve
 }
 
-// The decision, once the centroid and the star's quality are known.
+// The decision, once the centroid and the adaptive test are known.
 template <class Real, bool kAdaptive>
-TS_HD NodeMove<Real> decide_move(Vec3<Real> p, Vec3<Real> target, StarQuality<Real> sq) {
+TS_HD NodeMove<Real> decide_move(Vec3<Real> p, Vec3<Real> target, Real old_min, bool improves) {
   NodeMove<Real> mv;
   mv.target = target;
   mv.displacement2 = norm2(target - p);
-  mv.old_min = kAdaptive ? sq.old_min : Real(1);
-  mv.new_min = kAdaptive ? sq.new_min : Real(1);
-  mv.accept = !kAdaptive || (sq.valid && sq.new_min > sq.old_min);
+  mv.old_min = kAdaptive ? old_min : Real(1);
+  mv.accept = !kAdaptive || improves;
   return mv;
 }
 
@@ -166,9 +185,9 @@ TS_HD NodeMove<Real> evaluate_node(const MeshView& m, const Coords& xyz, index_t
   const Vec3<Real> p = xyz.get(i);
   const Real inv_degree = Real(1) / Real(m.nbr_off[i + 1] - m.nbr_off[i]);
   const Vec3<Real> target = inv_degree * neighbour_sum<Real>(m, xyz, i, 0, 1);
-  const StarQuality<Real> sq =
-      kAdaptive ? star_quality(m, xyz, i, p, target, 0, 1) : StarQuality<Real>{Real(1), Real(1), true};
-  return decide_move<Real, kAdaptive>(p, target, sq);
+  if (!kAdaptive) return decide_move<Real, false>(p, target, Real(1), true);
+  const Real old_min = star_old_min(m, xyz, i, p, 0, 1);
+  return decide_move<Real, true>(p, target, old_min, star_improves(m, xyz, i, p, target, old_min, 0, 1));
 }
 
 // Form A conflict check for a tet where two or more nodes moved in the same

@@ -19,23 +19,23 @@ TS_HD Real signed_volume6(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d
 }
 
 // Radius ratio q = 3 r_in / R (the paper's "aspect ratio", scaled by 3).
-// With r_in = 3V/S and R = sqrt(P)/(24V), where P is the Heron-like product
-// over the three products of opposite edge lengths, q = 216 V^2 / (S sqrt P)
-// = 6 V6^2 / (S sqrt P) with V6 = 6V; the sign of V6 is carried over.
+// With u, v, w the edges from a, V6 = u·(v×w) is six times the volume,
+// v×w, w×u, u×v are twice the area vectors of the three faces at a, and
+// their sum is that of the face opposite a, so 2S is the sum of the four
+// norms. The circumcentre sits at N / (2 V6) from a, with
+// N = |u|² v×w + |v|² w×u + |w|² u×v, so R = |N| / (2|V6|); r_in = 3V/S
+// = V6 / 2S. Hence q = 6 V6² / (2S |N|), carrying the sign of V6: five
+// square roots and one division, the per-tet cost every smoother pays.
 template <class Real>
 TS_HD Real radius_ratio(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
   using std::sqrt;
-  const Vec3<Real> ab = b - a, ac = c - a, ad = d - a, bc = c - b, bd = d - b, cd = d - c;
-  const Real v6 = dot(ab, cross(ac, ad));
-  const Real area2 = sqrt(norm2(cross(ab, ac))) + sqrt(norm2(cross(ab, ad))) +
-                     sqrt(norm2(cross(ac, ad))) + sqrt(norm2(cross(bc, bd)));  // 2 S
-  const Real p1 = sqrt(norm2(ab) * norm2(cd));
-  const Real p2 = sqrt(norm2(ac) * norm2(bd));
-  const Real p3 = sqrt(norm2(ad) * norm2(bc));
-  const Real heron = (p1 + p2 + p3) * (p1 + p2 - p3) * (p1 + p3 - p2) * (p2 + p3 - p1);
-  if (!(area2 > Real(0)) || !(heron > Real(0))) return Real(0);
-  // 6 V6^2 / (S sqrt P) with S = area2 / 2.
-  return Real(12) * v6 * (v6 < Real(0) ? -v6 : v6) / (area2 * sqrt(heron));
+  const Vec3<Real> u = b - a, v = c - a, w = d - a;
+  const Vec3<Real> vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
+  const Real v6 = dot(u, vw);
+  const Real area2 = sqrt(norm2(vw)) + sqrt(norm2(wu)) + sqrt(norm2(uv)) + sqrt(norm2(vw + wu + uv));  // 2 S
+  const Real n = sqrt(norm2(norm2(u) * vw + norm2(v) * wu + norm2(w) * uv));
+  if (!(area2 > Real(0)) || !(n > Real(0))) return Real(0);
+  return Real(6) * v6 * (v6 < Real(0) ? -v6 : v6) / (area2 * n);
 }
 
 // Mean ratio eta = 12 (3|V|)^(2/3) / sum(l^2), signed like the volume.

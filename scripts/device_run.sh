@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Runs on the GPU machine from the repository root, with gpu-bundle/ carried
 # there: GPU tests, compute-sanitizer and the benchmarks, everything written
-# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] (default: tests sanitize bench)
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile]
+# (default: tests sanitize bench)
 set -uo pipefail
 b=$(cd "$(dirname "$0")" && pwd)
 out=${OUT:-/tmp/out}
@@ -42,8 +43,14 @@ for step in $steps; do
       } 2>&1 | tee "$out/sanitizers.log"
       ;;
     bench)
-      "$b/bench_smooth" --models=5k,109k --scaling=lattice-215 --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/.*/Coloured|FormB/AoS/MultiBlock/109k' \
-        --benchmark_min_time=0.01 --benchmark_out="$out/bench_quick.json" --benchmark_out_format=json 2>&1 | tail -30
+      # A quick look in both precisions: the 109k model against its CPU
+      # baselines, and the lattice.
+      for prec in double float; do
+        "$b/bench_smooth" --precision=$prec --models=5k,109k --scaling=lattice-215 \
+          --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/AoS/(Coloured|MultiBlock)/|FormB/SoA/Coloured/lattice' \
+          --benchmark_repetitions=${REPS:-1} --benchmark_min_time=0.01 \
+          --benchmark_out="$out/bench_quick_$prec.json" --benchmark_out_format=json 2>&1 | grep -v "^\[" | cut -c1-160 | tail -16
+      done
       ;;
     float)
       # The CPU baselines of the 109k model come along, so the float GPU times
@@ -52,6 +59,16 @@ for step in $steps; do
         --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/.*/(Coloured|MultiBlock)/' \
         --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
         --benchmark_out="$out/bench_float.json" --benchmark_out_format=json 2>&1 | grep -v "^\[" | cut -c1-160 | tail -30
+      ;;
+    profile)
+      # Each kernel of one 109k Coloured double pipeline, timed alone by
+      # Nsight Compute (clocks left as they are): where topology and
+      # colouring spend their time. One row per launch in ncu_109k.csv.
+      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      timeout 300 "$ncu" --clock-control none --metrics gpu__time_duration.sum --csv --launch-count 400 \
+        "$b/bench_smooth" --no-cpu --models=109k --benchmark_filter='^FormB/AoS/Coloured/109k' \
+        --benchmark_min_time=0.01 > "$out/ncu_109k.csv" 2> "$out/ncu_109k.err"
+      echo "ncu exit $? ($(wc -l < "$out/ncu_109k.csv") lines)"
       ;;
     study)
       "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \

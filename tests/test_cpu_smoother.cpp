@@ -156,7 +156,9 @@ TEST(CpuSmoother, StoppingRule) {
   o.tolerance = 0;    // only "no moves" or the cap can stop it now
   r = smooth_cpu(m, o);
   EXPECT_TRUE(r.stop == StopReason::NoMoves || r.sweeps == 100);
-  if (r.stop == StopReason::NoMoves) EXPECT_EQ(r.accepted_per_sweep.back(), 0);
+  if (r.stop == StopReason::NoMoves) {
+    EXPECT_EQ(r.accepted_per_sweep.back(), 0);
+  }
   int calls = 0;
   o.max_iterations = 3;
   o.progress = [&](const SweepProgress& p) { EXPECT_EQ(p.sweep, ++calls); };

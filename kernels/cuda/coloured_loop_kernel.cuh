@@ -53,6 +53,25 @@ struct ColourClassesView {
 template <class Real>
 inline constexpr int kColouredMinBlocks = sizeof(Real) == 4 ? 3 : 2;
 
+// A few values in registers, indexed by a run-time round number: the
+// unrolled comparisons keep the array out of local memory.
+template <class Real, int K>
+struct KeptQualities {
+  Real v[K];
+  __device__ __forceinline__ void put(int r, Real q) {
+#pragma unroll
+    for (int s = 0; s < K; ++s)
+      if (s == r) v[s] = q;
+  }
+  __device__ __forceinline__ Real get(int r) const {
+    Real q = 0;
+#pragma unroll
+    for (int s = 0; s < K; ++s)
+      if (s == r) q = v[s];
+    return q;
+  }
+};
+
 template <class Real, bool kAdaptive, int G, class Coords>
 __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
     coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* moved_at, index_t n,
@@ -74,6 +93,7 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
   const int lane = static_cast<int>(tid % G);
   const unsigned mask = group_mask<G>();
   const CachedOldQuality<Real> cached{tet_q};
+  constexpr int kKept = 32 / G;
   for (int s = 0; s < max_iterations; ++s) {
     unsigned accepted = 0;
     unsigned evaluated = 0;
@@ -94,23 +114,21 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
         // in the previous sweep (step - colours); see the top of the file.
         const bool active =
             in_class && (!skip_settled || s == 0 || group_max<G>(latest, mask) >= step - cls.count);
-        // A lane's first tet (its only one unless the node has more than G)
-        // keeps its quality at the target for the cache update.
-        index_t first_k = -1;
-        Real first_q = 0;
+        // The lane's new qualities, kept for the cache update: every round
+        // up to kKept (a star of up to 32 tets needs no recomputation).
+        KeptQualities<Real, kKept> kept;
+        int rounds = 0;
         const NodeMove<Real> mv = judge_move_group<Real, kAdaptive, G>(
-            m, xyz, i, p, target, lane, active, cached, mask, [&](index_t k, Real q) {
-              if (first_k < 0) {
-                first_k = k;
-                first_q = q;
-              }
-            });
+            m, xyz, i, p, target, lane, active, cached, mask, [&](index_t, Real q) { kept.put(rounds++, q); });
         if (active && mv.accept && mv.displacement2 > Real(0)) {
-          // tet_quality_with never reads node i's stored position, so lane 0
-          // may overwrite it meanwhile.
-          if (kAdaptive)
-            for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G)
-              tet_q[m.inc[e]] = e == first_k ? first_q : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
+          // An accepted move computed every round. tet_quality_with never
+          // reads node i's stored position, so lane 0 may overwrite it
+          // meanwhile.
+          if (kAdaptive) {
+            int r = 0;
+            for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G, ++r)
+              tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
+          }
           if (lane == 0) {
             xyz.set(i, mv.target);
             moved_at[i] = step;

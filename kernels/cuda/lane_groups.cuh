@@ -53,6 +53,13 @@ __device__ __forceinline__ T group_or(T v, unsigned mask = 0xffffffffu) {
   return v;
 }
 
+// Whether any lane of this thread's group has b set; only the group's lanes
+// take part, so groups of one warp may call it apart.
+template <int G>
+__device__ __forceinline__ bool group_any(bool b) {
+  return __any_sync(group_mask<G>(), b) != 0;
+}
+
 // Adds every lane's v to *target with one atomic per warp (none when the
 // warp's total is zero). Every lane of the warp must call it.
 template <class Target, class T>

@@ -66,22 +66,24 @@ __device__ __forceinline__ Vec3<Real> centroid_group(const MeshView& m, const Co
 }
 
 // The decision on moving node i from p to target; `old_quality` and
-// `keep_new` as in star_quality (node_update.hpp).
+// `keep_new` as in star_improves (node_update.hpp). The group settles the
+// star's old minimum first, then votes round by round on the new qualities,
+// so a rejected move stops at the round of its first objecting tet.
 template <class Real, bool kAdaptive, int G, class Coords, class OldQuality = FreshOldQuality,
           class KeepNew = IgnoreNewQuality>
 __device__ __forceinline__ NodeMove<Real> judge_move_group(const MeshView& m, const Coords& xyz, index_t i,
                                                            Vec3<Real> p, Vec3<Real> target, int lane, bool active,
                                                            const OldQuality& old_quality = {},
                                                            unsigned mask = 0xffffffffu, KeepNew&& keep_new = {}) {
-  StarQuality<Real> sq{Real(1), Real(1), true};
-  if (kAdaptive) {
-    sq = StarQuality<Real>{Real(2), Real(2), true};
-    if (active) sq = star_quality(m, xyz, i, p, target, lane, G, old_quality, keep_new);
-    sq.old_min = group_min<G>(sq.old_min, mask);
-    sq.new_min = group_min<G>(sq.new_min, mask);
-    sq.valid = group_min<G>(static_cast<int>(sq.valid), mask) != 0;
-  }
-  return decide_move<Real, kAdaptive>(p, target, sq);
+  if (!kAdaptive) return decide_move<Real, false>(p, target, Real(1), true);
+  Real old_min = active ? star_old_min(m, xyz, i, p, lane, G, old_quality) : Real(2);
+  old_min = group_min<G>(old_min, mask);
+  // The votes name only this group's lanes: other groups of the warp may
+  // have other star sizes, or be idle.
+  const bool improves =
+      active && star_improves(m, xyz, i, p, target, old_min, lane, G, old_quality, keep_new,
+                              [](bool objects) { return group_any<G>(objects); });
+  return decide_move<Real, true>(p, target, old_min, improves);
 }
 
 template <class Real, bool kAdaptive, int G, class Coords>

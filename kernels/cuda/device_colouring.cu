@@ -1,23 +1,19 @@
-// Jones-Plassmann colouring on the GPU, round for round the CPU's
-// colour_nodes() (mesh/colouring.cpp): same priorities, same first-fit rule,
-// so the same colours and the same number of rounds.
+// Jones-Plassmann colouring on the GPU with the CPU's colour_nodes()
+// (mesh/colouring.cpp) result: the same colours and the same number of
+// rounds, reached without rounds.
 //
-// All rounds run in one cooperative launch, a grid barrier between rounds,
-// kColourLanes threads per node. A node's state is round_of[i]:
-// 0 for nodes that never move, r >= 1 for the round that coloured it,
-// kUncoloured while it waits. Round r only treats a neighbour j as coloured
-// when round_of[j] < r, so it sees exactly the colours of earlier rounds:
-//  * the only writes of round r are colour[i] and round_of[i] of its
-//    winners;
-//  * a neighbour reading round_of[i] of such a winner gets kUncoloured or r,
-//    both >= r, so it decides the same either way (and it loses to i, which
-//    beats all its uncoloured neighbours);
-//  * colour[j] is only read when round_of[j] < r, i.e. written before an
-//    earlier barrier, never in this round;
-//  * two winners are never neighbours: colours_before is a strict order.
-//
-// The device stops after the first round that leaves no node waiting; the
-// host reads the numbers of rounds and colours back once.
+// In Jones-Plassmann a node is coloured in the first round in which all its
+// movable neighbours of higher priority (colours_before) are coloured, and
+// none of lower priority can be coloured before it. So it takes the
+// smallest colour none of its higher-priority neighbours has, and its round
+// is one more than the latest of theirs: a recurrence over the priority
+// order that needs no barrier. One cooperative launch works through the
+// nodes sorted by descending priority; a group of lanes takes a node, waits
+// until each higher-priority neighbour has published its (round, colour)
+// word, then publishes its own. Groups take positions in a strided loop,
+// so the unfinished node of highest priority always has every input and a
+// resident group working on it: the wait always ends. (A launch with every
+// block resident is what that needs; the cooperative launch guarantees it.)
 //
 // Classes: the colours (non-movable nodes as the sentinel num_colours) are
 // radix sorted with the node indices as values; the sort is stable, so each
@@ -26,8 +22,7 @@
 #include <cub/device/device_radix_sort.cuh>
 
 #include <algorithm>
-
-#include <string>
+#include <cstdint>
 
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_topology.hpp"
@@ -43,118 +38,165 @@ namespace {
 using detail::blocks_for;
 using detail::kBlock;
 
-constexpr unsigned kUncoloured = 0xffffffffu;
+// A node's published word: round in the high half, colour in the low half.
+// Movable nodes start at kWaiting; the others are final from the start:
+// round 0, colour -1 (they never compete and give no colour away).
+constexpr std::uint64_t kWaiting = ~std::uint64_t{0};
+constexpr std::uint64_t kNeverMoves = 0xffffffffull;
 
-// Written by the device, read back once. Round r counts its waiting nodes
-// into waiting[r % 3]: a slot is cleared two rounds after it was read.
-struct RoundCounts {
-  unsigned waiting[3];
-  int max_colour;
-  unsigned rounds;  // rounds taken; 0 if the loop gave up
-};
-
-__global__ void init_rounds(std::size_t n, const std::uint8_t* movable, unsigned* round_of) {
-  const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
-  if (i < n) round_of[i] = movable[i] ? kUncoloured : 0u;
+__device__ __host__ constexpr std::uint64_t publish_word(unsigned round, int colour) {
+  return (static_cast<std::uint64_t>(round) << 32) | static_cast<std::uint32_t>(colour);
 }
 
-// Threads per node in a round, and neighbours each lane reads at once: a
-// lane loads kColourChunk neighbour indices, then all their rounds, then all
-// their colours, so a node's ~14 neighbours cost three dependent loads, not
-// three per neighbour. Four lanes: ~440k threads for the 109k model, near the
-// ~270k an H100 holds at once.
-constexpr int kColourLanes = 4;
-constexpr int kColourChunk = 4;
+// Written by the device, read back once.
+struct ColourTotals {
+  int max_colour;
+  unsigned rounds;
+};
 
-// The smallest colour none of the earlier-coloured neighbours has, looked
+// Sort keys for the priority order: ascending keys are descending
+// priority, and the stable sort keeps ties in index order, as
+// colours_before breaks them.
+__global__ void priority_keys(std::size_t n, const std::uint8_t* movable, std::uint32_t* keys, index_t* nodes,
+                              std::uint64_t* word) {
+  const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (i >= n) return;
+  keys[i] = ~colouring_priority(static_cast<std::uint32_t>(i));
+  nodes[i] = static_cast<index_t>(i);
+  word[i] = movable[i] ? kWaiting : kNeverMoves;
+}
+
+// Lanes per node.
+constexpr int kColourLanes = 4;
+
+__device__ std::uint64_t wait_for(const std::uint64_t* word) {
+  std::uint64_t w = *reinterpret_cast<const volatile std::uint64_t*>(word);
+  while (w == kWaiting) {
+    __nanosleep(32);
+    w = *reinterpret_cast<const volatile std::uint64_t*>(word);
+  }
+  return w;
+}
+
+// The smallest colour none of i's higher-priority neighbours has, looked
 // for 64 colours at a time, on one thread (the rare case of 64+ colours).
-__device__ int first_free_colour(const index_t* nbr, index_t b, index_t e, const unsigned* round_of,
-                                 const int* colour, unsigned r, int from) {
+// Every word it needs is final by now, but is read past L1 all the same: a
+// line cached earlier may predate it.
+__device__ int first_free_colour(const index_t* nbr, index_t b, index_t e, std::uint32_t i,
+                                 const std::uint64_t* word, int from) {
   for (int base = from;; base += 64) {
     unsigned long long used = 0;
     for (index_t k = b; k < e; ++k) {
       const index_t j = nbr[k];
-      if (round_of[j] >= r) continue;
-      const int c = colour[j] - base;
+      if (!colours_before(static_cast<std::uint32_t>(j), i)) continue;
+      const int c = static_cast<int>(static_cast<std::uint32_t>(wait_for(word + j))) - base;
       if (c >= 0 && c < 64) used |= 1ull << c;
     }
     if (~used != 0) return base + __ffsll(static_cast<long long>(~used)) - 1;
   }
 }
 
-// Round r for node i on the G lanes of its group (mask: those lanes).
-// Returns whether i must wait for a later round. When i takes a colour now,
-// lane 0 raises `picked` to it: a group may colour several nodes in a round,
-// and the largest colour of all of them must reach the colour count.
-__device__ bool colour_node(std::size_t i, const index_t* nbr_off, const index_t* nbr, unsigned r,
-                            unsigned* round_of, int* colour, int lane, unsigned mask, int& picked) {
-  constexpr int G = kColourLanes;
-  const bool candidate = round_of[i] == kUncoloured;
-  if (!candidate) return false;  // the whole group leaves together
-  const index_t b = nbr_off[i], e = nbr_off[i + 1];
-  bool beaten = false;
-  unsigned long long used = 0;  // colours 0..63 of neighbours coloured in earlier rounds
-  for (index_t first = b + lane; first < e; first += G * kColourChunk) {
-    index_t j[kColourChunk];
-    unsigned rj[kColourChunk];
-    int cj[kColourChunk];
-#pragma unroll
-    for (int u = 0; u < kColourChunk; ++u) j[u] = first + u * G < e ? nbr[first + u * G] : -1;
-#pragma unroll
-    for (int u = 0; u < kColourChunk; ++u) rj[u] = j[u] >= 0 ? round_of[j[u]] : 0u;
-#pragma unroll
-    for (int u = 0; u < kColourChunk; ++u) cj[u] = j[u] >= 0 && rj[u] < r ? colour[j[u]] : -1;  // -1: never moves
-#pragma unroll
-    for (int u = 0; u < kColourChunk; ++u) {
-      if (j[u] < 0) continue;
-      if (rj[u] >= r)
-        beaten = beaten || colours_before(static_cast<std::uint32_t>(j[u]), static_cast<std::uint32_t>(i));
-      else if (cj[u] >= 0 && cj[u] < 64)
-        used |= 1ull << cj[u];
-    }
-  }
-  beaten = group_or<G>(static_cast<unsigned>(beaten), mask) != 0;
-  used = group_or<G>(used, mask);
-  if (beaten) return true;
-  if (lane == 0) {
-    const int c = ~used != 0 ? __ffsll(static_cast<long long>(~used)) - 1
-                             : first_free_colour(nbr, b, e, round_of, colour, r, 64);
-    colour[i] = c;
-    round_of[i] = r;
-    picked = max(picked, c);
-  }
-  return false;
-}
-
-// Every round in one cooperative launch, a grid barrier between rounds;
-// stops after the first round that leaves no node waiting. Groups of G
-// lanes take the nodes in a grid-stride loop. Eight blocks of 256 fill a
-// multiprocessor (the bound keeps the kernel within 32 registers).
-__global__ void __launch_bounds__(kBlock, 8) colour_rounds_kernel(std::size_t n, const index_t* nbr_off,
-                                                               const index_t* nbr, unsigned* round_of, int* colour,
-                                                               RoundCounts* counts, unsigned max_rounds) {
+__global__ void __launch_bounds__(kBlock) colour_dataflow_kernel(std::size_t n, const index_t* order,
+                                                                 const index_t* nbr_off, const index_t* nbr,
+                                                                 std::uint64_t* word, int* colour,
+                                                                 ColourTotals* totals) {
   namespace cg = cooperative_groups;
   constexpr int G = kColourLanes;
   cg::grid_group grid = cg::this_grid();
   const unsigned long long tid = grid.thread_rank(), groups = grid.size() / G;
   const int lane = static_cast<int>(tid % G);
   const unsigned mask = group_mask<G>();
-  for (unsigned r = 1; r <= max_rounds; ++r) {
-    unsigned waiting = 0;
-    int picked = -1;
-    for (unsigned long long i = tid / G; i < n; i += groups)
-      waiting += colour_node(i, nbr_off, nbr, r, round_of, colour, lane, mask, picked) && lane == 0;
-    __syncwarp();
-    warp_atomic_add(&counts->waiting[r % 3], waiting);
-    const int warp_max = __reduce_max_sync(0xffffffffu, picked);
-    if ((threadIdx.x & 31) == 0 && warp_max >= 0) atomicMax(&counts->max_colour, warp_max);
-    if (tid == 0) counts->waiting[(r + 1) % 3] = 0;
-    grid.sync();
-    if (__ldcg(&counts->waiting[r % 3]) == 0) {
-      if (tid == 0) counts->rounds = r;
-      return;
+  int picked = -1;
+  unsigned latest = 0;
+  for (unsigned long long pos = tid / G; pos < n; pos += groups) {
+    const index_t i = order[pos];
+    if (word[i] != kWaiting) continue;  // never moves (the group leaves together)
+    const index_t b = nbr_off[i], e = nbr_off[i + 1];
+    unsigned round = 0;                 // the latest round among higher-priority neighbours
+    unsigned long long used = 0;        // their colours 0..63
+    for (index_t k = b + lane; k < e; k += G) {
+      const index_t j = nbr[k];
+      if (!colours_before(static_cast<std::uint32_t>(j), static_cast<std::uint32_t>(i))) continue;
+      const std::uint64_t w = wait_for(word + j);
+      round = max(round, static_cast<unsigned>(w >> 32));
+      const int c = static_cast<int>(static_cast<std::uint32_t>(w));
+      if (c >= 0 && c < 64) used |= 1ull << c;
+    }
+    round = group_max<G>(round, mask) + 1;
+    used = group_or<G>(used, mask);
+    if (lane == 0) {
+      const int c = ~used != 0 ? __ffsll(static_cast<long long>(~used)) - 1
+                               : first_free_colour(nbr, b, e, static_cast<std::uint32_t>(i), word, 64);
+      colour[i] = c;
+      // The colour array is for later kernels; the word is what waiting
+      // groups read, stored in one piece.
+      *reinterpret_cast<volatile std::uint64_t*>(word + i) = publish_word(round, c);
+      picked = max(picked, c);
+      latest = max(latest, round);
     }
   }
+  const int warp_colour = __reduce_max_sync(0xffffffffu, picked);
+  const unsigned warp_round = __reduce_max_sync(0xffffffffu, latest);
+  if ((threadIdx.x & 31) == 0) {
+    if (warp_colour >= 0) atomicMax(&totals->max_colour, warp_colour);
+    atomicMax(&totals->rounds, warp_round);
+  }
+}
+
+void run_dataflow(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
+  const std::size_t n = topo.num_nodes;
+  std::size_t temp_bytes = 0;
+  {
+    cub::DoubleBuffer<std::uint32_t> keys(nullptr, nullptr);
+    cub::DoubleBuffer<index_t> nodes(nullptr, nullptr);
+    CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys, nodes, n));
+  }
+  const auto carve = [n, temp_bytes](unsigned char* base, cub::DoubleBuffer<std::uint32_t>& keys,
+                                     cub::DoubleBuffer<index_t>& nodes, std::uint64_t*& word,
+                                     ColourTotals*& totals, void*& temp) {
+    detail::ScratchCarver carver(base);
+    word = carver.take<std::uint64_t>(n);
+    totals = carver.take<ColourTotals>(1);
+    std::uint32_t* k0 = carver.take<std::uint32_t>(n);
+    std::uint32_t* k1 = carver.take<std::uint32_t>(n);
+    index_t* v0 = carver.take<index_t>(n);
+    index_t* v1 = carver.take<index_t>(n);
+    temp = carver.take<unsigned char>(temp_bytes);
+    keys = cub::DoubleBuffer<std::uint32_t>(k0, k1);
+    nodes = cub::DoubleBuffer<index_t>(v0, v1);
+    return carver.used();
+  };
+  cub::DoubleBuffer<std::uint32_t> keys;
+  cub::DoubleBuffer<index_t> nodes;
+  std::uint64_t* word = nullptr;
+  ColourTotals* totals = nullptr;
+  void* temp = nullptr;
+  topo.scratch.resize(carve(nullptr, keys, nodes, word, totals, temp));
+  carve(topo.scratch.data(), keys, nodes, word, totals, temp);
+
+  priority_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.movable.data(), keys.Current(), nodes.Current(), word);
+  CUDA_CHECK_LAUNCH();
+  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, keys, nodes, n, 0, 32, stream));
+  const ColourTotals start{-1, 0};
+  CUDA_CHECK(cudaMemcpyAsync(totals, &start, sizeof start, cudaMemcpyHostToDevice, stream));
+  // Every block resident at once (see the top of the file), or fewer when
+  // asked.
+  unsigned blocks = std::min(blocks_for(n * kColourLanes), resident_blocks(colour_dataflow_kernel, kBlock));
+  if (max_blocks > 0) blocks = std::min(blocks, max_blocks);
+  blocks = std::max(blocks, 1u);
+  const index_t* order = nodes.Current();
+  const index_t* nbr_off = topo.nbr_off.data();
+  const index_t* nbr = topo.nbr.data();
+  int* colour = topo.colour.data();
+  void* params[] = {const_cast<std::size_t*>(&n), &order, &nbr_off, &nbr, &word, &colour, &totals};
+  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(colour_dataflow_kernel), dim3(blocks),
+                                         dim3(kBlock), params, 0, stream));
+  CUDA_CHECK_LAUNCH();
+  ColourTotals host{};
+  CUDA_CHECK(cudaMemcpyAsync(&host, totals, sizeof host, cudaMemcpyDeviceToHost, stream));
+  CUDA_CHECK(cudaStreamSynchronize(stream));
+  topo.colour_rounds = static_cast<int>(host.rounds);
+  topo.num_colours = host.max_colour + 1;
 }
 
 __global__ void class_keys(std::size_t n, const int* colour, std::uint32_t sentinel, std::uint32_t* keys,
@@ -171,48 +213,6 @@ struct ColourRows {
   __device__ std::uint32_t row(unsigned long long k) const { return keys[k]; }
   __device__ index_t item(unsigned long long k) const { return nodes[k]; }
 };
-
-void run_rounds(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
-  const std::size_t n = topo.num_nodes;
-  const auto carve = [n](unsigned char* base, unsigned*& round_of, RoundCounts*& counts) {
-    detail::ScratchCarver carver(base);
-    round_of = carver.take<unsigned>(n);
-    counts = carver.take<RoundCounts>(1);
-    return carver.used();
-  };
-  unsigned* round_of = nullptr;
-  RoundCounts* counts = nullptr;
-  topo.scratch.resize(carve(nullptr, round_of, counts));
-  carve(topo.scratch.data(), round_of, counts);
-
-  init_rounds<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.movable.data(), round_of);
-  CUDA_CHECK_LAUNCH();
-  CUDA_CHECK(cudaMemsetAsync(counts, 0, sizeof(RoundCounts), stream));
-  CUDA_CHECK(cudaMemsetAsync(&counts->max_colour, 0xff, sizeof(int), stream));
-  // As many blocks as can be resident at once (the grid barrier needs that),
-  // or fewer when asked.
-  unsigned blocks = std::min(blocks_for(n * kColourLanes), resident_blocks(colour_rounds_kernel, kBlock));
-  if (max_blocks > 0) blocks = std::min(blocks, max_blocks);
-  blocks = std::max(blocks, 1u);
-  const index_t* nbr_off = topo.nbr_off.data();
-  const index_t* nbr = topo.nbr.data();
-  int* colour = topo.colour.data();
-  // Every round colours at least the waiting node of highest priority.
-  auto max_rounds = static_cast<unsigned>(topo.movable_count);
-  void* params[] = {const_cast<std::size_t*>(&n), &nbr_off, &nbr, &round_of, &colour, &counts, &max_rounds};
-  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(colour_rounds_kernel), dim3(blocks),
-                                         dim3(kBlock), params, 0, stream));
-  RoundCounts host{};
-  CUDA_CHECK(cudaMemcpyAsync(&host, counts, sizeof(RoundCounts), cudaMemcpyDeviceToHost, stream));
-  CUDA_CHECK(cudaStreamSynchronize(stream));
-  if (host.rounds > 0) {
-    topo.colour_rounds = static_cast<int>(host.rounds);
-    topo.num_colours = host.max_colour + 1;
-    return;
-  }
-  throw DeviceError("colour_device: Jones-Plassmann left nodes uncoloured after " +
-                    std::to_string(topo.movable_count) + " rounds");
-}
 
 void build_classes(DeviceTopology& topo, cudaStream_t stream) {
   const std::size_t n = topo.num_nodes;
@@ -264,7 +264,7 @@ void colour_device(DeviceTopology& topo, cudaStream_t stream, unsigned max_block
   if (topo.num_nodes > 0) CUDA_CHECK(cudaMemsetAsync(topo.colour.data(), 0xff, topo.colour.bytes(), stream));
   topo.num_colours = 0;
   topo.colour_rounds = 0;
-  if (topo.movable_count > 0) run_rounds(topo, stream, max_blocks);
+  if (topo.movable_count > 0) run_dataflow(topo, stream, max_blocks);
   build_classes(topo, stream);
 }
 

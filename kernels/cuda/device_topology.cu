@@ -1,12 +1,13 @@
-// Mesh topology on the GPU, the paper's way (§3.2-3.3): edges and their
-// reversed copies as packed keys, radix sort, unique, CSR offsets; the same
-// for node -> tet incidence; boundary faces by sorting sorted face triples
+// Mesh topology on the GPU, the paper's way (§3.2-3.3): edges as packed
+// keys, radix sort, unique, the reversed copies appended and sorted by start
+// node, CSR offsets; the same for node -> tet incidence; boundary faces by sorting sorted face triples
 // (device_topology_boundary.cu); then the movable flags.
 //
 // Keys (w = bits needed for the node count N, u = bits for the tet count T):
-//   edge      start << w | end, 12 per tet; a self loop of a tet with a repeated
-//             node becomes the sentinel N << w, which sorts last and falls in
-//             no row; the sort visits 2w bits.
+//   edge      min << w | max, 6 per tet, then for each unique edge also
+//             max << w | min; a self loop of a tet with a repeated node
+//             becomes the sentinel N << w, which sorts last and falls in no
+//             row; both sorts visit 2w bits.
 //   incidence node << u | tet, 4 per tet; a repeated node's second entry is a
 //             sentinel N << u, so each (node, tet) appears once, as on the CPU;
 //             the sort visits only the w node bits (stable, keys in tet order).
@@ -14,8 +15,8 @@
 //
 // Memory, to size a run (bytes per tet T; a lattice has N ~ T / 6):
 //   scratch   two key buffers of 12 keys * 8 B = 192 B/tet, reused by every
-//             phase (the unique edges stay in one of them, the incidence and
-//             face sorts work in the other), plus CUB temp storage for the
+//             phase (the directed edges stay in one of them, the incidence
+//             and face sorts work in the other), plus CUB temp storage for the
 //             DoubleBuffer sorts and the unique pass: bounded, since onesweep
 //             works in portions of 2^28 keys (about 100-200 MB at most).
 //             topo.scratch.bytes() gives the exact figure.
@@ -25,8 +26,9 @@
 //   scratch and ~1.6 GB of results on top of the mesh itself. colour_device
 //   later reuses the same scratch (it needs ~20 B/node).
 //
-// One host synchronisation, at the end: the unique edge count sizes `nbr`,
-// which is only allocated then; everything else is sized from N and T.
+// Two host synchronisations: the unique edge count sizes the second edge
+// sort, and at the end the neighbour count sizes `nbr`, which is only
+// allocated then; everything else is sized from N and T.
 #include <algorithm>
 
 #include <cub/device/device_radix_sort.cuh>
@@ -51,24 +53,30 @@ struct BuildCounts {
 };
 
 // One thread per key, so neighbouring threads write neighbouring keys: key
-// 12t + 2p + d is edge p of tet t ((0,1) (0,2) (0,3) (1,2) (1,3) (2,3)),
-// forward for d = 0 and reversed for d = 1.
+// 6t + p is edge p of tet t ((0,1) (0,2) (0,3) (1,2) (1,3) (2,3)) as
+// min << w | max.
 __global__ void emit_edges(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int w,
                            std::uint64_t* keys) {
   const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
-  if (k >= 12 * num_tets) return;
-  const std::size_t t = k / 12;
-  const int p = static_cast<int>(k % 12) / 2;
+  if (k >= 6 * num_tets) return;
+  const std::size_t t = k / 6;
+  const int p = static_cast<int>(k % 6);
   const int first = p < 3 ? 0 : (p < 5 ? 1 : 2);
   const int second = p < 3 ? p + 1 : (p < 5 ? p - 1 : 3);
-  std::uint64_t a = static_cast<std::uint32_t>(tets[4 * t + first]);
-  std::uint64_t b = static_cast<std::uint32_t>(tets[4 * t + second]);
-  if (k & 1) {
-    const std::uint64_t swap = a;
-    a = b;
-    b = swap;
-  }
-  keys[k] = a == b ? num_nodes << w : (a << w | b);
+  const std::uint64_t a = static_cast<std::uint32_t>(tets[4 * t + first]);
+  const std::uint64_t b = static_cast<std::uint32_t>(tets[4 * t + second]);
+  keys[k] = a == b ? num_nodes << w : (a < b ? a << w | b : b << w | a);
+}
+
+// Each unique edge in both directions: key k goes to 2k and its reverse to
+// 2k + 1 (the sentinel stays a sentinel).
+__global__ void both_directions(const std::uint64_t* edges, std::size_t count, std::uint64_t num_nodes, int w,
+                                std::uint64_t* out) {
+  const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (k >= count) return;
+  const std::uint64_t e = edges[k], low = (1ull << w) - 1;
+  out[2 * k] = e;
+  out[2 * k + 1] = (e >> w) == num_nodes ? e : ((e & low) << w | e >> w);
 }
 
 __global__ void emit_incidence(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int u,
@@ -157,22 +165,40 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   std::size_t temp_size = s.temp_bytes;
   CUDA_CHECK(cudaMemsetAsync(s.counts, 0, sizeof(BuildCounts), stream));
 
-  // Neighbours: 12 directed edges per tet, sorted, made unique; rows follow.
+  // Neighbours: each tet's 6 edges as (min, max), sorted and made unique;
+  // then each unique edge in both directions, sorted by start node; rows
+  // follow. (The paper appends the reversed copies before the one sort;
+  // appending them to the unique edges sorts half as many keys in all.)
   cub::DoubleBuffer<std::uint64_t> edges(s.keys[0], s.keys[1]);
+  BuildCounts counts{};
   if (nt > 0) {
-    emit_edges<<<blocks_for(12 * nt), kBlock, 0, stream>>>(d_tets, nt, n, w, s.keys[0]);
+    emit_edges<<<blocks_for(6 * nt), kBlock, 0, stream>>>(d_tets, nt, n, w, s.keys[0]);
     CUDA_CHECK_LAUNCH();
-    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, edges, 12 * nt, 0, 2 * w, stream));
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, edges, 6 * nt, 0, 2 * w, stream));
     CUDA_CHECK(cub::DeviceSelect::Unique(s.temp, temp_size, edges.Current(), edges.Alternate(),
-                                         &s.counts->unique_edges, 12 * nt, stream));
+                                         &s.counts->unique_edges, 6 * nt, stream));
+    // The unique count sizes the second sort: a read-back.
+    CUDA_CHECK(cudaMemcpyAsync(&counts.unique_edges, &s.counts->unique_edges, sizeof counts.unique_edges,
+                               cudaMemcpyDeviceToHost, stream));
+    CUDA_CHECK(cudaStreamSynchronize(stream));
   }
-  const std::uint64_t* unique_edges = edges.Alternate();
-  detail::csr_from_sorted<<<blocks_for(12 * nt + 1), kBlock, 0, stream>>>(
-      detail::PackedRows{unique_edges, w}, &s.counts->unique_edges, 12 * nt, rows, topo.nbr_off.data(),
-      static_cast<index_t*>(nullptr));
+  const std::size_t directed = 2 * static_cast<std::size_t>(counts.unique_edges);
+  // Up to 12 keys per tet (tets that share no edge): a whole buffer each.
+  cub::DoubleBuffer<std::uint64_t> rows_sorted(edges.Current(), edges.Alternate());
+  if (directed > 0) {
+    both_directions<<<blocks_for(directed / 2), kBlock, 0, stream>>>(edges.Alternate(), directed / 2, n, w,
+                                                                     edges.Current());
+    CUDA_CHECK_LAUNCH();
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, rows_sorted, directed, 0, 2 * w, stream));
+  }
+  const std::uint64_t* directed_edges = rows_sorted.Current();
+  detail::csr_from_sorted<<<blocks_for(directed + 1), kBlock, 0, stream>>>(
+      detail::PackedRows{directed_edges, w}, static_cast<const unsigned long long*>(nullptr), directed, rows,
+      topo.nbr_off.data(), static_cast<index_t*>(nullptr));
   CUDA_CHECK_LAUNCH();
-  // The sorted, non-unique copy is dead now: later phases work in its buffer.
-  std::uint64_t* work = edges.Current();
+  // The directed edges stay where they are until low_bits reads them; later
+  // phases work in the other buffer.
+  std::uint64_t* work = rows_sorted.Alternate();
 
   // Node -> tets: 4 keys per tet, sorted; row = node, item = tet.
   cub::DoubleBuffer<std::uint64_t> inc(work, work + 4 * nt);
@@ -201,14 +227,13 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
                              cudaMemcpyDeviceToDevice, stream));
   CUDA_CHECK(cudaMemcpyAsync(&s.counts->incidences, topo.inc_off.data() + n, sizeof(index_t),
                              cudaMemcpyDeviceToDevice, stream));
-  BuildCounts counts{};
   CUDA_CHECK(cudaMemcpyAsync(&counts, s.counts, sizeof(BuildCounts), cudaMemcpyDeviceToHost, stream));
   CUDA_CHECK(cudaStreamSynchronize(stream));
   topo.movable_count = counts.movable;
   topo.inc.resize(static_cast<std::size_t>(counts.incidences));
   topo.nbr.resize(static_cast<std::size_t>(counts.neighbours));
   if (counts.neighbours > 0) {
-    low_bits<<<blocks_for(counts.neighbours), kBlock, 0, stream>>>(unique_edges, counts.neighbours, w,
+    low_bits<<<blocks_for(counts.neighbours), kBlock, 0, stream>>>(directed_edges, counts.neighbours, w,
                                                                    topo.nbr.data());
     CUDA_CHECK_LAUNCH();
   }

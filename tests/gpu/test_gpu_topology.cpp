@@ -106,5 +106,20 @@ TEST_F(GpuTopology, NodeIndicesBeyond64BitFaceKeys) {
   expect_same_as_cpu(m);
 }
 
+// Every pair of 70 nodes shares a (degenerate, doubled) tet, so the nodes
+// form a clique: 70 colours, past the 64 that one mask of used colours
+// holds. Each tet is listed twice, so no face is single and every node is
+// movable.
+TEST_F(GpuTopology, CliqueNeedsMoreThan64Colours) {
+  constexpr index_t kNodes = 70;
+  TetMesh m;
+  for (index_t i = 0; i < kNodes; ++i) m.xyz.insert(m.xyz.end(), {double(i), double(i * i % 7), double(i % 5)});
+  for (index_t i = 0; i < kNodes; ++i)
+    for (index_t j = i + 1; j < kNodes; ++j)
+      for (int copy = 0; copy < 2; ++copy) m.tets.insert(m.tets.end(), {i, j, i, j});
+  expect_same_as_cpu(m);
+  EXPECT_EQ(colour_nodes(build_topology(m).neighbours, build_topology(m).movable).num_colours, kNodes);
+}
+
 }  // namespace
 }  // namespace tetsmooth

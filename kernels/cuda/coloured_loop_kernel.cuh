@@ -103,17 +103,20 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
     for (int col = 0; col < cls.count; ++col) {
       const long long begin = cls.off[col], end = cls.off[col + 1];
       const int step = s * cls.count + col;
-      // Each group takes a contiguous share of the class, G entries at a
-      // time: the lanes read G node indices and their stamps at once, and
-      // the group then works through the nodes that need a turn.
-      const long long share = (end - begin + groups - 1) / groups;
-      const long long first = begin + group * share, last = min(end, first + share);
-      for (long long chunk = first; chunk < last; chunk += G) {
+      // The class in chunks of `width` entries, chunk c to group c % groups,
+      // so that neighbouring groups take neighbouring entries (as a node
+      // numbering with locality wants). A group's lanes read a chunk's node
+      // indices and stamps at once, then the group works through the nodes
+      // due a turn. Chunks of G entries, or fewer when the class gives each
+      // group less than that (the balance of small classes).
+      const long long width = max(1ll, min(static_cast<long long>(G), (end - begin + groups - 1) / groups));
+      for (long long chunk = begin + group * width; chunk < end; chunk += groups * width) {
         const long long k = chunk + lane;
-        const index_t node = k < last ? cls.nodes[k] : 0;
+        const bool mine = lane < width && k < end;
+        const index_t node = mine ? cls.nodes[k] : 0;
         // Settled: nothing in the neighbourhood moved since this node's turn
         // in the previous sweep (step - colours); see the top of the file.
-        const bool due = k < last && (!skip_settled || s == 0 || touched_at[node] >= step - cls.count);
+        const bool due = mine && (!skip_settled || s == 0 || touched_at[node] >= step - cls.count);
         for (unsigned todo = group_ballot<G>(due); todo != 0; todo &= todo - 1) {
           const index_t i = __shfl_sync(mask, node, __ffs(todo) - 1, G);
           const Vec3<Real> p = xyz.get(i);

@@ -7,11 +7,13 @@
 //   edge      min << w | max, 6 per tet, then for each unique edge also
 //             max << w | min; a self loop of a tet with a repeated node
 //             becomes the sentinel N << w, which sorts last and falls in no
-//             row; both sorts visit 2w bits.
+//             row. The first sort visits 2w bits, the second the w of the
+//             start node (see both_directions).
 //   incidence node << u | tet, 4 per tet; a repeated node's second entry is a
 //             sentinel N << u, so each (node, tet) appears once, as on the CPU;
 //             the sort visits only the w node bits (stable, keys in tet order).
-//   face      see device_topology_boundary.cu (64 or 96 bits).
+//   face      a 32-bit hash of the sorted triple, the face index as value
+//             (device_topology_boundary.cu).
 //
 // Memory, to size a run (bytes per tet T; a lattice has N ~ T / 6):
 //   scratch   two key buffers of 12 keys * 8 B = 192 B/tet, reused by every
@@ -68,15 +70,19 @@ __global__ void emit_edges(const index_t* tets, std::size_t num_tets, std::uint6
   keys[k] = a == b ? num_nodes << w : (a < b ? a << w | b : b << w | a);
 }
 
-// Each unique edge in both directions: key k goes to 2k and its reverse to
-// 2k + 1 (the sentinel stays a sentinel).
+// Each unique edge in both directions: the reversed copies (max << w | min)
+// first, then the edges as they are, each part in the order of `edges`
+// (sorted by min, then max); the sentinel stays a sentinel. A stable sort
+// on the start node alone then gives each row its lower neighbours
+// ascending (from the reversed part), then its higher ones (from the
+// other): the row sorted, for a sort of w bits instead of 2w.
 __global__ void both_directions(const std::uint64_t* edges, std::size_t count, std::uint64_t num_nodes, int w,
                                 std::uint64_t* out) {
   const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
   if (k >= count) return;
   const std::uint64_t e = edges[k], low = (1ull << w) - 1;
-  out[2 * k] = e;
-  out[2 * k + 1] = (e >> w) == num_nodes ? e : ((e & low) << w | e >> w);
+  out[k] = (e >> w) == num_nodes ? e : ((e & low) << w | e >> w);
+  out[count + k] = e;
 }
 
 __global__ void emit_incidence(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int u,
@@ -131,13 +137,13 @@ BuildScratch carve(unsigned char* base, std::size_t num_tets, std::size_t temp_b
 }
 
 // The largest CUB temp storage any phase needs, for the bit widths used.
-std::size_t cub_temp_bytes(std::size_t num_tets, std::size_t num_nodes, int w, int u) {
-  std::size_t need = detail::face_temp_bytes(num_tets, num_nodes), bytes = 0;
+std::size_t cub_temp_bytes(std::size_t num_tets, int w, int u) {
+  std::size_t need = detail::face_temp_bytes(num_tets), bytes = 0;
   cub::DoubleBuffer<std::uint64_t> none(nullptr, nullptr);
   CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 12 * num_tets, 0, 2 * w));
   need = std::max(need, bytes);
   CUDA_CHECK(cub::DeviceSelect::Unique(nullptr, bytes, none.Current(), none.Current(),
-                                       static_cast<unsigned long long*>(nullptr), 12 * num_tets));
+                                       static_cast<unsigned long long*>(nullptr), 6 * num_tets));
   need = std::max(need, bytes);
   CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, u, w + u));
   return std::max(need, bytes);
@@ -159,7 +165,7 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   topo.boundary.resize(n);
   topo.movable.resize(n);
 
-  const std::size_t temp_bytes = cub_temp_bytes(nt, n, w, u);
+  const std::size_t temp_bytes = cub_temp_bytes(nt, w, u);
   topo.scratch.resize(carve(nullptr, nt, temp_bytes).bytes);
   const BuildScratch s = carve(topo.scratch.data(), nt, temp_bytes);
   std::size_t temp_size = s.temp_bytes;
@@ -168,7 +174,8 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   // Neighbours: each tet's 6 edges as (min, max), sorted and made unique;
   // then each unique edge in both directions, sorted by start node; rows
   // follow. (The paper appends the reversed copies before the one sort;
-  // appending them to the unique edges sorts half as many keys in all.)
+  // appending them to the unique edges sorts a sixth as many keys the
+  // second time, on half the bits.)
   cub::DoubleBuffer<std::uint64_t> edges(s.keys[0], s.keys[1]);
   BuildCounts counts{};
   if (nt > 0) {
@@ -189,7 +196,7 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
     both_directions<<<blocks_for(directed / 2), kBlock, 0, stream>>>(edges.Alternate(), directed / 2, n, w,
                                                                      edges.Current());
     CUDA_CHECK_LAUNCH();
-    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, rows_sorted, directed, 0, 2 * w, stream));
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, rows_sorted, directed, w, 2 * w, stream));
   }
   const std::uint64_t* directed_edges = rows_sorted.Current();
   detail::csr_from_sorted<<<blocks_for(directed + 1), kBlock, 0, stream>>>(

@@ -72,9 +72,9 @@ struct PackedRows {
 };
 
 // Boundary flags from the tets' faces (device_topology_boundary.cu). `work`
-// must hold 2 * 4 face keys of up to 12 B per tet (96 B/tet); `temp` is CUB
-// storage of face_temp_bytes().
-std::size_t face_temp_bytes(std::size_t num_tets, std::size_t num_nodes);
+// must hold 2 * 4 (hash, face index) pairs of 8 B per tet (64 B/tet);
+// `temp` is CUB storage of face_temp_bytes().
+std::size_t face_temp_bytes(std::size_t num_tets);
 void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes, void* work, void* temp,
                          std::size_t temp_bytes, std::uint8_t* boundary, cudaStream_t stream);
 

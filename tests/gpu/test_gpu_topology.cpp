@@ -93,10 +93,10 @@ TEST_F(GpuTopology, RepeatedNodeInATet) {
   expect_same_as_cpu(m);
 }
 
-// Node indices above 2^22 need 3 * 23 bits per face, more than one 64-bit
-// key: the 96-bit face sort (as for the 10M-node lattice). The nodes below
-// the shift are unreferenced.
-TEST_F(GpuTopology, NodeIndicesBeyond64BitFaceKeys) {
+// Node indices above 2^22, as in the 10M-node lattice: 23 bits each, so
+// edge keys of 46 bits and faces whose packed triple would need 69 (the
+// face sort hashes them). The nodes below the shift are unreferenced.
+TEST_F(GpuTopology, NodeIndicesAbove2To22) {
   const TetMesh grid = testing::cube_grid(3, 0.2);
   const index_t shift = (index_t{1} << 22) - 20;  // the grid straddles 2^22
   TetMesh m;

@@ -19,17 +19,16 @@
 //    minimum is then read, and only the quality at the target is computed
 //    (and kept for the update). An entry is what a fresh computation would
 //    give: the same function of the same coordinates.
-//  * touched_at[j] is the last step (sweep * colours + colour) at which
-//    node j or one of its neighbours moved, -1 before any: a node that
-//    moves stamps itself and its neighbours. A node's decision depends only
-//    on its own position and its neighbours' (the corners of its star are
-//    exactly its neighbours). Its turn one sweep earlier either evaluated it
-//    and it did not move, or skipped it, which by the same argument stands
-//    for an evaluation that would not have moved it; so when its stamp is
-//    older than that turn, the same inputs would give the same rejection,
-//    and the node is skipped again (skip_settled; a test compares runs with
-//    and without it bit for bit). Skipping costs one stamp read per node,
-//    taken for G nodes at once.
+//  * moved_at[j] is the step (sweep * colours + colour) of node j's last
+//    move, -1 before any. A node's decision depends only on its own position
+//    and its neighbours' (the corners of its star are exactly its
+//    neighbours). Its turn one sweep earlier either evaluated it and it did
+//    not move, or skipped it, which by the same argument stands for an
+//    evaluation that would not have moved it; so when nothing in the
+//    neighbourhood moved since that turn, the same inputs would give the
+//    same rejection, and the node is skipped again (skip_settled; a test
+//    compares runs with and without it bit for bit). The steps are read in
+//    the same pass as the neighbours' positions.
 #include <cooperative_groups.h>
 
 #include "kernels/cuda/sweep_kernels.cuh"
@@ -54,29 +53,28 @@ struct ColourClassesView {
 template <class Real>
 inline constexpr int kColouredMinBlocks = sizeof(Real) == 4 ? 3 : 2;
 
-// A few values of one lane in registers, indexed by a run-time round
-// number: the unrolled comparisons keep the array out of local memory. A
-// round past K is dropped by put and reads as T() from get.
-template <class T, int K>
-struct LaneSlots {
-  T v[K];
-  __device__ __forceinline__ void put(int r, T x) {
+// A few values in registers, indexed by a run-time round number: the
+// unrolled comparisons keep the array out of local memory.
+template <class Real, int K>
+struct KeptQualities {
+  Real v[K];
+  __device__ __forceinline__ void put(int r, Real q) {
 #pragma unroll
     for (int s = 0; s < K; ++s)
-      if (s == r) v[s] = x;
+      if (s == r) v[s] = q;
   }
-  __device__ __forceinline__ T get(int r) const {
-    T x = T();
+  __device__ __forceinline__ Real get(int r) const {
+    Real q = 0;
 #pragma unroll
     for (int s = 0; s < K; ++s)
-      if (s == r) x = v[s];
-    return x;
+      if (s == r) q = v[s];
+    return q;
   }
 };
 
 template <class Real, bool kAdaptive, int G, class Coords>
 __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
-    coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* touched_at, index_t n,
+    coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* moved_at, index_t n,
                          index_t num_tets, SweepState* st, SweepCounters c, int max_iterations, bool skip_settled) {
   namespace cg = cooperative_groups;
   cg::grid_group grid = cg::this_grid();
@@ -86,7 +84,7 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
       const index_t* tet = m.tets + 4 * t;
       tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
     }
-  for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) touched_at[i] = -1;
+  for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) moved_at[i] = -1;
   grid.sync();
 
   // Whole warps step through a class together (blockDim is a multiple of
@@ -103,58 +101,42 @@ __global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
     for (int col = 0; col < cls.count; ++col) {
       const long long begin = cls.off[col], end = cls.off[col + 1];
       const int step = s * cls.count + col;
-      // The class in chunks of `width` entries, chunk c to group c % groups,
-      // so that neighbouring groups take neighbouring entries (as a node
-      // numbering with locality wants). A group's lanes read a chunk's node
-      // indices and stamps at once, then the group works through the nodes
-      // due a turn. Chunks of G entries, or fewer when the class gives each
-      // group less than that (the balance of small classes).
-      const long long width = max(1ll, min(static_cast<long long>(G), (end - begin + groups - 1) / groups));
-      for (long long chunk = begin + group * width; chunk < end; chunk += groups * width) {
-        const long long k = chunk + lane;
-        const bool mine = lane < width && k < end;
-        const index_t node = mine ? cls.nodes[k] : 0;
+      for (long long base = begin; base < end; base += groups) {
+        const long long k = base + group;
+        const bool in_class = k < end;
+        const index_t i = in_class ? cls.nodes[k] : 0;
+        // The node's own position and move step, read up front.
+        const Vec3<Real> p = in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
+        int latest = in_class && lane == 0 ? moved_at[i] : -1;
+        const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, in_class, mask,
+                                                          [&](index_t j) { latest = max(latest, moved_at[j]); });
         // Settled: nothing in the neighbourhood moved since this node's turn
         // in the previous sweep (step - colours); see the top of the file.
-        const bool due = mine && (!skip_settled || s == 0 || touched_at[node] >= step - cls.count);
-        for (unsigned todo = group_ballot<G>(due); todo != 0; todo &= todo - 1) {
-          const index_t i = __shfl_sync(mask, node, __ffs(todo) - 1, G);
-          const Vec3<Real> p = xyz.get(i);
-          // The lane's first two neighbours, kept to stamp them if the node
-          // moves (rows of up to 2G need no second read).
-          LaneSlots<index_t, 2> nbrs;
-          int visited = 0;
-          const Vec3<Real> target =
-              centroid_group<Real, G>(m, xyz, i, lane, true, mask, [&](index_t j) { nbrs.put(visited++, j); });
-          // The lane's new qualities, kept for the cache update: every round
-          // up to kKept (a star of up to 32 tets needs no recomputation).
-          LaneSlots<Real, kKept> kept;
-          int rounds = 0;
-          const NodeMove<Real> mv = judge_move_group<Real, kAdaptive, G>(
-              m, xyz, i, p, target, lane, true, cached, mask, [&](index_t, Real q) { kept.put(rounds++, q); });
-          if (mv.accept && mv.displacement2 > Real(0)) {
-            // An accepted move computed every round. tet_quality_with never
-            // reads node i's stored position, so lane 0 may overwrite it
-            // meanwhile.
-            if (kAdaptive) {
-              int r = 0;
-              for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G, ++r)
-                tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
-            }
-            // Every writer of this step stores the same value, and later
-            // steps only larger ones: a plain store keeps the maximum.
+        const bool active =
+            in_class && (!skip_settled || s == 0 || group_max<G>(latest, mask) >= step - cls.count);
+        // The lane's new qualities, kept for the cache update: every round
+        // up to kKept (a star of up to 32 tets needs no recomputation).
+        KeptQualities<Real, kKept> kept;
+        int rounds = 0;
+        const NodeMove<Real> mv = judge_move_group<Real, kAdaptive, G>(
+            m, xyz, i, p, target, lane, active, cached, mask, [&](index_t, Real q) { kept.put(rounds++, q); });
+        if (active && mv.accept && mv.displacement2 > Real(0)) {
+          // An accepted move computed every round. tet_quality_with never
+          // reads node i's stored position, so lane 0 may overwrite it
+          // meanwhile.
+          if (kAdaptive) {
             int r = 0;
-            for (index_t e = m.nbr_off[i] + lane; e < m.nbr_off[i + 1]; e += G, ++r)
-              touched_at[r < 2 ? nbrs.get(r) : m.nbr[e]] = step;
-            if (lane == 0) {
-              xyz.set(i, mv.target);
-              touched_at[i] = step;
-              ++accepted;
-              disp2 = fmax(disp2, static_cast<double>(mv.displacement2));
-            }
+            for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G, ++r)
+              tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
           }
-          evaluated += lane == 0;
+          if (lane == 0) {
+            xyz.set(i, mv.target);
+            moved_at[i] = step;
+            ++accepted;
+            disp2 = fmax(disp2, static_cast<double>(mv.displacement2));
+          }
         }
+        evaluated += active && lane == 0;
       }
       if (col + 1 < cls.count) grid.sync();  // the next colour reads these moves
     }

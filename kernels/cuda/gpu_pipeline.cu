@@ -51,7 +51,7 @@ struct GpuPipeline::Impl {
   // Coloured only, allocated by its first run: 8 B per tet and 4 B per node
   // (0.5 GB for the 60M-tet lattice).
   DeviceBuffer<double> tet_quality;     // t Real
-  DeviceBuffer<int> touched_at;         // n
+  DeviceBuffer<int> moved_at;           // n
   DeviceBuffer<std::uint8_t> moved, revert;
   DeviceBuffer<SweepState> state;
   DeviceBuffer<unsigned long long> accepted, max_disp2;
@@ -238,9 +238,9 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
       a.largest_class = std::max(a.largest_class, (*class_off)[c + 1] - (*class_off)[c]);
   if (o.strategy == Strategy::Coloured) {
     m.tet_quality.resize(m.t);
-    m.touched_at.resize(m.n);
+    m.moved_at.resize(m.n);
     a.tet_quality = m.tet_quality.data();
-    a.touched_at = m.touched_at.data();
+    a.moved_at = m.moved_at.data();
   }
   a.stream = m.stream;
   const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);

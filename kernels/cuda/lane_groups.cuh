@@ -60,18 +60,6 @@ __device__ __forceinline__ bool group_any(bool b) {
   return __any_sync(group_mask<G>(), b) != 0;
 }
 
-// The lanes of this thread's group that have b set, as bits 0..G-1 (bit l:
-// the group's lane l). Only the group's lanes take part.
-template <int G>
-__device__ __forceinline__ unsigned group_ballot(bool b) {
-  const unsigned bits = __ballot_sync(group_mask<G>(), b);
-  if constexpr (G == 32) {
-    return bits;
-  } else {
-    return (bits >> ((threadIdx.x & 31u) & ~static_cast<unsigned>(G - 1))) & ((1u << G) - 1u);
-  }
-}
-
 // Adds every lane's v to *target with one atomic per warp (none when the
 // warp's total is zero). Every lane of the warp must call it.
 template <class Target, class T>

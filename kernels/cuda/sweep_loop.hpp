@@ -28,7 +28,7 @@ struct SweepLoopArgs {
   int num_colours = 0;
   index_t largest_class = 0;
   void* tet_quality = nullptr;  // Coloured: num_tets Real
-  int* touched_at = nullptr;    // Coloured: n
+  int* moved_at = nullptr;      // Coloured: n
   cudaStream_t stream = nullptr;
 };
 

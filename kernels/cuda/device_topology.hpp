@@ -40,7 +40,8 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
 // Jones-Plassmann colouring with the same priorities and first-fit rule as
 // mesh/colouring.hpp, so the result equals colour_nodes() exactly.
 // max_blocks > 0 caps the launch (tests use it so that each thread group
-// colours many nodes per round); 0 starts all the device holds.
+// colours many nodes, waiting on others' results); 0 starts all the device
+// holds.
 void colour_device(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks = 0);
 
 }  // namespace tetsmooth::cuda

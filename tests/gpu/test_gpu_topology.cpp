@@ -70,7 +70,8 @@ TEST_F(GpuTopology, RandomDelaunay) { expect_same_as_cpu(testing::random_delauna
 TEST_F(GpuTopology, Model5k) { expect_same_as_cpu(generate_model("5k")); }
 
 // One block of the colouring kernel: each thread group colours ~80 nodes of
-// the 5k model per round, as groups do on meshes far larger than the GPU.
+// the 5k model in priority order, waiting on other groups' nodes, as groups
+// do on meshes far larger than the GPU.
 TEST_F(GpuTopology, Model5kWithOneColouringBlock) { expect_same_as_cpu(generate_model("5k"), 1); }
 
 // File-pinned nodes leave the colouring; a node in no tet has an empty row

@@ -122,7 +122,7 @@ TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Re
   Real q_min = Real(2);
   for (index_t k = m.inc_off[i] + lane; k < m.inc_off[i + 1]; k += stride) {
     const Real q = old_quality(m, xyz, m.inc[k], i, p);
-    q_min = q < q_min ? q : q_min;
+    q_min = q < q_min || q != q ? q : q_min;  // a NaN stays, and rejects the move as it did tet by tet
   }
   return q_min;
 }
@@ -165,7 +165,9 @@ TS_HD bool star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<R
     }
     if (any(objects)) return false;
   }
-  return end > begin;  // a node without tets has nothing to improve
+  // A node without tets has nothing to improve; an old minimum of 2 or more
+  // (no radius ratio reaches it) is the rule's starting value, never beaten.
+  return end > begin && old_min < Real(2);
 }
 
 // The decision, once the centroid and the adaptive test are known.

@@ -6,6 +6,7 @@
 // degenerate one, and 1 for the regular tet. They are invariant under
 // translation, rotation and uniform scaling (up to rounding).
 #include <cmath>
+#include <limits>
 
 #include "mesh/hd.hpp"
 #include "mesh/vec3.hpp"
@@ -25,17 +26,30 @@ TS_HD Real signed_volume6(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d
 // norms. The circumcentre sits at N / (2 V6) from a, with
 // N = |u|² v×w + |v|² w×u + |w|² u×v, so R = |N| / (2|V6|); r_in = 3V/S
 // = V6 / 2S. Hence q = 6 V6² / (2S |N|), carrying the sign of V6: five
-// square roots and one division, the per-tet cost every smoother pays.
+// square roots and two divisions, the per-tet cost every smoother pays.
+//
+// Two guards keep it honest where the algebra alone would not:
+//  * rounding leaves V6 an error of a few eps |u||v||w|. Below a margin of
+//    that (corners on a line or nearly so) every cross product is rounding
+//    noise, and the quotient of noises above is not small: such a tet is
+//    degenerate, q = 0;
+//  * N is formed scaled by 1 / max(|u|², |v|², |w|²), so its squared norm
+//    stays of the order of |edge|^4 like the areas', not |edge|^12: float
+//    keeps tets down to ~1e-6 of the unit box in range.
 template <class Real>
 TS_HD Real radius_ratio(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
   using std::sqrt;
+  constexpr Real kNoise = Real(32) * std::numeric_limits<Real>::epsilon();
   const Vec3<Real> u = b - a, v = c - a, w = d - a;
   const Vec3<Real> vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
   const Real v6 = dot(u, vw);
+  const Real uu = norm2(u), vv = norm2(v), ww = norm2(w);
+  if (!(v6 * v6 > kNoise * kNoise * (uu * vv * ww))) return Real(0);  // also NaN and Inf
+  const Real s = Real(1) / (uu > vv ? (uu > ww ? uu : ww) : (vv > ww ? vv : ww));
   const Real area2 = sqrt(norm2(vw)) + sqrt(norm2(wu)) + sqrt(norm2(uv)) + sqrt(norm2(vw + wu + uv));  // 2 S
-  const Real n = sqrt(norm2(norm2(u) * vw + norm2(v) * wu + norm2(w) * uv));
+  const Real n = sqrt(norm2((uu * s) * vw + (vv * s) * wu + (ww * s) * uv));                             // |N| s
   if (!(area2 > Real(0)) || !(n > Real(0))) return Real(0);
-  return Real(6) * v6 * (v6 < Real(0) ? -v6 : v6) / (area2 * n);
+  return Real(6) * v6 * (v6 < Real(0) ? -v6 : v6) * s / (area2 * n);
 }
 
 // Mean ratio eta = 12 (3|V|)^(2/3) / sum(l^2), signed like the volume.

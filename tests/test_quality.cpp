@@ -91,6 +91,45 @@ TEST(RadiusRatio, AgreesWithAnIndependentConstruction) {
   EXPECT_GT(checked, 1900);
 }
 
+// Four corners on one line in a random direction, exactly (up to the
+// rounding of the coordinates) and nudged off it by far less than a float's
+// resolution: every cross product is rounding noise, and a quotient of
+// noises must not pass for quality.
+template <class Real>
+void expect_needles_degenerate(double nudge) {
+  std::uint64_t state = 777;
+  auto uniform = [&] {
+    state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  using R = Vec3<Real>;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const V dir{uniform() - 0.5, uniform() - 0.5, uniform() - 0.5}, base{uniform(), uniform(), uniform()};
+    R p[4];
+    for (R& x : p) {
+      const V at = base + (uniform() - 0.5) * dir + nudge * V{uniform(), uniform(), uniform()};
+      x = R{static_cast<Real>(at.x), static_cast<Real>(at.y), static_cast<Real>(at.z)};
+    }
+    ASSERT_LT(std::abs(static_cast<double>(radius_ratio(p[0], p[1], p[2], p[3]))), 1e-3) << "draw " << trial;
+  }
+}
+
+TEST(RadiusRatio, CollinearNeedlesAreDegenerate) {
+  expect_needles_degenerate<double>(0.0);
+  expect_needles_degenerate<float>(0.0);
+  expect_needles_degenerate<float>(1e-9);
+}
+
+// Float keeps its range for small tets (a float run works in the unit box,
+// where a graded mesh's smallest tets are far below 1).
+TEST(RadiusRatio, FloatKeepsSmallTets) {
+  using F = Vec3<float>;
+  for (float h : {1e-2f, 1e-3f, 1e-4f, 1e-5f, 1e-6f}) {
+    const float q = radius_ratio(F{0, 0, 0}, F{h, 0, 0}, F{0, h, 0}, F{0, 0, h});
+    EXPECT_NEAR(q, radius_ratio(V{0, 0, 0}, V{1, 0, 0}, V{0, 1, 0}, V{0, 0, 1}), 1e-5) << "edge " << h;
+  }
+}
+
 TEST(RadiusRatio, InvertedIsNegative) {
   EXPECT_NEAR(radius_ratio(kB, kA, kC, kD), -1.0, 1e-12);
   EXPECT_NEAR(mean_ratio(kB, kA, kC, kD), -1.0, 1e-12);

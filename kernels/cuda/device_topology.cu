@@ -1,7 +1,8 @@
 // Mesh topology on the GPU, the paper's way (§3.2-3.3): edges as packed
 // keys, radix sort, unique, the reversed copies appended and sorted by start
-// node, CSR offsets; the same for node -> tet incidence; boundary faces by sorting sorted face triples
-// (device_topology_boundary.cu); then the movable flags.
+// node, CSR offsets; the same for node -> tet incidence; boundary faces by
+// sorting the faces and comparing equal neighbours (device_topology_boundary.cu);
+// then the movable flags.
 //
 // Keys (w = bits needed for the node count N, u = bits for the tet count T):
 //   edge      min << w | max, 6 per tet, then for each unique edge also
@@ -26,7 +27,7 @@
 //             14 neighbours per node), offsets 8 B/node, flags 2 B/node.
 //   So the 10M-node lattice (~60M tets) needs about 60M * 192 B = 11.5 GB of
 //   scratch and ~1.6 GB of results on top of the mesh itself. colour_device
-//   later reuses the same scratch (it needs ~20 B/node).
+//   later reuses the same scratch (about 24 B/node and CUB temp storage).
 //
 // Two host synchronisations: the unique edge count sizes the second edge
 // sort, and at the end the neighbour count sizes `nbr`, which is only
@@ -46,7 +47,8 @@ namespace {
 using detail::blocks_for;
 using detail::kBlock;
 
-// Written by the device, read back once at the end.
+// Written by the device: the unique edge count is read back after the first
+// edge sort, the rest at the end.
 struct BuildCounts {
   unsigned long long unique_edges;  // sentinel included
   index_t neighbours;               // nbr_off[N]
@@ -229,7 +231,7 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
     CUDA_CHECK_LAUNCH();
   }
 
-  // The one read-back: the sizes the host must know.
+  // The last read-back: the sizes the host must know.
   CUDA_CHECK(cudaMemcpyAsync(&s.counts->neighbours, topo.nbr_off.data() + n, sizeof(index_t),
                              cudaMemcpyDeviceToDevice, stream));
   CUDA_CHECK(cudaMemcpyAsync(&s.counts->incidences, topo.inc_off.data() + n, sizeof(index_t),

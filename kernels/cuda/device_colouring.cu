@@ -143,40 +143,60 @@ __global__ void __launch_bounds__(kBlock) colour_dataflow_kernel(std::size_t n, 
   }
 }
 
-void run_dataflow(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
-  const std::size_t n = topo.num_nodes;
+// Scratch for a radix sort of n (32-bit key, node) pairs over `bits` key
+// bits, laid out in topo.scratch after `front_bytes` that the caller keeps
+// for itself (at `front`).
+struct NodePairSort {
+  cub::DoubleBuffer<std::uint32_t> keys;
+  cub::DoubleBuffer<index_t> nodes;
+  void* temp = nullptr;
   std::size_t temp_bytes = 0;
+  unsigned char* front = nullptr;
+};
+
+NodePairSort node_pair_sort_scratch(DeviceTopology& topo, std::size_t n, int bits, std::size_t front_bytes) {
+  NodePairSort s;
   {
     cub::DoubleBuffer<std::uint32_t> keys(nullptr, nullptr);
     cub::DoubleBuffer<index_t> nodes(nullptr, nullptr);
-    CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys, nodes, n));
+    CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, s.temp_bytes, keys, nodes, n, 0, bits));
   }
-  const auto carve = [n, temp_bytes](unsigned char* base, cub::DoubleBuffer<std::uint32_t>& keys,
-                                     cub::DoubleBuffer<index_t>& nodes, std::uint64_t*& word,
-                                     ColourTotals*& totals, void*& temp) {
+  const auto carve = [&](unsigned char* base) {
     detail::ScratchCarver carver(base);
-    word = carver.take<std::uint64_t>(n);
-    totals = carver.take<ColourTotals>(1);
+    s.front = carver.take<unsigned char>(front_bytes);
     std::uint32_t* k0 = carver.take<std::uint32_t>(n);
     std::uint32_t* k1 = carver.take<std::uint32_t>(n);
     index_t* v0 = carver.take<index_t>(n);
     index_t* v1 = carver.take<index_t>(n);
-    temp = carver.take<unsigned char>(temp_bytes);
-    keys = cub::DoubleBuffer<std::uint32_t>(k0, k1);
-    nodes = cub::DoubleBuffer<index_t>(v0, v1);
+    s.temp = carver.take<unsigned char>(s.temp_bytes);
+    s.keys = cub::DoubleBuffer<std::uint32_t>(k0, k1);
+    s.nodes = cub::DoubleBuffer<index_t>(v0, v1);
     return carver.used();
   };
-  cub::DoubleBuffer<std::uint32_t> keys;
-  cub::DoubleBuffer<index_t> nodes;
+  topo.scratch.resize(carve(nullptr));
+  carve(topo.scratch.data());
+  return s;
+}
+
+void run_dataflow(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
+  const std::size_t n = topo.num_nodes;
+  // The published words and the totals go in front of the sort's scratch.
+  const auto carve_front = [n](unsigned char* base, std::uint64_t*& word, ColourTotals*& totals) {
+    detail::ScratchCarver carver(base);
+    word = carver.take<std::uint64_t>(n);
+    totals = carver.take<ColourTotals>(1);
+    return carver.used();
+  };
   std::uint64_t* word = nullptr;
   ColourTotals* totals = nullptr;
-  void* temp = nullptr;
-  topo.scratch.resize(carve(nullptr, keys, nodes, word, totals, temp));
-  carve(topo.scratch.data(), keys, nodes, word, totals, temp);
+  NodePairSort sort = node_pair_sort_scratch(topo, n, 32, carve_front(nullptr, word, totals));
+  carve_front(sort.front, word, totals);
+  auto& keys = sort.keys;
+  auto& nodes = sort.nodes;
 
   priority_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.movable.data(), keys.Current(), nodes.Current(), word);
   CUDA_CHECK_LAUNCH();
-  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, keys, nodes, n, 0, 32, stream));
+  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort.temp, sort.temp_bytes, keys, nodes, n, 0, 32, stream));
   const ColourTotals start{-1, 0};
   CUDA_CHECK(cudaMemcpyAsync(totals, &start, sizeof start, cudaMemcpyHostToDevice, stream));
   // Every block resident at once (see the top of the file), or fewer when
@@ -221,34 +241,14 @@ void build_classes(DeviceTopology& topo, cudaStream_t stream) {
   topo.class_off.resize(nc + 1);
   topo.class_nodes.resize(topo.movable_count);
 
-  std::size_t temp_bytes = 0;
-  {
-    cub::DoubleBuffer<std::uint32_t> keys(nullptr, nullptr);
-    cub::DoubleBuffer<index_t> nodes(nullptr, nullptr);
-    CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys, nodes, n, 0, bits));
-  }
-  const auto carve = [n, temp_bytes](unsigned char* base, cub::DoubleBuffer<std::uint32_t>& keys,
-                                     cub::DoubleBuffer<index_t>& nodes, void*& temp) {
-    detail::ScratchCarver carver(base);
-    std::uint32_t* k0 = carver.take<std::uint32_t>(n);
-    std::uint32_t* k1 = carver.take<std::uint32_t>(n);
-    index_t* v0 = carver.take<index_t>(n);
-    index_t* v1 = carver.take<index_t>(n);
-    temp = carver.take<unsigned char>(temp_bytes);
-    keys = cub::DoubleBuffer<std::uint32_t>(k0, k1);
-    nodes = cub::DoubleBuffer<index_t>(v0, v1);
-    return carver.used();
-  };
-  cub::DoubleBuffer<std::uint32_t> keys;
-  cub::DoubleBuffer<index_t> nodes;
-  void* temp = nullptr;
-  topo.scratch.resize(carve(nullptr, keys, nodes, temp));
-  carve(topo.scratch.data(), keys, nodes, temp);
+  NodePairSort sort = node_pair_sort_scratch(topo, n, bits, 0);
+  auto& keys = sort.keys;
+  auto& nodes = sort.nodes;
 
   if (n > 0) {
     class_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.colour.data(), nc, keys.Current(), nodes.Current());
     CUDA_CHECK_LAUNCH();
-    CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, keys, nodes, n, 0, bits, stream));
+    CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort.temp, sort.temp_bytes, keys, nodes, n, 0, bits, stream));
   }
   detail::csr_from_sorted<<<blocks_for(n + 1), kBlock, 0, stream>>>(
       ColourRows{keys.Current(), nodes.Current()}, static_cast<const unsigned long long*>(nullptr), n,

@@ -35,7 +35,6 @@
 
 namespace tetsmooth::cuda {
 
-inline constexpr int kColouredBlock = 256;
 inline constexpr int kLatencyLanes = 32, kThroughputLanes = 8;
 inline constexpr int kMiddleLanes = 16;  // only when asked for (SmoothOptions::coloured_lanes)
 
@@ -46,12 +45,19 @@ struct ColourClassesView {
   int count;
 };
 
-// Resident blocks per multiprocessor asked of the compiler: more blocks
-// take more of a class at once, but cap the registers per thread. Adaptive
-// double uses the 128 two blocks allow; three (80) spill, and ran slower on
-// an H100 (5.45 against 4.80 ms on the 109k model).
+// One block per multiprocessor, as large as the registers allow: more warps
+// take more of a class at once (the 109k model's largest class takes 8
+// rounds of the resident warps at 16 warps per SM, 5 at 24), and one block
+// per SM keeps the grid barrier that ends each colour to one arrival per SM
+// (three blocks of 256 threads give three times as many, and lost 0.15 ms
+// on the 109k model to one block of 768 threads with the same warps). The
+// launch bounds cap the registers: double gets 96 (it wants ~104; 16 bytes
+// spill), float 72 (it needs 66). Smoothing the 109k model on an H100, ms:
+//   double: 256 x 2 blocks 3.10, 256 x 3 (80 registers) 2.89, 768 x 1 2.73,
+//           640 x 1 2.71, 896 x 1 (72 registers, 136 bytes spill) 3.03;
+//   float:  256 x 3 1.87, 640 x 1 1.88, 768 x 1 1.74, 896 x 1 1.69.
 template <class Real>
-inline constexpr int kColouredMinBlocks = sizeof(Real) == 4 ? 3 : 2;
+inline constexpr int kColouredBlock = sizeof(Real) == 4 ? 896 : 640;
 
 // A few values in registers, indexed by a run-time round number: the
 // unrolled comparisons keep the array out of local memory.
@@ -73,7 +79,7 @@ struct KeptQualities {
 };
 
 template <class Real, bool kAdaptive, int G, class Coords>
-__global__ void __launch_bounds__(kColouredBlock, kColouredMinBlocks<Real>)
+__global__ void __launch_bounds__(kColouredBlock<Real>, 1)
     coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* moved_at, index_t n,
                          index_t num_tets, SweepState* st, SweepCounters c, int max_iterations, bool skip_settled) {
   namespace cg = cooperative_groups;

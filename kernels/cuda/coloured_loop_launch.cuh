@@ -14,8 +14,8 @@
 namespace tetsmooth::cuda {
 
 // A warp per node while the largest class takes at most this many rounds of
-// the resident warps, else kThroughputLanes: the 109k model has 4, a
-// 10M-node lattice hundreds.
+// the resident warps, else kThroughputLanes: the 109k model has 6 in double
+// and 4 in float, a 10M-node lattice hundreds.
 inline constexpr std::size_t kMaxLatencyWaves = 16;
 
 // As many blocks as fit on the device at once (a grid barrier needs them all
@@ -23,9 +23,10 @@ inline constexpr std::size_t kMaxLatencyWaves = 16;
 template <class Real, bool kAdaptive, int G, class Coords>
 void launch_coloured_loop_with(const SweepLoopArgs& a, const SmoothOptions& o, Coords xyz) {
   const auto kernel = coloured_loop_kernel<Real, kAdaptive, G, Coords>;
+  constexpr int block = kColouredBlock<Real>;
   const std::size_t wanted = static_cast<std::size_t>(std::max<index_t>(a.largest_class, 1)) * G;
   const auto blocks = static_cast<unsigned>(
-      std::min<std::size_t>((wanted + kColouredBlock - 1) / kColouredBlock, resident_blocks(kernel, kColouredBlock)));
+      std::min<std::size_t>((wanted + block - 1) / block, resident_blocks(kernel, block)));
   MeshView view = a.view;
   ColourClassesView cls{a.class_off, a.class_nodes, a.num_colours};
   Real* tet_q = static_cast<Real*>(a.tet_quality);
@@ -36,7 +37,7 @@ void launch_coloured_loop_with(const SweepLoopArgs& a, const SmoothOptions& o, C
   int max_iterations = o.max_iterations;
   bool skip = o.skip_settled;
   void* params[] = {&view, &xyz, &cls, &tet_q, &moved_at, &n, &num_tets, &st, &counters, &max_iterations, &skip};
-  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(kColouredBlock),
+  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(block),
                                          params, 0, a.stream));
   CUDA_CHECK_LAUNCH();
 }
@@ -49,9 +50,9 @@ int launch_coloured_loop(const SweepLoopArgs& a, const SmoothOptions& o, Coords 
     throw UsageError("max_iterations times the number of colours exceeds the coloured loop's step counter");
   int lanes = o.coloured_lanes;
   if (lanes == 0) {
+    constexpr int block = kColouredBlock<Real>;
     const std::size_t resident =
-        std::size_t{resident_blocks(coloured_loop_kernel<Real, kAdaptive, kLatencyLanes, Coords>, kColouredBlock)} *
-        kColouredBlock;
+        std::size_t{resident_blocks(coloured_loop_kernel<Real, kAdaptive, kLatencyLanes, Coords>, block)} * block;
     const std::size_t largest = static_cast<std::size_t>(std::max<index_t>(a.largest_class, 1));
     lanes = largest * kLatencyLanes <= kMaxLatencyWaves * resident ? kLatencyLanes : kThroughputLanes;
   }

@@ -87,16 +87,17 @@ __global__ void both_directions(const std::uint64_t* edges, std::size_t count, s
   out[count + k] = e;
 }
 
+// One thread per key, as emit_edges: key 4t + k is corner k of tet t.
 __global__ void emit_incidence(const index_t* tets, std::size_t num_tets, std::uint64_t num_nodes, int u,
                                std::uint64_t* keys) {
-  const std::size_t t = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
-  if (t >= num_tets) return;
-  for (int k = 0; k < 4; ++k) {
-    const std::uint64_t v = static_cast<std::uint32_t>(tets[4 * t + k]);
-    bool repeat = false;
-    for (int j = 0; j < k; ++j) repeat = repeat || tets[4 * t + j] == tets[4 * t + k];
-    keys[4 * t + k] = (repeat ? num_nodes : v) << u | t;
-  }
+  const std::size_t key = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (key >= 4 * num_tets) return;
+  const std::size_t t = key / 4;
+  const int k = static_cast<int>(key % 4);
+  const index_t v = tets[key];
+  bool repeat = false;
+  for (int j = 0; j < k; ++j) repeat = repeat || tets[4 * t + j] == v;
+  keys[key] = (repeat ? num_nodes : static_cast<std::uint32_t>(v)) << u | t;
 }
 
 __global__ void low_bits(const std::uint64_t* keys, std::size_t n, int w, index_t* out) {
@@ -212,7 +213,7 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   // Node -> tets: 4 keys per tet, sorted; row = node, item = tet.
   cub::DoubleBuffer<std::uint64_t> inc(work, work + 4 * nt);
   if (nt > 0) {
-    emit_incidence<<<blocks_for(nt), kBlock, 0, stream>>>(d_tets, nt, n, u, inc.Current());
+    emit_incidence<<<blocks_for(4 * nt), kBlock, 0, stream>>>(d_tets, nt, n, u, inc.Current());
     CUDA_CHECK_LAUNCH();
     // Keys are emitted in tet order and the radix sort is stable, so sorting
     // the node bits alone leaves each row's tets ascending.

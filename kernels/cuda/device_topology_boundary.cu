@@ -3,13 +3,15 @@
 // once, so it is a boundary face and its 3 nodes are boundary nodes.
 //
 // The sort key is a 32-bit hash of the sorted triple, with the face's index
-// (4t + f) as the value: four radix passes over 8 bytes a face, whatever
-// the node count, where the packed triple needs 3w bits (51 for the 109k
-// model, 72 for the 10M-node lattice). Equal faces have equal hashes, so
-// after the sort they lie in one run of equal keys; a face is single when
-// no other face of its run has the same triple. Different faces that share
-// a hash only make a run longer (about one pair in a thousand for the 109k
-// model's 2.9M faces): the triples, not the hashes, decide.
+// (4t + f) as the value, sorted on its top kSortedBits bits only: three
+// radix passes over 8 bytes a face, whatever the node count, where the
+// packed triple needs 3w bits (51 for the 109k model, 72 for the 10M-node
+// lattice). Equal faces have equal hashes, so after the sort they lie in one
+// run of equal sorted bits; a face is single when no other face of its run
+// has the same triple. Different faces that share those bits only make a
+// run longer (with 2^24 values, about one face in six of the 109k model's
+// 2.9M meets such a stranger in its run): the full hash screens them
+// cheaply, and the triples, not the hashes, decide.
 #include <cub/device/device_radix_sort.cuh>
 
 #include <string>
@@ -67,17 +69,20 @@ __global__ void emit_faces(const index_t* tets, std::size_t num_faces, std::uint
   ids[k] = static_cast<std::uint32_t>(k);
 }
 
+constexpr int kSortedBits = 24;
+constexpr int kUnsortedBits = 32 - kSortedBits;
+
 // Stores of 1 from several threads to one flag are race-free.
 __global__ void mark_single_faces(const index_t* tets, const std::uint32_t* hashes, const std::uint32_t* ids,
                                   std::size_t n, std::uint8_t* boundary) {
   const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
   if (k >= n) return;
   const Triple mine = face_triple(tets, ids[k]);
-  const std::uint32_t h = hashes[k];
-  for (std::size_t j = k; j > 0 && hashes[j - 1] == h; --j)
-    if (face_triple(tets, ids[j - 1]) == mine) return;
-  for (std::size_t j = k + 1; j < n && hashes[j] == h; ++j)
-    if (face_triple(tets, ids[j]) == mine) return;
+  const std::uint32_t h = hashes[k], run = h >> kUnsortedBits;
+  for (std::size_t j = k; j > 0 && hashes[j - 1] >> kUnsortedBits == run; --j)
+    if (hashes[j - 1] == h && face_triple(tets, ids[j - 1]) == mine) return;
+  for (std::size_t j = k + 1; j < n && hashes[j] >> kUnsortedBits == run; ++j)
+    if (hashes[j] == h && face_triple(tets, ids[j]) == mine) return;
   boundary[mine.a] = 1;
   boundary[mine.b] = 1;
   boundary[mine.c] = 1;
@@ -88,7 +93,7 @@ __global__ void mark_single_faces(const index_t* tets, const std::uint32_t* hash
 std::size_t face_temp_bytes(std::size_t num_tets) {
   cub::DoubleBuffer<std::uint32_t> keys(nullptr, nullptr), values(nullptr, nullptr);
   std::size_t bytes = 0;
-  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys, values, 4 * num_tets));
+  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, bytes, keys, values, 4 * num_tets, kUnsortedBits, 32));
   return bytes;
 }
 
@@ -103,7 +108,7 @@ void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_
   cub::DoubleBuffer<std::uint32_t> hashes(words, words + n), ids(words + 2 * n, words + 3 * n);
   emit_faces<<<blocks_for(n), kBlock, 0, stream>>>(d_tets, n, hashes.Current(), ids.Current());
   CUDA_CHECK_LAUNCH();
-  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, hashes, ids, n, 0, 32, stream));
+  CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, hashes, ids, n, kUnsortedBits, 32, stream));
   mark_single_faces<<<blocks_for(n), kBlock, 0, stream>>>(d_tets, hashes.Current(), ids.Current(), n, boundary);
   CUDA_CHECK_LAUNCH();
 }

@@ -68,4 +68,22 @@ __device__ __forceinline__ void warp_atomic_add(Target* target, T v) {
   if ((threadIdx.x & 31) == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
 }
 
+// Adds every thread's v to *target with one atomic per block (none when the
+// block's total is zero): for sums over many blocks, where one atomic per
+// warp would queue on the one address. Every thread of the block must call
+// it; blockDim.x is a multiple of 32.
+template <class Target, class T>
+__device__ __forceinline__ void block_atomic_add(Target* target, T v) {
+  __shared__ T warp_sums[32];
+  const unsigned warp = threadIdx.x / 32, warps = blockDim.x / 32;
+  v = group_sum<32>(v);
+  if ((threadIdx.x & 31) == 0) warp_sums[warp] = v;
+  __syncthreads();
+  if (warp == 0) {
+    v = group_sum<32>(threadIdx.x < warps ? warp_sums[threadIdx.x] : T(0));
+    if (threadIdx.x == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
+  }
+  __syncthreads();  // the next call may write warp_sums again
+}
+
 }  // namespace tetsmooth::cuda

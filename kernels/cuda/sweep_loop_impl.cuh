@@ -194,7 +194,9 @@ template <class Real>
 void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout layout, SweepState* state,
                       cudaStream_t stream) {
   detail::with_layout<Real>(layout, const_cast<void*>(buf), n, [&](auto coords) {
-    edge_length_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(view, coords, n, state);
+    const unsigned blocks =
+        std::max(1u, std::min(detail::blocks_for(static_cast<std::size_t>(n) * kEdgeLanes), kEdgeMaxBlocks));
+    edge_length_kernel<Real><<<blocks, detail::kBlock, 0, stream>>>(view, coords, n, state);
     CUDA_CHECK_LAUNCH();
   });
 }

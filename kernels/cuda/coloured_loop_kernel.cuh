@@ -52,10 +52,14 @@ struct ColourClassesView {
 // (three blocks of 256 threads give three times as many, and lost 0.15 ms
 // on the 109k model to one block of 768 threads with the same warps). The
 // launch bounds cap the registers: double gets 96 (it wants ~104; 16 bytes
-// spill), float 72 (it needs 66). Smoothing the 109k model on an H100, ms:
+// spill), float 72 (it needs 66). Smoothing the 109k model on an H100, ms,
+// with nodes dealt to warps in a fixed stride:
 //   double: 256 x 2 blocks 3.10, 256 x 3 (80 registers) 2.89, 768 x 1 2.73,
 //           640 x 1 2.71, 896 x 1 (72 registers, 136 bytes spill) 3.03;
-//   float:  256 x 3 1.87, 640 x 1 1.88, 768 x 1 1.74, 896 x 1 1.69.
+//   float:  256 x 3 1.87, 640 x 1 1.88, 768 x 1 1.74, 896 x 1 1.69;
+// and with the shares taken from a counter (below): double 640 x 1 2.38,
+// 768 x 1 2.41; float 896 x 1 1.49, 1024 x 1 (64 registers) 1.45, whose
+// effect on the lattice was not measured.
 template <class Real>
 inline constexpr int kColouredBlock = sizeof(Real) == 4 ? 896 : 640;
 
@@ -91,12 +95,16 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
     }
   for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) moved_at[i] = -1;
+  // Nodes of the block's share of a class handed out so far, by the parity
+  // of the step (see below).
+  __shared__ unsigned taken[2];
+  if (threadIdx.x < 2) taken[threadIdx.x] = 0;
   grid.sync();
 
   // Whole warps step through a class together (blockDim is a multiple of
   // 32 and of G), so a group's shuffles find all of its lanes.
-  const long long groups = static_cast<long long>(threads / G), group = static_cast<long long>(tid / G);
   const int lane = static_cast<int>(tid % G);
+  const int group_in_warp = static_cast<int>(threadIdx.x % 32) / G;
   const unsigned mask = group_mask<G>();
   const CachedOldQuality<Real> cached{tet_q};
   constexpr int kKept = 32 / G;
@@ -107,8 +115,25 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
     for (int col = 0; col < cls.count; ++col) {
       const long long begin = cls.off[col], end = cls.off[col + 1];
       const int step = s * cls.count + col;
-      for (long long base = begin; base < end; base += groups) {
-        const long long k = base + group;
+      // The class is cut into shares of a node per group (a warp's worth);
+      // block b owns shares b, b + blocks, b + 2 blocks, ..., so every block
+      // gets as many and all of them walk the class front to back together
+      // (neighbouring nodes, and their data, are taken at about the same
+      // time). The block's warps take its shares in order from a counter in
+      // shared memory: a warp that drew quick nodes (settled, or rejected at
+      // once) takes more, and the class ends with the warps about even. (A
+      // counter for the whole grid did the same, but its one address in L2
+      // queued the claims; contiguous slices per block lost the lattice its
+      // cache.) The next step's counter is cleared now: its last user, the
+      // step before this one, is behind the barrier.
+      if (threadIdx.x == 0) taken[(step + 1) & 1] = 0;
+      for (;;) {
+        unsigned local = 0;
+        if ((threadIdx.x & 31) == 0) local = atomicAdd(&taken[step & 1], 1u);
+        const long long share = blockIdx.x + static_cast<long long>(gridDim.x) * __shfl_sync(0xffffffffu, local, 0);
+        const long long start = begin + share * (32 / G);
+        if (start >= end) break;  // the same for the whole warp
+        const long long k = start + group_in_warp;
         const bool in_class = k < end;
         const index_t i = in_class ? cls.nodes[k] : 0;
         // The node's own position and move step, read up front.

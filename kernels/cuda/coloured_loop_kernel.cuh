@@ -49,7 +49,7 @@ struct ColourClassesView {
 // take more of a class at once (the 109k model's largest class takes 8
 // rounds of the resident warps at 16 warps per SM, 5 at 24), and one block
 // per SM keeps the grid barrier that ends each colour to one arrival per SM
-// (three blocks of 256 threads give three times as many, and lost 0.15 ms
+// (three blocks of 256 threads give three times as many, and lost 0.16 ms
 // on the 109k model to one block of 768 threads with the same warps). The
 // launch bounds cap the registers: double gets 96 (it wants ~104; 16 bytes
 // spill), float 72 (it needs 66). Smoothing the 109k model on an H100, ms,

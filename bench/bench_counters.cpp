@@ -29,6 +29,12 @@ void set_run_counters(benchmark::State& state, const SmoothResult& r, const Swee
   state.counters["tets"] = static_cast<double>(f.tets);
   state.counters["reverted"] = static_cast<double>(r.reverted_moves);
   state.counters["evaluations"] = static_cast<double>(r.evaluations);
+  // Where a coloured run's time goes, class by class (plots/make_tables.py
+  // turns these into colours.csv).
+  for (std::size_t k = 0; k < r.colour_sizes.size(); ++k)
+    state.counters["colour_nodes_" + std::to_string(k)] = static_cast<double>(r.colour_sizes[k]);
+  for (std::size_t k = 0; k < r.colour_ms.size(); ++k)
+    state.counters["colour_ms_" + std::to_string(k)] = r.colour_ms[k];
   if (r.sweeps > 0 && smooth_s > 0) {
     const double full = static_cast<double>(r.movable_nodes) * r.sweeps;
     SweepFootprint g = f;

@@ -12,6 +12,7 @@ Writes into OUTDIR (created if missing):
     table6.csv    the same for Form B; paper's Table 6
     quality.csv   mesh quality before/after per benchmark
     scaling.csv   per-sweep throughput of GPU runs and the ratio to the memory floor
+    colours.csv   coloured GPU runs: time per colour class, summed over sweeps
     runs.csv      every benchmark: time (ms) and how it was reduced over repetitions
 
 Missing benchmarks (families not run, no GPU) are empty cells in CSV and "—"
@@ -310,6 +311,42 @@ def scaling_table(result):
     return Table("Throughput per sweep and the memory floor (GPU runs)", keys, rows, notes)
 
 
+COLOUR_COLUMNS = [Column("benchmark", "Benchmark", fmt_text), Column("colour", "Colour", fmt_int),
+                  Column("nodes", "Nodes", fmt_int), Column("ms", "ms (all sweeps)"),
+                  Column("share", "Share of loop", lambda v: DASH if v is None else f"{100 * v:.1f}%"),
+                  Column("us_per_sweep", "us/sweep"), Column("ns_per_node", "ns/node/sweep")]
+
+
+def colour_rows(name, run):
+    """One row per colour class of a coloured GPU run that timed its colours."""
+    counters = run.counters
+    colours = int(counters.get("colours") or 0)
+    times = [counters.get(f"colour_ms_{k}") for k in range(colours)]
+    if colours == 0 or None in times:
+        return []
+    total, sweeps = sum(times), counters.get("sweeps") or 0
+    rows = []
+    for k, ms in enumerate(times):
+        nodes = counters.get(f"colour_nodes_{k}")
+        per_sweep = ms / sweeps if sweeps else None
+        rows.append({"benchmark": name, "mesh": bj.parse_name(name)["mesh"], "colour": k, "nodes": nodes, "ms": ms,
+                     "share": ms / total if total > 0 else None, "us_per_sweep": per_sweep and per_sweep * 1000,
+                     "ns_per_node": per_sweep * 1e6 / nodes if per_sweep is not None and nodes else None})
+    return rows
+
+
+def colour_table(result):
+    names = [n for n in result.runs if bj.parse_name(n)["kind"] == "gpu"
+             and bj.parse_name(n)["strategy"] == "Coloured"]
+    rows = [row for n in sorted(names, key=scaling_order) for row in colour_rows(n, result.runs[n])]
+    notes = ["The coloured loop's time class by class: a colour's step runs from the grid barrier that ends the "
+             "previous colour to the one that ends it (barrier waits included), read on the device's global "
+             "timer and summed over the sweeps; share = of the summed steps, which make up the smoothing phase.",
+             "ns/node/sweep = us/sweep over the class's nodes: what a node of that class costs per sweep."]
+    keys = ["benchmark", "mesh", "colour", "nodes", "ms", "share", "us_per_sweep", "ns_per_node"]
+    return Table("Where the coloured loop's time goes, colour by colour (GPU)", keys, rows, notes)
+
+
 RUNS_COLUMNS = [Column("benchmark", "Benchmark", fmt_text), Column("time_ms", "Time (ms)"),
                 Column("statistic", "Reduced as", fmt_text), Column("sweeps", "Sweeps", fmt_int)]
 
@@ -338,7 +375,8 @@ def build_tables(result, metric="real_time"):
     """All tables, keyed by their CSV stem."""
     return {"table3": time_table(result, "FormA", metric), "table4": time_table(result, "FormB", metric),
             "table5": speedup_table(result, "FormA", metric), "table6": speedup_table(result, "FormB", metric),
-            "quality": quality_table(result), "scaling": scaling_table(result), "runs": runs_table(result, metric)}
+            "quality": quality_table(result), "scaling": scaling_table(result), "colours": colour_table(result),
+            "runs": runs_table(result, metric)}
 
 
 def tables_markdown(result, tables, metric):
@@ -353,7 +391,8 @@ def tables_markdown(result, tables, metric):
         parts.append(markdown_section(table.title.replace("serial CPU", "threaded CPU (ours only)"),
                                       ["Speedup = our threaded CPU time / the GPU variant's time."],
                                       markdown_rows(THREADS_COLUMNS, table.rows)))
-    for stem, columns in (("quality", QUALITY_COLUMNS), ("scaling", SCALING_COLUMNS), ("runs", RUNS_COLUMNS)):
+    for stem, columns in (("quality", QUALITY_COLUMNS), ("scaling", SCALING_COLUMNS), ("colours", COLOUR_COLUMNS),
+                          ("runs", RUNS_COLUMNS)):
         table = tables[stem]
         body = markdown_rows(columns, table.rows) if table.rows else "_No benchmarks of this kind in the result._"
         parts.append(markdown_section(table.title, table.notes, body))

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs on the GPU machine from the repository root, with gpu-bundle/ carried
 # there: GPU tests, compute-sanitizer and the benchmarks, everything written
-# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile]
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile] [profile-lattice]
 # (default: tests sanitize bench)
 set -uo pipefail
 b=$(cd "$(dirname "$0")" && pwd)
@@ -69,6 +69,23 @@ for step in $steps; do
         "$b/bench_smooth" --no-cpu --models=109k --benchmark_filter='^FormB/AoS/Coloured/109k' \
         --benchmark_min_time=0.01 > "$out/ncu_109k.csv" 2> "$out/ncu_109k.err"
       echo "ncu exit $? ($(wc -l < "$out/ncu_109k.csv") lines)"
+      ;;
+    profile-lattice)
+      # Where a lattice-215 sweep's time goes, in float: Nsight Compute on the
+      # whole 100-sweep coloured loop and on one mid-run MultiBlock sweep
+      # (DRAM traffic, cache hit rates, instructions, warp stalls). The
+      # lattice is generated once and cached on disk for the second run.
+      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      for pick in "Coloured coloured_loop_kernel 0" "MultiBlock sweep_kernel 50"; do
+        set -- $pick
+        timeout 420 "$ncu" --clock-control none --kernel-name "regex:$2" --launch-skip "$3" --launch-count 1 \
+          --section SpeedOfLight --section MemoryWorkloadAnalysis --section WarpStateStats --section Occupancy \
+          --metrics dram__bytes_read.sum,dram__bytes_write.sum,lts__t_sector_hit_rate.pct,smsp__inst_executed.sum \
+          "$b/bench_smooth" --no-cpu --precision=float --scaling=lattice-215 \
+          --benchmark_filter="^FormB/AoS/$1/lattice" --benchmark_min_time=0.01 > "$out/ncu_lattice_$1.txt" 2>&1
+        echo "ncu $1 exit $?"
+        grep -E "dram__bytes|lts__t_sector_hit|inst_executed|Duration|DRAM Throughput|Memory Throughput|L2 Hit|L1/TEX Hit|Achieved Occupancy|Issue Slots|Stall" "$out/ncu_lattice_$1.txt" | head -30
+      done
       ;;
     study)
       "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \

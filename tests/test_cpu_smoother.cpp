@@ -113,6 +113,9 @@ TEST(CpuSmoother, GivenColouringIsUsedAndChecked) {
   TetMesh copy = m;
   const SmoothResult r = smooth_cpu(copy, o, &c);
   EXPECT_EQ(r.num_colours, c.num_colours);
+  ASSERT_EQ(r.colour_sizes.size(), static_cast<std::size_t>(c.num_colours));
+  for (int k = 0; k < c.num_colours; ++k) EXPECT_EQ(r.colour_sizes[k], c.classes.row_size(k)) << "colour " << k;
+  EXPECT_TRUE(r.colour_ms.empty());  // timed per colour by the GPU loop only
   std::fill(c.colour.begin(), c.colour.end(), 0);
   copy = m;
   EXPECT_THROW(smooth_cpu(copy, o, &c), UsageError);

@@ -182,6 +182,7 @@ SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& opt, const Colouring
       colouring = &computed;
     }
     result.num_colours = colouring->num_colours;
+    for (int c = 0; c < colouring->num_colours; ++c) result.colour_sizes.push_back(colouring->classes.row_size(c));
     result.colouring_ms = ms_since(t0);
   }
 

@@ -108,6 +108,17 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   const unsigned mask = group_mask<G>();
   const CachedOldQuality<Real> cached{tet_q};
   constexpr int kKept = 32 / G;
+  // Where the time goes, colour by colour: the grid's first thread stamps
+  // each barrier. Its last stamp waits in shared memory, not in a register
+  // that the whole loop would carry (double is short of them).
+  __shared__ unsigned long long colour_start;
+  const auto stamp_colour = [&](int col) {
+    if (tid != 0 || c.colour_ns == nullptr) return;
+    const unsigned long long now = global_timer_ns();
+    if (col >= 0) c.colour_ns[col] += now - colour_start;
+    colour_start = now;
+  };
+  stamp_colour(-1);
   for (int s = 0; s < max_iterations; ++s) {
     unsigned accepted = 0;
     unsigned evaluated = 0;
@@ -169,11 +180,15 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         }
         evaluated += active && lane == 0;
       }
-      if (col + 1 < cls.count) grid.sync();  // the next colour reads these moves
+      if (col + 1 < cls.count) {
+        grid.sync();  // the next colour reads these moves
+        stamp_colour(col);
+      }
     }
     add_sweep_stats(c, s, accepted, disp2);
     warp_atomic_add(&st->evaluated, evaluated);
     grid.sync();
+    if (cls.count > 0) stamp_colour(cls.count - 1);
     // The counters of sweep s are final now; every block reads them (past
     // L1) and reaches the same verdict.
     const double max_disp = sqrt(__longlong_as_double(static_cast<long long>(__ldcg(&c.max_disp2_bits[s]))));

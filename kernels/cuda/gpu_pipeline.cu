@@ -56,6 +56,7 @@ struct GpuPipeline::Impl {
   DeviceBuffer<SweepState> state;
   DeviceBuffer<unsigned long long> accepted, max_disp2;
   DeviceBuffer<int> repair_found;
+  DeviceBuffer<unsigned long long> colour_ns;  // Coloured: per colour, see SweepCounters
   DeviceBuffer<double> output;          // 3n, for download
   SweepState* host_state = nullptr;     // pinned
   DeviceTopology topo;
@@ -229,7 +230,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   a.revert = m.revert.data();
   a.state = m.state.data();
   a.host_state = m.host_state;
-  a.counters = SweepCounters{m.accepted.data(), m.max_disp2.data(), m.repair_found.data()};
+  a.counters = SweepCounters{m.accepted.data(), m.max_disp2.data(), m.repair_found.data(), nullptr};
   a.class_nodes = class_nodes;
   a.class_off = class_off_dev;
   a.num_colours = class_off ? static_cast<int>(class_off->size()) - 1 : 0;
@@ -241,6 +242,9 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
     m.moved_at.resize(m.n);
     a.tet_quality = m.tet_quality.data();
     a.moved_at = m.moved_at.data();
+    m.colour_ns.resize(static_cast<std::size_t>(std::max(a.num_colours, 1)));
+    CUDA_CHECK(cudaMemsetAsync(m.colour_ns.data(), 0, m.colour_ns.bytes(), m.stream));
+    a.counters.colour_ns = m.colour_ns.data();
   }
   a.stream = m.stream;
   const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
@@ -280,6 +284,14 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
     for (int s = 0; s < r.sweeps; ++s) {
       r.accepted_per_sweep.push_back(static_cast<std::int64_t>(acc[s]));
       r.max_displacement_per_sweep.push_back(std::sqrt(bits_to_double(d2[s])) * (is_float ? m.scale : 1.0));
+    }
+  }
+  if (class_off) {
+    for (int c = 0; c < a.num_colours; ++c) r.colour_sizes.push_back((*class_off)[c + 1] - (*class_off)[c]);
+    if (a.num_colours > 0) {
+      std::vector<unsigned long long> ns(static_cast<std::size_t>(a.num_colours));
+      CUDA_CHECK(cudaMemcpy(ns.data(), m.colour_ns.data(), ns.size() * sizeof(ns[0]), cudaMemcpyDeviceToHost));
+      for (unsigned long long v : ns) r.colour_ms.push_back(static_cast<double>(v) / 1e6);
     }
   }
   m.result_in_buf1 = o.form == Form::A && (r.sweeps & 1);

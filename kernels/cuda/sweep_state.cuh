@@ -24,7 +24,20 @@ struct SweepCounters {
   unsigned long long* accepted;
   unsigned long long* max_disp2_bits;  // a non-negative double's bits order like the double
   int* repair_found;                   // kMaxRepairPasses flags of the current sweep
+  // Coloured loop only (else null): nanoseconds spent on each colour class,
+  // summed over the sweeps, one entry per colour. A colour's step runs from
+  // the grid barrier that ends the previous one to the barrier that ends it,
+  // read by one thread on the device's global timer (so barrier waits count
+  // with the colour that caused them).
+  unsigned long long* colour_ns;
 };
+
+// The device's global nanosecond timer (the same clock on every SM).
+__device__ __forceinline__ unsigned long long global_timer_ns() {
+  unsigned long long t;
+  asm volatile("mov.u64 %0, %%globaltimer;" : "=l"(t));
+  return t;
+}
 
 // Records the stopping rule's verdict on sweep s (0-based), just finished.
 __device__ __forceinline__ void record_verdict(SweepState* st, int s, SweepVerdict v) {

@@ -265,5 +265,43 @@ TEST(GpuPipeline, RestoreGivesTheSameRunAgain) {
   EXPECT_GT(cuda::measure_copy_bandwidth(std::size_t(64) << 20, 3), 1e9);
 }
 
+// The coloured loop's time, colour by colour: one entry per class, each
+// class's size as the colouring has it, every entry positive, and together
+// no more than the smoothing phase that contains them (the CUDA events
+// bracket the loop; 1% and 10 us allow for the two clocks). A second run
+// starts its sums from zero.
+TEST(GpuPipeline, ColouredLoopTimesEachColour) {
+  SKIP_WITHOUT_GPU();
+  cuda::GpuPipeline p(model_5k());
+  const Topology topo = build_topology(model_5k());
+  const Colouring cpu_colouring = colour_nodes(topo.neighbours, topo.movable);
+  const SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Adaptive, Precision::Double);
+  for (const Colouring* given : {static_cast<const Colouring*>(nullptr), &cpu_colouring, &cpu_colouring}) {
+    p.restore_coordinates(o);
+    const SmoothResult r = p.run(o, given);
+    ASSERT_GT(r.num_colours, 1);
+    ASSERT_EQ(r.colour_ms.size(), static_cast<std::size_t>(r.num_colours));
+    ASSERT_EQ(r.colour_sizes.size(), static_cast<std::size_t>(r.num_colours));
+    std::int64_t nodes = 0;
+    double total = 0;
+    for (int k = 0; k < r.num_colours; ++k) {
+      if (given) {
+        EXPECT_EQ(r.colour_sizes[k], given->classes.row_size(k)) << "colour " << k;
+      }
+      EXPECT_GT(r.colour_ms[k], 0.0) << "colour " << k;
+      nodes += r.colour_sizes[k];
+      total += r.colour_ms[k];
+    }
+    EXPECT_EQ(static_cast<std::size_t>(nodes), r.movable_nodes);
+    EXPECT_LE(total, 1.01 * r.smoothing_ms + 0.01);
+    std::printf("%s colouring: %d colours, %.3f of %.3f smoothing ms in the colour steps\n",
+                given ? "CPU" : "device", r.num_colours, total, r.smoothing_ms);
+  }
+  const SmoothOptions multi = gpu_options(Form::B, Layout::AoS, Strategy::MultiBlock, Method::Adaptive,
+                                          Precision::Double);
+  p.restore_coordinates(multi);
+  EXPECT_TRUE(p.run(multi).colour_ms.empty());
+}
+
 }  // namespace
 }  // namespace tetsmooth

@@ -28,7 +28,8 @@ import bench_json as bj  # noqa: E402
 import paper_numbers as paper  # noqa: E402
 
 FIGURES = ("fig09_layout.png", "fig10_form.png", "fig11_cpu_gpu.png", "fig12_blocks.png", "fig13_quality.png")
-CSV_FILES = ("table3.csv", "table4.csv", "table5.csv", "table6.csv", "quality.csv", "scaling.csv", "runs.csv")
+CSV_FILES = ("table3.csv", "table4.csv", "table5.csv", "table6.csv", "quality.csv", "scaling.csv", "colours.csv",
+             "runs.csv")
 
 
 def run_script(script, *args):
@@ -260,6 +261,22 @@ class ReportTests(unittest.TestCase):
         names = list(rows)
         self.assertLess(names.index("FormB/AoS/MultiBlock/109k"), names.index("FormB/AoS/MultiBlock/lattice-16"))
         self.assertLess(names.index("FormB/AoS/MultiBlock/lattice-16"), names.index("FormB/AoS/MultiBlock/lattice-32"))
+
+    def test_colour_table(self):
+        rows = read_csv(os.path.join(self.out, "colours.csv"))
+        median = raw_entry(self.document, "FormB/AoS/Coloured/5k/repeats:3/manual_time_median", "median")
+        mine = [r for r in rows if r["benchmark"] == "FormB/AoS/Coloured/5k"]
+        self.assertEqual([int(r["colour"]) for r in mine], list(range(int(median["colours"]))))
+        total = sum(median[f"colour_ms_{k}"] for k in range(int(median["colours"])))
+        for k, row in enumerate(mine):
+            ms, nodes = median[f"colour_ms_{k}"], median[f"colour_nodes_{k}"]
+            self.assertAlmostEqual(float(row["ms"]), ms)
+            self.assertEqual(int(float(row["nodes"])), nodes)
+            self.assertAlmostEqual(float(row["share"]), ms / total)
+            self.assertAlmostEqual(float(row["us_per_sweep"]), 1000 * ms / median["sweeps"])
+            self.assertAlmostEqual(float(row["ns_per_node"]), 1e6 * ms / median["sweeps"] / nodes)
+        # A coloured run without per-colour times (the fixture's 109k entries) has no rows.
+        self.assertFalse([r for r in rows if r["benchmark"] == "FormB/AoS/Coloured/109k"])
 
     def test_markdown_names_device_and_paper(self):
         with open(os.path.join(self.out, "tables.md"), encoding="utf-8") as handle:

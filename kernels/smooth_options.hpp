@@ -69,8 +69,9 @@ struct SmoothResult {
   double mean_edge_length = 0;
   double topology_ms = 0, colouring_ms = 0, smoothing_ms = 0;
   // CUDA Coloured: milliseconds spent on each colour class (index = colour),
-  // summed over the sweeps, barrier waits included; their sum is the sweep
-  // loop's time. Empty for the other strategies and the CPU.
+  // summed over the sweeps, barrier waits included; together they are the
+  // smoothing phase less the loop's set-up (the tet quality cache). Empty
+  // for the other strategies and the CPU.
   std::vector<double> colour_ms;
   std::vector<std::int64_t> colour_sizes;  // nodes of each colour class (Coloured runs, CPU and CUDA)
   QualitySummary before, after;

@@ -11,7 +11,7 @@ double bytes_per_sweep(const SweepFootprint& f) {
   const double flags = static_cast<double>(f.nodes);
   const double stars = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
                        16.0 * static_cast<double>(f.tets);
-  return coords + neighbours + flags + f.evaluated_share * stars;
+  return coords + flags + f.evaluated_share * (neighbours + stars);
 }
 
 void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f) {

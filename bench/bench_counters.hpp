@@ -16,13 +16,13 @@ struct SweepFootprint {
 };
 
 // The fewest bytes one sweep must move through device memory: every
-// coordinate read once and written once, the neighbour CSR with offsets and
-// the movable flags read once, and the stars (incidence CSR with offsets,
-// the tets) read once for the share of nodes evaluated: a sweep that skips
-// settled nodes (CUDA Coloured) still reads every neighbour row, but no star
-// of a skipped node. Re-reads of neighbour coordinates are not counted: an
-// ideal cache would serve them. Nor are a variant's own helpers (the
-// Coloured tet quality cache, its move steps): the floor is the smoothing's.
+// coordinate read once and written once, a flag byte per node, and for the
+// share of nodes evaluated their neighbour rows and stars (neighbour and
+// incidence CSR with offsets, the tets) read once: a sweep that skips
+// settled nodes (CUDA Coloured) reads neither the row nor the star of a
+// skipped node. Re-reads of neighbour coordinates are not counted: an ideal
+// cache would serve them. Nor are a variant's own helpers (the Coloured tet
+// quality cache and colour classes): the floor is the smoothing's.
 double bytes_per_sweep(const SweepFootprint& f);
 
 // sweeps, accepted, evaluations, phase times, ms per sweep, node updates

@@ -41,26 +41,11 @@ struct NodeMove {
 // can share one node (lane l handles entries l, l + stride, ...) and combine
 // the parts; the CPU calls them with lane 0 and stride 1.
 
-// Does nothing with a neighbour (see neighbour_sum).
-struct IgnoreNeighbour {
-  TS_HD void operator()(index_t) const {}
-};
-
 // Sum of the neighbours' positions over this lane's share of the row.
-// `visit(j)` is called for each neighbour j on the way, so a caller that
-// needs more of the row reads it in the same pass.
-#ifdef __CUDACC__
-#pragma nv_exec_check_disable
-#endif
-template <class Real, class Coords, class Visit = IgnoreNeighbour>
-TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, int lane, int stride,
-                               Visit&& visit = {}) {
+template <class Real, class Coords>
+TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, int lane, int stride) {
   Vec3<Real> s{0, 0, 0};
-  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) {
-    const index_t j = m.nbr[k];
-    visit(j);
-    s = s + xyz.get(j);
-  }
+  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) s = s + xyz.get(m.nbr[k]);
   return s;
 }
 

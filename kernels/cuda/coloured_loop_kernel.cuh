@@ -19,16 +19,20 @@
 //    minimum is then read, and only the quality at the target is computed
 //    (and kept for the update). An entry is what a fresh computation would
 //    give: the same function of the same coordinates.
-//  * moved_at[j] is the step (sweep * colours + colour) of node j's last
-//    move, -1 before any. A node's decision depends only on its own position
-//    and its neighbours' (the corners of its star are exactly its
-//    neighbours). Its turn one sweep earlier either evaluated it and it did
-//    not move, or skipped it, which by the same argument stands for an
-//    evaluation that would not have moved it; so when nothing in the
-//    neighbourhood moved since that turn, the same inputs would give the
-//    same rejection, and the node is skipped again (skip_settled; a test
-//    compares runs with and without it bit for bit). The steps are read in
-//    the same pass as the neighbours' positions.
+//  * changed[i] says whether node i or a neighbour has moved since i's last
+//    turn. A node's decision depends only on its own position and its
+//    neighbours' (the corners of its star are exactly its neighbours). Its
+//    turn one sweep earlier either evaluated it and it did not move, or
+//    skipped it, which by the same argument stands for an evaluation that
+//    would not have moved it; so when nothing in the neighbourhood moved
+//    since that turn, the same inputs would give the same rejection, and the
+//    node is skipped again (skip_settled; a test compares runs with and
+//    without it bit for bit). A node that moves flags itself and its
+//    neighbours; at its turn a node that does not move clears its flag. Its
+//    neighbours have other colours, so a flag is never written by its owner
+//    and by a mover in the same step, and movers that flag one neighbour
+//    write the same value. A settled node costs one byte: neither its
+//    neighbour row nor their positions are read.
 #include <cooperative_groups.h>
 
 #include "kernels/cuda/sweep_kernels.cuh"
@@ -84,7 +88,7 @@ struct KeptQualities {
 
 template <class Real, bool kAdaptive, int G, class Coords>
 __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
-    coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, int* moved_at, index_t n,
+    coloured_loop_kernel(MeshView m, Coords xyz, ColourClassesView cls, Real* tet_q, std::uint8_t* changed, index_t n,
                          index_t num_tets, SweepState* st, SweepCounters c, int max_iterations, bool skip_settled) {
   namespace cg = cooperative_groups;
   cg::grid_group grid = cg::this_grid();
@@ -94,7 +98,8 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       const index_t* tet = m.tets + 4 * t;
       tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
     }
-  for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) moved_at[i] = -1;
+  // Every node is evaluated in the first sweep.
+  for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) changed[i] = 1;
   // Nodes of the block's share of a class handed out so far, by the parity
   // of the step (see below).
   __shared__ unsigned taken[2];
@@ -147,22 +152,22 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         const long long k = start + group_in_warp;
         const bool in_class = k < end;
         const index_t i = in_class ? cls.nodes[k] : 0;
-        // The node's own position and move step, read up front.
+        // The node's position and flag, read up front; every lane of the
+        // group reads the same flag.
         const Vec3<Real> p = in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
-        int latest = in_class && lane == 0 ? moved_at[i] : -1;
-        const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, in_class, mask,
-                                                          [&](index_t j) { latest = max(latest, moved_at[j]); });
+        const bool flagged = in_class && changed[i] != 0;
         // Settled: nothing in the neighbourhood moved since this node's turn
-        // in the previous sweep (step - colours); see the top of the file.
-        const bool active =
-            in_class && (!skip_settled || s == 0 || group_max<G>(latest, mask) >= step - cls.count);
+        // in the previous sweep; see the top of the file.
+        const bool active = in_class && (flagged || !skip_settled);
+        const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, active, mask);
         // The lane's new qualities, kept for the cache update: every round
         // up to kKept (a star of up to 32 tets needs no recomputation).
         KeptQualities<Real, kKept> kept;
         int rounds = 0;
         const NodeMove<Real> mv = judge_move_group<Real, kAdaptive, G>(
             m, xyz, i, p, target, lane, active, cached, mask, [&](index_t, Real q) { kept.put(rounds++, q); });
-        if (active && mv.accept && mv.displacement2 > Real(0)) {
+        const bool moves = active && mv.accept && mv.displacement2 > Real(0);
+        if (moves) {
           // An accepted move computed every round. tet_quality_with never
           // reads node i's stored position, so lane 0 may overwrite it
           // meanwhile.
@@ -171,13 +176,16 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
             for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G, ++r)
               tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
           }
+          for (index_t e = m.nbr_off[i] + lane; e < m.nbr_off[i + 1]; e += G) changed[m.nbr[e]] = 1;
           if (lane == 0) {
             xyz.set(i, mv.target);
-            moved_at[i] = step;
             ++accepted;
             disp2 = fmax(disp2, static_cast<double>(mv.displacement2));
           }
         }
+        // The group's lanes have all read the flag: the votes and sums above
+        // exchanged values that depend on it.
+        if (in_class && lane == 0 && flagged != moves) changed[i] = moves;
         evaluated += active && lane == 0;
       }
       if (col + 1 < cls.count) {

@@ -30,13 +30,13 @@ void launch_coloured_loop_with(const SweepLoopArgs& a, const SmoothOptions& o, C
   MeshView view = a.view;
   ColourClassesView cls{a.class_off, a.class_nodes, a.num_colours};
   Real* tet_q = static_cast<Real*>(a.tet_quality);
-  int* moved_at = a.moved_at;
+  std::uint8_t* changed = a.changed;
   index_t n = a.n, num_tets = a.num_tets;
   SweepState* st = a.state;
   SweepCounters counters = a.counters;
   int max_iterations = o.max_iterations;
   bool skip = o.skip_settled;
-  void* params[] = {&view, &xyz, &cls, &tet_q, &moved_at, &n, &num_tets, &st, &counters, &max_iterations, &skip};
+  void* params[] = {&view, &xyz, &cls, &tet_q, &changed, &n, &num_tets, &st, &counters, &max_iterations, &skip};
   CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(block),
                                          params, 0, a.stream));
   CUDA_CHECK_LAUNCH();

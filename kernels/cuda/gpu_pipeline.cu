@@ -48,10 +48,10 @@ struct GpuPipeline::Impl {
   DeviceBuffer<double> input;           // 3n, AoS, mesh units
   DeviceBuffer<double> buf0, buf1;      // working coordinates (3n Real)
   DeviceBuffer<double> old_min;         // n Real
-  // Coloured only, allocated by its first run: 8 B per tet and 4 B per node
+  // Coloured only, allocated by its first run: 8 B per tet and 1 B per node
   // (0.5 GB for the 60M-tet lattice).
   DeviceBuffer<double> tet_quality;     // t Real
-  DeviceBuffer<int> moved_at;           // n
+  DeviceBuffer<std::uint8_t> changed;   // n
   DeviceBuffer<std::uint8_t> moved, revert;
   DeviceBuffer<SweepState> state;
   DeviceBuffer<unsigned long long> accepted, max_disp2;
@@ -239,9 +239,9 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
       a.largest_class = std::max(a.largest_class, (*class_off)[c + 1] - (*class_off)[c]);
   if (o.strategy == Strategy::Coloured) {
     m.tet_quality.resize(m.t);
-    m.moved_at.resize(m.n);
+    m.changed.resize(m.n);
     a.tet_quality = m.tet_quality.data();
-    a.moved_at = m.moved_at.data();
+    a.changed = m.changed.data();
     m.colour_ns.resize(static_cast<std::size_t>(std::max(a.num_colours, 1)));
     CUDA_CHECK(cudaMemsetAsync(m.colour_ns.data(), 0, m.colour_ns.bytes(), m.stream));
     a.counters.colour_ns = m.colour_ns.data();

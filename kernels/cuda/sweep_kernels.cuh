@@ -54,12 +54,12 @@ __device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& rea
 // lane named in `mask` (lane_groups.cuh) must call them; lanes of an inactive
 // group contribute nothing. All lanes of a group get the same result.
 
-// The centroid of node i's neighbours; `visit` as in neighbour_sum.
-template <class Real, int G, class Coords, class Visit = IgnoreNeighbour>
+// The centroid of node i's neighbours.
+template <class Real, int G, class Coords>
 __device__ __forceinline__ Vec3<Real> centroid_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
-                                                     bool active, unsigned mask = 0xffffffffu, Visit&& visit = {}) {
+                                                     bool active, unsigned mask = 0xffffffffu) {
   Vec3<Real> sum{0, 0, 0};
-  if (active) sum = neighbour_sum<Real>(m, xyz, i, lane, G, visit);
+  if (active) sum = neighbour_sum<Real>(m, xyz, i, lane, G);
   sum = Vec3<Real>{group_sum<G>(sum.x, mask), group_sum<G>(sum.y, mask), group_sum<G>(sum.z, mask)};
   const Real degree = active ? Real(m.nbr_off[i + 1] - m.nbr_off[i]) : Real(1);
   return (Real(1) / degree) * sum;

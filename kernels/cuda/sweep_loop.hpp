@@ -28,7 +28,7 @@ struct SweepLoopArgs {
   int num_colours = 0;
   index_t largest_class = 0;
   void* tet_quality = nullptr;  // Coloured: num_tets Real
-  int* moved_at = nullptr;      // Coloured: n
+  std::uint8_t* changed = nullptr;  // Coloured: n (coloured_loop_kernel.cuh)
   cudaStream_t stream = nullptr;
 };
 

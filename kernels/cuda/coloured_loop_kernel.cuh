@@ -55,8 +55,8 @@ struct ColourClassesView {
 // per SM keeps the grid barrier that ends each colour to one arrival per SM
 // (three blocks of 256 threads give three times as many, and lost 0.16 ms
 // on the 109k model to one block of 768 threads with the same warps). The
-// launch bounds cap the registers: double gets 96 (it wants ~104; 16 bytes
-// spill), float 72 (it needs 66). Smoothing the 109k model on an H100, ms,
+// launch bounds cap the registers: double gets 96 (it wants more: 20-48
+// bytes spill), float 72 (no spill). Smoothing the 109k model on an H100, ms,
 // with nodes dealt to warps in a fixed stride:
 //   double: 256 x 2 blocks 3.10, 256 x 3 (80 registers) 2.89, 768 x 1 2.73,
 //           640 x 1 2.71, 896 x 1 (72 registers, 136 bytes spill) 3.03;

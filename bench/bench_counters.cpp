@@ -1,6 +1,7 @@
 #include "bench/bench_counters.hpp"
 
 #include <algorithm>
+#include <map>
 #include <string>
 
 namespace tetsmooth::bench {
@@ -14,35 +15,40 @@ double bytes_per_sweep(const SweepFootprint& f) {
   return coords + flags + f.evaluated_share * (neighbours + stars);
 }
 
-void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f) {
+std::map<std::string, double> run_counter_values(const SmoothResult& r, const SweepFootprint& f) {
+  std::map<std::string, double> c;
   std::int64_t accepted = 0;
   for (auto a : r.accepted_per_sweep) accepted += a;
   const double smooth_s = r.smoothing_ms / 1000.0;
-  state.counters["sweeps"] = r.sweeps;
-  state.counters["accepted"] = static_cast<double>(accepted);
-  state.counters["topology_ms"] = r.topology_ms;
-  state.counters["colouring_ms"] = r.colouring_ms;
-  state.counters["smoothing_ms"] = r.smoothing_ms;
-  state.counters["colours"] = r.num_colours;
-  state.counters["movable"] = static_cast<double>(r.movable_nodes);
-  state.counters["nodes"] = static_cast<double>(f.nodes);
-  state.counters["tets"] = static_cast<double>(f.tets);
-  state.counters["reverted"] = static_cast<double>(r.reverted_moves);
-  state.counters["evaluations"] = static_cast<double>(r.evaluations);
+  c["sweeps"] = r.sweeps;
+  c["accepted"] = static_cast<double>(accepted);
+  c["topology_ms"] = r.topology_ms;
+  c["colouring_ms"] = r.colouring_ms;
+  c["smoothing_ms"] = r.smoothing_ms;
+  c["colours"] = r.num_colours;
+  c["movable"] = static_cast<double>(r.movable_nodes);
+  c["nodes"] = static_cast<double>(f.nodes);
+  c["tets"] = static_cast<double>(f.tets);
+  c["reverted"] = static_cast<double>(r.reverted_moves);
+  c["evaluations"] = static_cast<double>(r.evaluations);
   // Where a coloured run's time goes, class by class (plots/make_tables.py
   // turns these into colours.csv).
   for (std::size_t k = 0; k < r.colour_sizes.size(); ++k)
-    state.counters["colour_nodes_" + std::to_string(k)] = static_cast<double>(r.colour_sizes[k]);
-  for (std::size_t k = 0; k < r.colour_ms.size(); ++k)
-    state.counters["colour_ms_" + std::to_string(k)] = r.colour_ms[k];
+    c["colour_nodes_" + std::to_string(k)] = static_cast<double>(r.colour_sizes[k]);
+  for (std::size_t k = 0; k < r.colour_ms.size(); ++k) c["colour_ms_" + std::to_string(k)] = r.colour_ms[k];
   if (r.sweeps > 0 && smooth_s > 0) {
     const double full = static_cast<double>(r.movable_nodes) * r.sweeps;
     SweepFootprint g = f;
     g.evaluated_share = full > 0 ? std::min(1.0, static_cast<double>(r.evaluations) / full) : 1.0;
-    state.counters["ms_per_sweep"] = r.smoothing_ms / r.sweeps;
-    state.counters["node_updates_per_s"] = static_cast<double>(r.evaluations) / smooth_s;
-    state.counters["bytes_per_s"] = bytes_per_sweep(g) * r.sweeps / smooth_s;
+    c["ms_per_sweep"] = r.smoothing_ms / r.sweeps;
+    c["node_updates_per_s"] = static_cast<double>(r.evaluations) / smooth_s;
+    c["bytes_per_s"] = bytes_per_sweep(g) * r.sweeps / smooth_s;
   }
+  return c;
+}
+
+void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f) {
+  for (const auto& [name, value] : run_counter_values(r, f)) state.counters[name] = value;
 }
 
 void set_quality_counters(benchmark::State& state, const QualitySummary& before, const QualitySummary& after) {

@@ -2,6 +2,9 @@
 // Counters that carry the physics of a run into the benchmark JSON.
 #include <benchmark/benchmark.h>
 
+#include <map>
+#include <string>
+
 #include "kernels/smooth_options.hpp"
 #include "mesh/csr.hpp"
 #include "mesh/tet_mesh.hpp"
@@ -25,8 +28,13 @@ struct SweepFootprint {
 // quality cache and colour classes): the floor is the smoothing's.
 double bytes_per_sweep(const SweepFootprint& f);
 
-// sweeps, accepted, evaluations, phase times, ms per sweep, node updates
-// (evaluations) per second, bytes/s.
+// A run's counters by name: sweeps, accepted, evaluations, phase times,
+// colour_nodes_k and colour_ms_k per colour class, and once a sweep has run
+// ms per sweep, node updates (evaluations) per second and bytes/s (the
+// footprint of bytes_per_sweep, its evaluated share taken from the run).
+std::map<std::string, double> run_counter_values(const SmoothResult& r, const SweepFootprint& f);
+
+// Puts run_counter_values into the benchmark's counters.
 void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f);
 
 // Quality before and after: min, mean, q < 0.1, inverted, 10-bin histograms.

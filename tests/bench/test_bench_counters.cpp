@@ -1,0 +1,72 @@
+// The counters bench_smooth writes into its JSON: the memory floor's byte
+// count and the per-run values, checked on numbers worked out by hand.
+#include <gtest/gtest.h>
+
+#include "bench/bench_counters.hpp"
+
+namespace tetsmooth::bench {
+namespace {
+
+// 10 nodes, 4 tets, 30 neighbour entries, 16 incidence entries, double.
+SweepFootprint tiny() {
+  SweepFootprint f;
+  f.nodes = 10;
+  f.tets = 4;
+  f.neighbour_entries = 30;
+  f.incidence_entries = 16;
+  f.real_bytes = 8;
+  return f;
+}
+
+TEST(BenchCounters, BytesPerSweepCountsEachArrayOnce) {
+  SweepFootprint f = tiny();
+  // coordinates read and written 2*3*10*8 = 480, flags 10, neighbour rows
+  // 4*11 + 4*30 = 164, stars 4*11 + 4*16 + 16*4 = 172.
+  EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 480 + 10 + 164 + 172);
+  // Skipped nodes read neither their neighbour row nor their star.
+  f.evaluated_share = 0.5;
+  EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 480 + 10 + 0.5 * (164 + 172));
+  f.real_bytes = 4;
+  EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 240 + 10 + 0.5 * (164 + 172));
+}
+
+TEST(BenchCounters, RunValuesOfAColouredRun) {
+  SmoothResult r;
+  r.sweeps = 4;
+  r.accepted_per_sweep = {5, 3, 2, 0};
+  r.smoothing_ms = 2;
+  r.topology_ms = 0.25;
+  r.movable_nodes = 8;
+  r.evaluations = 16;  // half of 8 nodes x 4 sweeps
+  r.num_colours = 2;
+  r.colour_sizes = {5, 3};
+  r.colour_ms = {1.5, 0.5};
+  const auto c = run_counter_values(r, tiny());
+  EXPECT_DOUBLE_EQ(c.at("accepted"), 10);
+  EXPECT_DOUBLE_EQ(c.at("topology_ms"), 0.25);
+  EXPECT_DOUBLE_EQ(c.at("colours"), 2);
+  EXPECT_DOUBLE_EQ(c.at("colour_nodes_0"), 5);
+  EXPECT_DOUBLE_EQ(c.at("colour_nodes_1"), 3);
+  EXPECT_DOUBLE_EQ(c.at("colour_ms_0"), 1.5);
+  EXPECT_DOUBLE_EQ(c.at("colour_ms_1"), 0.5);
+  EXPECT_EQ(c.count("colour_ms_2"), 0u);
+  EXPECT_DOUBLE_EQ(c.at("ms_per_sweep"), 0.5);
+  EXPECT_DOUBLE_EQ(c.at("node_updates_per_s"), 16 / 0.002);
+  // The evaluated share comes from the run: 16 of 32.
+  EXPECT_DOUBLE_EQ(c.at("bytes_per_s"), (480 + 10 + 0.5 * (164 + 172)) * 4 / 0.002);
+}
+
+TEST(BenchCounters, NoRatesWithoutASweepAndNoColourTimesOffTheGpuLoop) {
+  SmoothResult r;
+  r.num_colours = 2;
+  r.colour_sizes = {4, 4};  // a CPU coloured run: sizes, no times
+  auto c = run_counter_values(r, tiny());
+  EXPECT_DOUBLE_EQ(c.at("sweeps"), 0);
+  EXPECT_EQ(c.count("ms_per_sweep"), 0u);
+  EXPECT_EQ(c.count("bytes_per_s"), 0u);
+  EXPECT_DOUBLE_EQ(c.at("colour_nodes_1"), 4);
+  EXPECT_EQ(c.count("colour_ms_0"), 0u);
+}
+
+}  // namespace
+}  // namespace tetsmooth::bench

@@ -41,12 +41,19 @@ struct NodeMove {
 // can share one node (lane l handles entries l, l + stride, ...) and combine
 // the parts; the CPU calls them with lane 0 and stride 1.
 
-// Sum of the neighbours' positions over this lane's share of the row.
+// Sum of the positions of the neighbours in entries [begin, end) of the
+// neighbour CSR (a node's row, or none), over this lane's share.
+template <class Real, class Coords>
+TS_HD Vec3<Real> row_sum(const MeshView& m, const Coords& xyz, index_t begin, index_t end, int lane, int stride) {
+  Vec3<Real> s{0, 0, 0};
+  for (index_t k = begin + lane; k < end; k += stride) s = s + xyz.get(m.nbr[k]);
+  return s;
+}
+
+// The same over node i's row.
 template <class Real, class Coords>
 TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, int lane, int stride) {
-  Vec3<Real> s{0, 0, 0};
-  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) s = s + xyz.get(m.nbr[k]);
-  return s;
+  return row_sum<Real>(m, xyz, m.nbr_off[i], m.nbr_off[i + 1], lane, stride);
 }
 
 // The four corners of tet t, with node i replaced by `at`.

@@ -152,14 +152,18 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         const long long k = start + group_in_warp;
         const bool in_class = k < end;
         const index_t i = in_class ? cls.nodes[k] : 0;
-        // The node's position and flag, read up front; every lane of the
-        // group reads the same flag.
+        // The node's position, flag and neighbour row bounds, read up front
+        // and side by side: an active node's row does not wait on its flag
+        // (on an H100, smoothing 109k in double took 2.21 ms against 2.29
+        // with the bounds read after the flag, lattice-215 1002 against 1046).
+        // Every lane of the group reads the same flag.
         const Vec3<Real> p = in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
         const bool flagged = in_class && changed[i] != 0;
+        const index_t row_begin = in_class ? m.nbr_off[i] : 0, row_end = in_class ? m.nbr_off[i + 1] : 0;
         // Settled: nothing in the neighbourhood moved since this node's turn
         // in the previous sweep; see the top of the file.
         const bool active = in_class && (flagged || !skip_settled);
-        const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, active, mask);
+        const Vec3<Real> target = row_centroid_group<Real, G>(m, xyz, row_begin, row_end, lane, active, mask);
         // The lane's new qualities, kept for the cache update: every round
         // up to kKept (a star of up to 32 tets needs no recomputation).
         KeptQualities<Real, kKept> kept;
@@ -176,7 +180,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
             for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G, ++r)
               tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
           }
-          for (index_t e = m.nbr_off[i] + lane; e < m.nbr_off[i + 1]; e += G) changed[m.nbr[e]] = 1;
+          for (index_t e = row_begin + lane; e < row_end; e += G) changed[m.nbr[e]] = 1;
           if (lane == 0) {
             xyz.set(i, mv.target);
             ++accepted;

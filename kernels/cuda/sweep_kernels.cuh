@@ -54,15 +54,26 @@ __device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& rea
 // lane named in `mask` (lane_groups.cuh) must call them; lanes of an inactive
 // group contribute nothing. All lanes of a group get the same result.
 
+// The centroid of the neighbours in row [begin, end) of the neighbour CSR,
+// for a caller that has the row's bounds already.
+template <class Real, int G, class Coords>
+__device__ __forceinline__ Vec3<Real> row_centroid_group(const MeshView& m, const Coords& xyz, index_t begin,
+                                                         index_t end, int lane, bool active,
+                                                         unsigned mask = 0xffffffffu) {
+  Vec3<Real> sum{0, 0, 0};
+  if (active) sum = row_sum<Real>(m, xyz, begin, end, lane, G);
+  sum = Vec3<Real>{group_sum<G>(sum.x, mask), group_sum<G>(sum.y, mask), group_sum<G>(sum.z, mask)};
+  const Real degree = active ? Real(end - begin) : Real(1);
+  return (Real(1) / degree) * sum;
+}
+
 // The centroid of node i's neighbours.
 template <class Real, int G, class Coords>
 __device__ __forceinline__ Vec3<Real> centroid_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
                                                      bool active, unsigned mask = 0xffffffffu) {
-  Vec3<Real> sum{0, 0, 0};
-  if (active) sum = neighbour_sum<Real>(m, xyz, i, lane, G);
-  sum = Vec3<Real>{group_sum<G>(sum.x, mask), group_sum<G>(sum.y, mask), group_sum<G>(sum.z, mask)};
-  const Real degree = active ? Real(m.nbr_off[i + 1] - m.nbr_off[i]) : Real(1);
-  return (Real(1) / degree) * sum;
+  // One call for every lane: the group sums inside shuffle across groups.
+  const index_t begin = active ? m.nbr_off[i] : 0, end = active ? m.nbr_off[i + 1] : 0;
+  return row_centroid_group<Real, G>(m, xyz, begin, end, lane, active, mask);
 }
 
 // The decision on moving node i from p to target; `old_quality` and

@@ -100,8 +100,8 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
     }
   // Every node is evaluated in the first sweep.
   for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) changed[i] = 1;
-  // Nodes of the block's share of a class handed out so far, by the parity
-  // of the step (see below).
+  // Nodes of the block's share of a class handed out so far, one counter for
+  // even colour steps and one for odd (see below).
   __shared__ unsigned taken[2];
   if (threadIdx.x < 2) taken[threadIdx.x] = 0;
   grid.sync();
@@ -124,13 +124,13 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
     colour_start = now;
   };
   stamp_colour(-1);
+  unsigned parity = 0;  // of the colour step, counted over all sweeps
   for (int s = 0; s < max_iterations; ++s) {
     unsigned accepted = 0;
     unsigned evaluated = 0;
     double disp2 = 0;
     for (int col = 0; col < cls.count; ++col) {
       const long long begin = cls.off[col], end = cls.off[col + 1];
-      const int step = s * cls.count + col;
       // The class is cut into shares of a node per group (a warp's worth);
       // block b owns shares b, b + blocks, b + 2 blocks, ..., so every block
       // gets as many and all of them walk the class front to back together
@@ -142,10 +142,10 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // queued the claims; contiguous slices per block lost the lattice its
       // cache.) The next step's counter is cleared now: its last user, the
       // step before this one, is behind the barrier.
-      if (threadIdx.x == 0) taken[(step + 1) & 1] = 0;
+      if (threadIdx.x == 0) taken[parity ^ 1u] = 0;
       for (;;) {
         unsigned local = 0;
-        if ((threadIdx.x & 31) == 0) local = atomicAdd(&taken[step & 1], 1u);
+        if ((threadIdx.x & 31) == 0) local = atomicAdd(&taken[parity], 1u);
         const long long share = blockIdx.x + static_cast<long long>(gridDim.x) * __shfl_sync(0xffffffffu, local, 0);
         const long long start = begin + share * (32 / G);
         if (start >= end) break;  // the same for the whole warp
@@ -192,6 +192,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         if (in_class && lane == 0 && flagged != moves) changed[i] = moves;
         evaluated += active && lane == 0;
       }
+      parity ^= 1u;
       if (col + 1 < cls.count) {
         grid.sync();  // the next colour reads these moves
         stamp_colour(col);

@@ -2,14 +2,12 @@
 // Host side of the coloured loop (coloured_loop_kernel.cuh): picks the lanes
 // per node and starts the one cooperative launch.
 #include <algorithm>
-#include <climits>
 #include <cstddef>
 
 #include "kernels/cuda/coloured_loop_kernel.cuh"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/resident_blocks.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
-#include "mesh/errors.hpp"
 
 namespace tetsmooth::cuda {
 
@@ -45,9 +43,6 @@ void launch_coloured_loop_with(const SweepLoopArgs& a, const SmoothOptions& o, C
 // Starts the coloured loop on `xyz` (in place); returns the lanes per node.
 template <class Real, bool kAdaptive, class Coords>
 int launch_coloured_loop(const SweepLoopArgs& a, const SmoothOptions& o, Coords xyz) {
-  // Steps (sweep * colours + colour) are ints on the device.
-  if (static_cast<long long>(o.max_iterations) * (a.num_colours + 1) > INT_MAX)
-    throw UsageError("max_iterations times the number of colours exceeds the coloured loop's step counter");
   int lanes = o.coloured_lanes;
   if (lanes == 0) {
     constexpr int block = kColouredBlock<Real>;

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "kernels/sweep_log.hpp"
 #include "kernels/cuda/cuda_check.hpp"
@@ -234,9 +237,11 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   a.class_nodes = class_nodes;
   a.class_off = class_off_dev;
   a.num_colours = class_off ? static_cast<int>(class_off->size()) - 1 : 0;
-  if (class_off)
-    for (std::size_t c = 0; c + 1 < class_off->size(); ++c)
-      a.largest_class = std::max(a.largest_class, (*class_off)[c + 1] - (*class_off)[c]);
+  std::vector<std::int64_t> class_sizes;
+  for (int c = 0; c < a.num_colours; ++c) {
+    class_sizes.push_back((*class_off)[c + 1] - (*class_off)[c]);
+    a.largest_class = std::max<index_t>(a.largest_class, static_cast<index_t>(class_sizes.back()));
+  }
   if (o.strategy == Strategy::Coloured) {
     m.tet_quality.resize(m.t);
     m.changed.resize(m.n);
@@ -286,13 +291,11 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
       r.max_displacement_per_sweep.push_back(std::sqrt(bits_to_double(d2[s])) * (is_float ? m.scale : 1.0));
     }
   }
-  if (class_off) {
-    for (int c = 0; c < a.num_colours; ++c) r.colour_sizes.push_back((*class_off)[c + 1] - (*class_off)[c]);
-    if (a.num_colours > 0) {
-      std::vector<unsigned long long> ns(static_cast<std::size_t>(a.num_colours));
-      CUDA_CHECK(cudaMemcpy(ns.data(), m.colour_ns.data(), ns.size() * sizeof(ns[0]), cudaMemcpyDeviceToHost));
-      for (unsigned long long v : ns) r.colour_ms.push_back(static_cast<double>(v) / 1e6);
-    }
+  r.colour_sizes = std::move(class_sizes);
+  if (a.num_colours > 0) {
+    std::vector<unsigned long long> ns(static_cast<std::size_t>(a.num_colours));
+    CUDA_CHECK(cudaMemcpy(ns.data(), m.colour_ns.data(), ns.size() * sizeof(ns[0]), cudaMemcpyDeviceToHost));
+    for (unsigned long long v : ns) r.colour_ms.push_back(static_cast<double>(v) / 1e6);
   }
   m.result_in_buf1 = o.form == Form::A && (r.sweeps & 1);
   return r;

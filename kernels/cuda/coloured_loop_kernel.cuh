@@ -33,8 +33,11 @@
 //    and by a mover in the same step, and movers that flag one neighbour
 //    write the same value. A settled node costs one byte: neither its
 //    neighbour row nor their positions are read.
+// And one that changes no value read: with fewer lanes than a warp, the
+// star's lines are requested before the centroid (star_prefetch.cuh).
 #include <cooperative_groups.h>
 
+#include "kernels/cuda/star_prefetch.cuh"
 #include "kernels/cuda/sweep_kernels.cuh"
 
 namespace tetsmooth::cuda {
@@ -55,17 +58,18 @@ struct ColourClassesView {
 // per SM keeps the grid barrier that ends each colour to one arrival per SM
 // (three blocks of 256 threads give three times as many, and lost 0.16 ms
 // on the 109k model to one block of 768 threads with the same warps). The
-// launch bounds cap the registers: double gets 96 (it wants more: 20-48
-// bytes spill), float 72 (no spill). Smoothing the 109k model on an H100, ms,
-// with nodes dealt to warps in a fixed stride:
+// launch bounds cap the registers: double gets 96 (it wants more: 20-68
+// bytes spill), float 64 (8 and 16 lanes spill 20-28 bytes, and are still
+// faster than with 72). Smoothing the 109k model on an H100, ms, with nodes
+// dealt to warps in a fixed stride:
 //   double: 256 x 2 blocks 3.10, 256 x 3 (80 registers) 2.89, 768 x 1 2.73,
 //           640 x 1 2.71, 896 x 1 (72 registers, 136 bytes spill) 3.03;
 //   float:  256 x 3 1.87, 640 x 1 1.88, 768 x 1 1.74, 896 x 1 1.69;
 // and with the shares taken from a counter (below): double 640 x 1 2.38,
-// 768 x 1 2.41; float 896 x 1 1.49, 1024 x 1 (64 registers) 1.45, whose
-// effect on the lattice was not measured.
+// 768 x 1 2.41; float 896 x 1 1.49, 1024 x 1 1.45. Later, in float, 896 x 1
+// against 1024 x 1: 109k 1.36 against 1.33, lattice-215 445 against 417.
 template <class Real>
-inline constexpr int kColouredBlock = sizeof(Real) == 4 ? 896 : 640;
+inline constexpr int kColouredBlock = sizeof(Real) == 4 ? 1024 : 640;
 
 // A few values in registers, indexed by a run-time round number: the
 // unrolled comparisons keep the array out of local memory.
@@ -113,6 +117,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   const unsigned mask = group_mask<G>();
   const CachedOldQuality<Real> cached{tet_q};
   constexpr int kKept = 32 / G;
+  constexpr int kPrefetchRounds = G < kLatencyLanes ? kKept : 0;
   // Where the time goes, colour by colour: the grid's first thread stamps
   // each barrier. Its last stamp waits in shared memory, not in a register
   // that the whole loop would carry (double is short of them).
@@ -163,7 +168,16 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         // Settled: nothing in the neighbourhood moved since this node's turn
         // in the previous sweep; see the top of the file.
         const bool active = in_class && (flagged || !skip_settled);
+        // With fewer lanes than a warp, a star takes rounds, each waiting on
+        // the memory the last one fetched; the prefetch starts them all now
+        // (star_prefetch.cuh). On an H100, smoothing lattice-215 (8 lanes)
+        // took 372 ms against 417 in float, 900 against 1015 in double; with
+        // a warp per node, one round, 109k in float took 1.40 against 1.33.
+        StarPrefetch<kPrefetchRounds> star;
+        if (kPrefetchRounds > 0)
+          star.read_entries(m, in_class ? m.inc_off[i] : 0, in_class ? m.inc_off[i + 1] : 0, lane, G, active);
         const Vec3<Real> target = row_centroid_group<Real, G>(m, xyz, row_begin, row_end, lane, active, mask);
+        if (kPrefetchRounds > 0) star.fetch(m, kAdaptive ? tet_q : static_cast<const Real*>(nullptr));
         // The lane's new qualities, kept for the cache update: every round
         // up to kKept (a star of up to 32 tets needs no recomputation).
         KeptQualities<Real, kKept> kept;

@@ -31,10 +31,12 @@
 //    neighbours; at its turn a node that does not move clears its flag. Its
 //    neighbours have other colours, so a flag is never written by its owner
 //    and by a mover in the same step, and movers that flag one neighbour
-//    write the same value. A settled node costs one byte: neither its
-//    neighbour row nor their positions are read.
-// And one that changes no value read: with fewer lanes than a warp, the
-// star's lines are requested before the centroid (star_prefetch.cuh).
+//    write the same value. A settled node costs its flag, its position and
+//    the bounds of its neighbour row (and of its star where the star is
+//    prefetched), read beside the flag so that an active node does not wait
+//    on it; neither its row, its star nor their positions are read.
+// And one that changes no value read: with fewer lanes than a warp, an
+// adaptive node's star is requested before the centroid (star_prefetch.cuh).
 #include <cooperative_groups.h>
 
 #include "kernels/cuda/star_prefetch.cuh"
@@ -117,7 +119,8 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   const unsigned mask = group_mask<G>();
   const CachedOldQuality<Real> cached{tet_q};
   constexpr int kKept = 32 / G;
-  constexpr int kPrefetchRounds = G < kLatencyLanes ? kKept : 0;
+  // Ordinary Laplacian reads no star.
+  constexpr int kPrefetchRounds = kAdaptive && G < kLatencyLanes ? kKept : 0;
   // Where the time goes, colour by colour: the grid's first thread stamps
   // each barrier. Its last stamp waits in shared memory, not in a register
   // that the whole loop would carry (double is short of them).
@@ -177,7 +180,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         if (kPrefetchRounds > 0)
           star.read_entries(m, in_class ? m.inc_off[i] : 0, in_class ? m.inc_off[i + 1] : 0, lane, G, active);
         const Vec3<Real> target = row_centroid_group<Real, G>(m, xyz, row_begin, row_end, lane, active, mask);
-        if (kPrefetchRounds > 0) star.fetch(m, kAdaptive ? tet_q : static_cast<const Real*>(nullptr));
+        if (kPrefetchRounds > 0) star.fetch(m, tet_q);
         // The lane's new qualities, kept for the cache update: every round
         // up to kKept (a star of up to 32 tets needs no recomputation).
         KeptQualities<Real, kKept> kept;

@@ -1,7 +1,8 @@
 #pragma once
 // Starts the fetches of a node's star (its incident tets' corner indices and
-// cached qualities) into the SM's L1 before the centroid is summed, so that
-// the adaptive test finds them there instead of waiting on each in turn.
+// their qualities in a per-tet cache) into the SM's L1 before the centroid
+// is summed, so that the adaptive test finds them there instead of waiting
+// on each in turn.
 //
 // Why: with a few lanes per node (coloured_loop_kernel.cuh), a lane walks
 // its share of a ~24-tet star in rounds, and every round waited on the
@@ -30,8 +31,8 @@ template <int R>
 struct StarPrefetch {
   index_t tet[R > 0 ? R : 1];
 
-  // Reads the entries (nothing for an inactive node: a settled node's star
-  // is never read).
+  // Reads the entries (none for an inactive node: a settled node's star is
+  // not read).
   __device__ __forceinline__ void read_entries(const MeshView& m, index_t begin, index_t end, int lane, int stride,
                                                bool active) {
 #pragma unroll
@@ -41,15 +42,15 @@ struct StarPrefetch {
     }
   }
 
-  // Requests each entry's corner indices and, where there is a per-tet cache
-  // (`tet_q`, or null), its cached quality.
+  // Requests each entry's corner indices and its quality in the per-tet
+  // cache `tet_q`.
   template <class Real>
   __device__ __forceinline__ void fetch(const MeshView& m, const Real* tet_q) const {
 #pragma unroll
     for (int r = 0; r < R; ++r)
       if (tet[r] >= 0) {
         prefetch_l1(m.tets + 4 * static_cast<long long>(tet[r]));
-        if (tet_q != nullptr) prefetch_l1(tet_q + tet[r]);
+        prefetch_l1(tet_q + tet[r]);
       }
   }
 };

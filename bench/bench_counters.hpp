@@ -16,6 +16,7 @@ struct SweepFootprint {
   std::size_t nodes = 0, tets = 0, neighbour_entries = 0, incidence_entries = 0;
   std::size_t real_bytes = 8;  // sizeof(Real) of the coordinates
   double evaluated_share = 1;  // nodes evaluated / (movable nodes x sweeps)
+  bool stars = true;           // false for ordinary Laplacian, which reads no star
 };
 
 // The fewest bytes one sweep must move through device memory: every
@@ -23,9 +24,10 @@ struct SweepFootprint {
 // share of nodes evaluated their neighbour rows and stars (neighbour and
 // incidence CSR with offsets, the tets) read once: a sweep that skips
 // settled nodes (CUDA Coloured) reads neither the row nor the star of a
-// skipped node. Re-reads of neighbour coordinates are not counted: an ideal
-// cache would serve them. Nor are a variant's own helpers (the Coloured tet
-// quality cache and colour classes): the floor is the smoothing's.
+// skipped node, and ordinary Laplacian smoothing reads no star at all.
+// Re-reads of neighbour coordinates are not counted: an ideal cache would
+// serve them. Nor are a variant's own helpers (the Coloured tet quality
+// cache and colour classes): the floor is the smoothing's.
 double bytes_per_sweep(const SweepFootprint& f);
 
 // A run's counters by name: sweeps, accepted, evaluations, phase times,

@@ -56,7 +56,9 @@ void cpu_family(benchmark::State& state, std::string label, SmoothOptions o) {
     r = smooth_cpu(work, o);
     state.SetIterationTime((r.topology_ms + r.colouring_ms + r.smoothing_ms) / 1000.0);
   }
-  set_run_counters(state, r, bm.footprint);
+  SweepFootprint f = bm.footprint;
+  f.stars = o.method == Method::Adaptive;
+  set_run_counters(state, r, f);
   set_quality_counters(state, r.before, r.after);
 }
 
@@ -103,6 +105,7 @@ void gpu_family(benchmark::State& state, std::string label, SmoothOptions o, boo
   SweepFootprint f = bm.footprint;
   f.real_bytes = o.precision == Precision::Float ? 4 : 8;
   f.neighbour_entries = p.neighbour_entries();
+  f.stars = o.method == Method::Adaptive;
   set_run_counters(state, r, f);
   state.counters["launches"] = p.last_times().launches;
   state.counters["host_checks"] = p.last_times().host_checks;
@@ -115,6 +118,14 @@ void gpu_family(benchmark::State& state, std::string label, SmoothOptions o, boo
 }
 
 void register_gpu(const std::string& label, const BenchConfig& c, bool scaling) {
+  const auto add = [&](const std::string& prefix, SmoothOptions o) {
+    o.precision = c.precision;
+    o.coloured_lanes = c.coloured_lanes;
+    const std::string name = prefix + to_string(o.layout) + "/" + to_string(o.strategy) + "/" + label;
+    benchmark::RegisterBenchmark(name.c_str(), gpu_family, label, o, scaling)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+  };
   for (Form form : {Form::A, Form::B})
     for (Layout layout : {Layout::AoS, Layout::SoA})
       for (Strategy strategy : {Strategy::SingleBlock, Strategy::MultiBlock, Strategy::Coloured}) {
@@ -124,14 +135,20 @@ void register_gpu(const std::string& label, const BenchConfig& c, bool scaling) 
         o.form = form;
         o.layout = layout;
         o.strategy = strategy;
-        o.precision = c.precision;
-        o.coloured_lanes = c.coloured_lanes;
-        const std::string name = std::string(form == Form::A ? "FormA/" : "FormB/") + to_string(layout) + "/" +
-                                 to_string(strategy) + "/" + label;
-        benchmark::RegisterBenchmark(name.c_str(), gpu_family, label, o, scaling)
-            ->UseManualTime()
-            ->Unit(benchmark::kMillisecond);
+        add(form == Form::A ? "FormA/" : "FormB/", o);
       }
+  // On the scaling meshes, ordinary Laplacian smoothing (Form B) as well: the
+  // same sweep without the adaptive test, so the share of the time the star
+  // takes shows beside the memory floor.
+  if (scaling)
+    for (Strategy strategy : {Strategy::MultiBlock, Strategy::Coloured}) {
+      SmoothOptions o;
+      o.method = Method::Ordinary;
+      o.form = Form::B;
+      o.layout = Layout::AoS;
+      o.strategy = strategy;
+      add("Ordinary/", o);
+    }
 }
 
 void copy_bandwidth(benchmark::State& state) {

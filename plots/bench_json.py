@@ -34,6 +34,11 @@ MODELS = ("5k", "10k", "59k", "77k", "109k")
 FORMS = ("FormA", "FormB")
 LAYOUTS = ("AoS", "SoA")
 STRATEGIES = ("SingleBlock", "MultiBlock", "Coloured")
+# GPU runs are adaptive smoothing, named Form/Layout/Strategy/mesh; ordinary
+# Laplacian GPU runs (Form B, on the scaling meshes) are named
+# Ordinary/Layout/Strategy/mesh.
+METHODS = ("adaptive", "ordinary")
+ORDINARY_GPU = "Ordinary"
 COPY_BANDWIDTH = "Memory/CopyBandwidth"
 
 TIME_UNIT_TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
@@ -85,14 +90,18 @@ def parse_name(name):
 
     Returns a dict with key "kind" ("gpu", "serial", "threads", "ordinary",
     "copy" or "other") and, where they apply, "form", "layout", "strategy",
-    "mesh" and "lattice_n" (int, for lattice-N meshes).
+    "method" (GPU runs: "adaptive" or "ordinary"), "mesh" and "lattice_n"
+    (int, for lattice-N meshes). "ordinary" as a kind is the serial CPU
+    ordinary run; an ordinary GPU run is of kind "gpu".
     """
     parts = name.split("/")
     info = {"kind": "other", "name": name}
     if name == COPY_BANDWIDTH:
         info["kind"] = "copy"
-    elif len(parts) == 4 and parts[0] in FORMS and parts[1] in LAYOUTS and parts[2] in STRATEGIES:
-        info.update(kind="gpu", form=parts[0], layout=parts[1], strategy=parts[2], mesh=parts[3])
+    elif len(parts) == 4 and parts[0] in FORMS + (ORDINARY_GPU,) and parts[1] in LAYOUTS and parts[2] in STRATEGIES:
+        ordinary = parts[0] == ORDINARY_GPU
+        info.update(kind="gpu", form="FormB" if ordinary else parts[0], layout=parts[1], strategy=parts[2],
+                    method="ordinary" if ordinary else "adaptive", mesh=parts[3])
     elif len(parts) == 3 and parts[0] == "Serial" and parts[1] in FORMS:
         info.update(kind="serial", form=parts[1], mesh=parts[2])
     elif len(parts) == 3 and parts[0] == "Threads" and parts[1] in FORMS:

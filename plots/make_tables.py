@@ -282,8 +282,8 @@ def scaling_row(result, name, copy_bw):
     ms_per_sweep, bytes_per_s = run.counters.get("ms_per_sweep"), run.counters.get("bytes_per_s")
     bytes_per_sweep = bytes_per_s * ms_per_sweep / 1000 if None not in (bytes_per_s, ms_per_sweep) else None
     floor_ms = bytes_per_sweep / copy_bw * 1000 if None not in (bytes_per_sweep, copy_bw) and copy_bw > 0 else None
-    return {"benchmark": name, "form": info["form"], "layout": info["layout"], "strategy": info["strategy"],
-            "mesh": info["mesh"], "lattice_n": info.get("lattice_n"), "nodes": nodes, "tets": tets,
+    return {"benchmark": name, "method": info["method"], "form": info["form"], "layout": info["layout"],
+            "strategy": info["strategy"], "mesh": info["mesh"], "lattice_n": info.get("lattice_n"), "nodes": nodes, "tets": tets,
             "sweeps": run.counters.get("sweeps"), "ms_per_sweep": ms_per_sweep,
             "node_updates_per_s": run.counters.get("node_updates_per_s"), "bytes_per_s": bytes_per_s,
             "bytes_per_sweep": bytes_per_sweep, "copy_bytes_per_s": copy_bw, "floor_ms_per_sweep": floor_ms,
@@ -292,7 +292,8 @@ def scaling_row(result, name, copy_bw):
 
 def scaling_order(name):
     info = bj.parse_name(name)
-    return (info["form"], info["layout"], bj.STRATEGIES.index(info["strategy"]), mesh_order(info["mesh"]))
+    return (bj.METHODS.index(info["method"]), info["form"], info["layout"], bj.STRATEGIES.index(info["strategy"]),
+            mesh_order(info["mesh"]))
 
 
 def scaling_table(result):
@@ -304,8 +305,9 @@ def scaling_table(result):
     notes = ["Bytes per sweep = bytes_per_s x ms_per_sweep (as counted by the benchmark); "
              f"floor = bytes per sweep / measured device copy bandwidth ({copy_text}); "
              "time / floor >= 1, and 1 would be copy speed.",
-             "Paper models first, then lattice-N meshes by size."]
-    keys = ["benchmark", "form", "layout", "strategy", "mesh", "lattice_n", "nodes", "tets", "sweeps",
+             "Adaptive runs first, then ordinary Laplacian ones (Ordinary/..., whose count has no star: "
+             "they read none); within each, paper models first, then lattice-N meshes by size."]
+    keys = ["benchmark", "method", "form", "layout", "strategy", "mesh", "lattice_n", "nodes", "tets", "sweeps",
             "ms_per_sweep", "node_updates_per_s", "bytes_per_s", "bytes_per_sweep", "copy_bytes_per_s",
             "floor_ms_per_sweep", "ratio_to_floor"]
     return Table("Throughput per sweep and the memory floor (GPU runs)", keys, rows, notes)

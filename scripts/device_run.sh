@@ -56,7 +56,7 @@ for step in $steps; do
       # The CPU baselines of the 109k model come along, so the float GPU times
       # have their serial and threaded references in the same run.
       "$b/bench_smooth" --precision=float --models=5k,10k,59k,77k,109k --scaling=lattice-215 \
-        --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|FormB/.*/(Coloured|MultiBlock)/' \
+        --benchmark_filter='Memory|Serial/FormB/109k|Threads/FormB/109k|(FormB|Ordinary)/.*/(Coloured|MultiBlock)/' \
         --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \
         --benchmark_out="$out/bench_float.json" --benchmark_out_format=json 2>&1 | grep -v "^\[" | cut -c1-160 | tail -30
       ;;

@@ -28,6 +28,9 @@ TEST(BenchCounters, BytesPerSweepCountsEachArrayOnce) {
   EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 480 + 10 + 0.5 * (164 + 172));
   f.real_bytes = 4;
   EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 240 + 10 + 0.5 * (164 + 172));
+  // Ordinary Laplacian smoothing reads rows but no star.
+  f.stars = false;
+  EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 240 + 10 + 0.5 * 164);
 }
 
 TEST(BenchCounters, RunValuesOfAColouredRun) {

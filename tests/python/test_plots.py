@@ -88,6 +88,11 @@ class NameTests(unittest.TestCase):
         self.assertEqual(bj.parse_name("FormB/SoA/Coloured/59k")["strategy"], "Coloured")
         self.assertEqual(bj.parse_name("FormA/AoS/MultiBlock/lattice-128")["lattice_n"], 128)
         self.assertEqual(bj.parse_name("Serial/Ordinary/109k")["kind"], "ordinary")
+        self.assertEqual(bj.parse_name("FormA/SoA/SingleBlock/5k")["method"], "adaptive")
+        gpu_ordinary = bj.parse_name("Ordinary/AoS/Coloured/lattice-215")
+        self.assertEqual((gpu_ordinary["kind"], gpu_ordinary["method"], gpu_ordinary["form"]),
+                         ("gpu", "ordinary", "FormB"))
+        self.assertEqual(gpu_ordinary["lattice_n"], 215)
         self.assertEqual(bj.parse_name("Threads/FormA/5k")["kind"], "threads")
         self.assertEqual(bj.parse_name("Memory/CopyBandwidth")["kind"], "copy")
         self.assertEqual(bj.parse_name("FormC/AoS/MultiBlock/5k")["kind"], "other")
@@ -261,6 +266,14 @@ class ReportTests(unittest.TestCase):
         names = list(rows)
         self.assertLess(names.index("FormB/AoS/MultiBlock/109k"), names.index("FormB/AoS/MultiBlock/lattice-16"))
         self.assertLess(names.index("FormB/AoS/MultiBlock/lattice-16"), names.index("FormB/AoS/MultiBlock/lattice-32"))
+        # The ordinary Laplacian run follows the adaptive ones, its own floor beside it.
+        ordinary = rows["Ordinary/AoS/MultiBlock/lattice-32"]
+        self.assertEqual((ordinary["method"], ordinary["form"]), ("ordinary", "FormB"))
+        self.assertEqual(lattice["method"], "adaptive")
+        self.assertEqual(names[-1], "Ordinary/AoS/MultiBlock/lattice-32")
+        raw = raw_entry(self.document, "Ordinary/AoS/MultiBlock/lattice-32/manual_time")
+        floor_ms = raw["bytes_per_s"] * raw["ms_per_sweep"] / copy_bw
+        self.assertAlmostEqual(float(ordinary["ratio_to_floor"]), raw["ms_per_sweep"] / floor_ms, places=4)
 
     def test_colour_table(self):
         rows = read_csv(os.path.join(self.out, "colours.csv"))

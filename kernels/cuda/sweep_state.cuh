@@ -46,17 +46,49 @@ __device__ __forceinline__ void record_verdict(SweepState* st, int s, SweepVerdi
   st->done = v != SweepVerdict::Continue;
 }
 
-// Warp-aggregated accumulation of one sweep's accepted moves and largest
-// squared displacement. Every lane of the warp must call it.
-__device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
+// One sweep's accepted moves and largest squared displacement, summed and
+// maxed over the warp into lane 0. Every lane of the warp must call it.
+__device__ __forceinline__ void warp_sweep_stats(unsigned& accepted, double& disp2) {
   for (int offset = 16; offset > 0; offset >>= 1) {
     accepted += __shfl_down_sync(0xffffffffu, accepted, offset);
     disp2 = fmax(disp2, __shfl_down_sync(0xffffffffu, disp2, offset));
   }
-  if ((threadIdx.x & 31) == 0 && accepted) {
-    atomicAdd(&c.accepted[sweep], static_cast<unsigned long long>(accepted));
-    atomicMax(&c.max_disp2_bits[sweep], static_cast<unsigned long long>(__double_as_longlong(disp2)));
+}
+
+__device__ __forceinline__ void post_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
+  if (accepted == 0) return;
+  atomicAdd(&c.accepted[sweep], static_cast<unsigned long long>(accepted));
+  atomicMax(&c.max_disp2_bits[sweep], static_cast<unsigned long long>(__double_as_longlong(disp2)));
+}
+
+// Warp-aggregated accumulation of one sweep's counters, for a kernel whose
+// warps reach this point once per sweep (the coloured loop). Every lane of
+// the warp must call it.
+__device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
+  warp_sweep_stats(accepted, disp2);
+  if ((threadIdx.x & 31) == 0) post_sweep_stats(c, sweep, accepted, disp2);
+}
+
+// The same aggregated over the block, for kernels with a thread (or a few)
+// per node, whose warps would otherwise all update the sweep's two counters:
+// 2.5 million warps per MultiBlock sweep of a 10M-node mesh, all at the same
+// two addresses. Every thread of the block must call it.
+__device__ __forceinline__ void add_sweep_stats_block(const SweepCounters& c, int sweep, unsigned accepted,
+                                                      double disp2) {
+  __shared__ unsigned warp_accepted[32];
+  __shared__ double warp_disp2[32];
+  const unsigned lane = threadIdx.x & 31u, warp = threadIdx.x / 32u, warps = (blockDim.x + 31u) / 32u;
+  warp_sweep_stats(accepted, disp2);
+  if (lane == 0) {
+    warp_accepted[warp] = accepted;
+    warp_disp2[warp] = disp2;
   }
+  __syncthreads();
+  if (warp != 0) return;
+  accepted = lane < warps ? warp_accepted[lane] : 0u;
+  disp2 = lane < warps ? warp_disp2[lane] : 0.0;
+  warp_sweep_stats(accepted, disp2);
+  if (lane == 0) post_sweep_stats(c, sweep, accepted, disp2);
 }
 
 }  // namespace tetsmooth::cuda

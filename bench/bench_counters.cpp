@@ -10,8 +10,9 @@ double bytes_per_sweep(const SweepFootprint& f) {
   const double coords = 2.0 * 3.0 * static_cast<double>(f.nodes) * static_cast<double>(f.real_bytes);
   const double neighbours = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.neighbour_entries);
   const double flags = static_cast<double>(f.nodes);
-  const double stars = !f.stars ? 0.0 : 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
-                       16.0 * static_cast<double>(f.tets);
+  const double star_bytes = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
+                            16.0 * static_cast<double>(f.tets);
+  const double stars = f.stars ? star_bytes : 0.0;
   return coords + flags + f.evaluated_share * (neighbours + stars);
 }
 

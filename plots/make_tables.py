@@ -283,7 +283,8 @@ def scaling_row(result, name, copy_bw):
     bytes_per_sweep = bytes_per_s * ms_per_sweep / 1000 if None not in (bytes_per_s, ms_per_sweep) else None
     floor_ms = bytes_per_sweep / copy_bw * 1000 if None not in (bytes_per_sweep, copy_bw) and copy_bw > 0 else None
     return {"benchmark": name, "method": info["method"], "form": info["form"], "layout": info["layout"],
-            "strategy": info["strategy"], "mesh": info["mesh"], "lattice_n": info.get("lattice_n"), "nodes": nodes, "tets": tets,
+            "strategy": info["strategy"], "mesh": info["mesh"], "lattice_n": info.get("lattice_n"),
+            "nodes": nodes, "tets": tets,
             "sweeps": run.counters.get("sweeps"), "ms_per_sweep": ms_per_sweep,
             "node_updates_per_s": run.counters.get("node_updates_per_s"), "bytes_per_s": bytes_per_s,
             "bytes_per_sweep": bytes_per_sweep, "copy_bytes_per_s": copy_bw, "floor_ms_per_sweep": floor_ms,

@@ -61,9 +61,9 @@ __device__ __forceinline__ void post_sweep_stats(const SweepCounters& c, int swe
   atomicMax(&c.max_disp2_bits[sweep], static_cast<unsigned long long>(__double_as_longlong(disp2)));
 }
 
-// Warp-aggregated accumulation of one sweep's counters, for a kernel whose
-// warps reach this point once per sweep (the coloured loop). Every lane of
-// the warp must call it.
+// Warp-aggregated accumulation of one sweep's counters: for the coloured
+// loop, whose warps reach this point once per sweep, and adaptive MultiBlock
+// sweeps (see sweep_kernel). Every lane of the warp must call it.
 __device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
   warp_sweep_stats(accepted, disp2);
   if ((threadIdx.x & 31) == 0) post_sweep_stats(c, sweep, accepted, disp2);

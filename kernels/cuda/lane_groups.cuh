@@ -68,22 +68,38 @@ __device__ __forceinline__ void warp_atomic_add(Target* target, T v) {
   if ((threadIdx.x & 31) == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
 }
 
+// Reduces every lane's v with `op` into lane 0, adding (or combining) in
+// the order group_sum does, so a sum has the same bits. Every lane of the
+// warp must call it.
+template <class T, class Op>
+__device__ __forceinline__ T warp_reduce_to_lane0(T v, Op op) {
+  for (int offset = 16; offset > 0; offset >>= 1) v = op(v, __shfl_down_sync(0xffffffffu, v, offset));
+  return v;
+}
+
+// The same over the block, into thread 0; `identity` fills the slots of
+// warps the block lacks. Every thread of the block must call it; blockDim.x
+// is a multiple of 32.
+template <class T, class Op>
+__device__ __forceinline__ T block_reduce_to_thread0(T v, Op op, T identity) {
+  __shared__ T warp_totals[32];
+  const unsigned warp = threadIdx.x / 32, warps = blockDim.x / 32;
+  v = warp_reduce_to_lane0(v, op);
+  if ((threadIdx.x & 31) == 0) warp_totals[warp] = v;
+  __syncthreads();
+  if (warp == 0) v = warp_reduce_to_lane0(threadIdx.x < warps ? warp_totals[threadIdx.x] : identity, op);
+  __syncthreads();  // the next call may write warp_totals again
+  return v;
+}
+
 // Adds every thread's v to *target with one atomic per block (none when the
 // block's total is zero): for sums over many blocks, where one atomic per
 // warp would queue on the one address. Every thread of the block must call
 // it; blockDim.x is a multiple of 32.
 template <class Target, class T>
 __device__ __forceinline__ void block_atomic_add(Target* target, T v) {
-  __shared__ T warp_sums[32];
-  const unsigned warp = threadIdx.x / 32, warps = blockDim.x / 32;
-  v = group_sum<32>(v);
-  if ((threadIdx.x & 31) == 0) warp_sums[warp] = v;
-  __syncthreads();
-  if (warp == 0) {
-    v = group_sum<32>(threadIdx.x < warps ? warp_sums[threadIdx.x] : T(0));
-    if (threadIdx.x == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
-  }
-  __syncthreads();  // the next call may write warp_sums again
+  v = block_reduce_to_thread0(v, [](T a, T b) { return a + b; }, T(0));
+  if (threadIdx.x == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
 }
 
 }  // namespace tetsmooth::cuda

@@ -3,6 +3,8 @@
 // the GPU and the host only looks every few sweeps.
 #include <cuda_runtime.h>
 
+#include "kernels/cuda/lane_groups.cuh"
+
 #include "kernels/node_update.hpp"
 
 namespace tetsmooth::cuda {
@@ -46,14 +48,14 @@ __device__ __forceinline__ void record_verdict(SweepState* st, int s, SweepVerdi
   st->done = v != SweepVerdict::Continue;
 }
 
-// One sweep's accepted moves and largest squared displacement, summed and
-// maxed over the warp into lane 0. Every lane of the warp must call it.
-__device__ __forceinline__ void warp_sweep_stats(unsigned& accepted, double& disp2) {
-  for (int offset = 16; offset > 0; offset >>= 1) {
-    accepted += __shfl_down_sync(0xffffffffu, accepted, offset);
-    disp2 = fmax(disp2, __shfl_down_sync(0xffffffffu, disp2, offset));
-  }
-}
+// Sweep counters: accepted moves add up, the squared displacement keeps its
+// largest (non-negative, so 0 is its identity).
+struct AddAccepted {
+  __device__ unsigned operator()(unsigned a, unsigned b) const { return a + b; }
+};
+struct MaxDisp2 {
+  __device__ double operator()(double a, double b) const { return fmax(a, b); }
+};
 
 __device__ __forceinline__ void post_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
   if (accepted == 0) return;
@@ -65,7 +67,8 @@ __device__ __forceinline__ void post_sweep_stats(const SweepCounters& c, int swe
 // loop, whose warps reach this point once per sweep, and adaptive MultiBlock
 // sweeps (see sweep_kernel). Every lane of the warp must call it.
 __device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
-  warp_sweep_stats(accepted, disp2);
+  accepted = warp_reduce_to_lane0(accepted, AddAccepted{});
+  disp2 = warp_reduce_to_lane0(disp2, MaxDisp2{});
   if ((threadIdx.x & 31) == 0) post_sweep_stats(c, sweep, accepted, disp2);
 }
 
@@ -75,20 +78,9 @@ __device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int swee
 // two addresses. Every thread of the block must call it.
 __device__ __forceinline__ void add_sweep_stats_block(const SweepCounters& c, int sweep, unsigned accepted,
                                                       double disp2) {
-  __shared__ unsigned warp_accepted[32];
-  __shared__ double warp_disp2[32];
-  const unsigned lane = threadIdx.x & 31u, warp = threadIdx.x / 32u, warps = (blockDim.x + 31u) / 32u;
-  warp_sweep_stats(accepted, disp2);
-  if (lane == 0) {
-    warp_accepted[warp] = accepted;
-    warp_disp2[warp] = disp2;
-  }
-  __syncthreads();
-  if (warp != 0) return;
-  accepted = lane < warps ? warp_accepted[lane] : 0u;
-  disp2 = lane < warps ? warp_disp2[lane] : 0.0;
-  warp_sweep_stats(accepted, disp2);
-  if (lane == 0) post_sweep_stats(c, sweep, accepted, disp2);
+  accepted = block_reduce_to_thread0(accepted, AddAccepted{}, 0u);
+  disp2 = block_reduce_to_thread0(disp2, MaxDisp2{}, 0.0);
+  if (threadIdx.x == 0) post_sweep_stats(c, sweep, accepted, disp2);
 }
 
 }  // namespace tetsmooth::cuda

@@ -68,18 +68,27 @@ __device__ __forceinline__ void warp_atomic_add(Target* target, T v) {
   if ((threadIdx.x & 31) == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
 }
 
-// Reduces every lane's v with `op` into lane 0, adding (or combining) in
-// the order group_sum does, so a sum has the same bits. Every lane of the
-// warp must call it.
+// Lane (this + offset)'s v, as __shfl_down_sync over the whole warp, for the
+// types the hardware shuffles; a struct reduced below brings its own
+// overload beside it (found by argument-dependent lookup).
+template <class T>
+__device__ __forceinline__ T shfl_down(T v, int offset) {
+  return __shfl_down_sync(0xffffffffu, v, offset);
+}
+
+// Reduces every lane's v with `op` into lane 0, combining in the order
+// group_sum adds, so a sum has the same bits. Every lane of the warp must
+// call it.
 template <class T, class Op>
 __device__ __forceinline__ T warp_reduce_to_lane0(T v, Op op) {
-  for (int offset = 16; offset > 0; offset >>= 1) v = op(v, __shfl_down_sync(0xffffffffu, v, offset));
+  for (int offset = 16; offset > 0; offset >>= 1) v = op(v, shfl_down(v, offset));
   return v;
 }
 
 // The same over the block, into thread 0; `identity` fills the slots of
 // warps the block lacks. Every thread of the block must call it; blockDim.x
-// is a multiple of 32.
+// is a multiple of 32. A second call with the same T in the same block
+// needs a __syncthreads() before it (the warp totals' slots are reused).
 template <class T, class Op>
 __device__ __forceinline__ T block_reduce_to_thread0(T v, Op op, T identity) {
   __shared__ T warp_totals[32];
@@ -88,7 +97,6 @@ __device__ __forceinline__ T block_reduce_to_thread0(T v, Op op, T identity) {
   if ((threadIdx.x & 31) == 0) warp_totals[warp] = v;
   __syncthreads();
   if (warp == 0) v = warp_reduce_to_lane0(threadIdx.x < warps ? warp_totals[threadIdx.x] : identity, op);
-  __syncthreads();  // the next call may write warp_totals again
   return v;
 }
 
@@ -100,6 +108,7 @@ template <class Target, class T>
 __device__ __forceinline__ void block_atomic_add(Target* target, T v) {
   v = block_reduce_to_thread0(v, [](T a, T b) { return a + b; }, T(0));
   if (threadIdx.x == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
+  __syncthreads();  // the next call may reduce the same T
 }
 
 }  // namespace tetsmooth::cuda

@@ -48,39 +48,47 @@ __device__ __forceinline__ void record_verdict(SweepState* st, int s, SweepVerdi
   st->done = v != SweepVerdict::Continue;
 }
 
-// Sweep counters: accepted moves add up, the squared displacement keeps its
-// largest (non-negative, so 0 is its identity).
-struct AddAccepted {
-  __device__ unsigned operator()(unsigned a, unsigned b) const { return a + b; }
-};
-struct MaxDisp2 {
-  __device__ double operator()(double a, double b) const { return fmax(a, b); }
+// A part of one sweep's counters: accepted moves add up, the squared
+// displacement keeps its largest (non-negative, so 0 is its identity). Both
+// travel together, so one reduction carries them.
+struct SweepStats {
+  unsigned accepted;
+  double disp2;
 };
 
-__device__ __forceinline__ void post_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
-  if (accepted == 0) return;
-  atomicAdd(&c.accepted[sweep], static_cast<unsigned long long>(accepted));
-  atomicMax(&c.max_disp2_bits[sweep], static_cast<unsigned long long>(__double_as_longlong(disp2)));
+__device__ __forceinline__ SweepStats shfl_down(SweepStats s, int offset) {
+  return {__shfl_down_sync(0xffffffffu, s.accepted, offset), __shfl_down_sync(0xffffffffu, s.disp2, offset)};
+}
+
+struct CombineSweepStats {
+  __device__ SweepStats operator()(SweepStats a, SweepStats b) const {
+    return {a.accepted + b.accepted, fmax(a.disp2, b.disp2)};
+  }
+};
+
+__device__ __forceinline__ void post_sweep_stats(const SweepCounters& c, int sweep, SweepStats s) {
+  if (s.accepted == 0) return;
+  atomicAdd(&c.accepted[sweep], static_cast<unsigned long long>(s.accepted));
+  atomicMax(&c.max_disp2_bits[sweep], static_cast<unsigned long long>(__double_as_longlong(s.disp2)));
 }
 
 // Warp-aggregated accumulation of one sweep's counters: for the coloured
 // loop, whose warps reach this point once per sweep, and adaptive MultiBlock
 // sweeps (see sweep_kernel). Every lane of the warp must call it.
 __device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int sweep, unsigned accepted, double disp2) {
-  accepted = warp_reduce_to_lane0(accepted, AddAccepted{});
-  disp2 = warp_reduce_to_lane0(disp2, MaxDisp2{});
-  if ((threadIdx.x & 31) == 0) post_sweep_stats(c, sweep, accepted, disp2);
+  const SweepStats s = warp_reduce_to_lane0(SweepStats{accepted, disp2}, CombineSweepStats{});
+  if ((threadIdx.x & 31) == 0) post_sweep_stats(c, sweep, s);
 }
 
 // The same aggregated over the block, for kernels with a thread (or a few)
 // per node, whose warps would otherwise all update the sweep's two counters:
 // 2.5 million warps per MultiBlock sweep of a 10M-node mesh, all at the same
-// two addresses. Every thread of the block must call it.
+// two addresses. Every thread of the block must call it, once per kernel.
 __device__ __forceinline__ void add_sweep_stats_block(const SweepCounters& c, int sweep, unsigned accepted,
                                                       double disp2) {
-  accepted = block_reduce_to_thread0(accepted, AddAccepted{}, 0u);
-  disp2 = block_reduce_to_thread0(disp2, MaxDisp2{}, 0.0);
-  if (threadIdx.x == 0) post_sweep_stats(c, sweep, accepted, disp2);
+  const SweepStats s =
+      block_reduce_to_thread0(SweepStats{accepted, disp2}, CombineSweepStats{}, SweepStats{0u, 0.0});
+  if (threadIdx.x == 0) post_sweep_stats(c, sweep, s);
 }
 
 }  // namespace tetsmooth::cuda

@@ -42,11 +42,23 @@ struct NodeMove {
 // the parts; the CPU calls them with lane 0 and stride 1.
 
 // Sum of the positions of the neighbours in entries [begin, end) of the
-// neighbour CSR (a node's row, or none), over this lane's share.
-template <class Real, class Coords>
+// neighbour CSR (a node's row, or none), over this lane's share. The lane
+// fetches kChunk of its entries before adding any, so a GPU lane with
+// several entries waits on memory once per chunk rather than once per
+// entry (at the cost of kChunk positions in registers); the additions keep
+// the entries' order, so the sum has the same bits whatever kChunk is.
+template <class Real, int kChunk = 1, class Coords>
 TS_HD Vec3<Real> row_sum(const MeshView& m, const Coords& xyz, index_t begin, index_t end, int lane, int stride) {
   Vec3<Real> s{0, 0, 0};
-  for (index_t k = begin + lane; k < end; k += stride) s = s + xyz.get(m.nbr[k]);
+  for (index_t first = begin + lane; first < end; first += kChunk * stride) {
+    Vec3<Real> v[kChunk]{};  // entries past the row stay unused
+    for (int u = 0; u < kChunk; ++u) {
+      const index_t k = first + u * stride;
+      if (k < end) v[u] = xyz.get(m.nbr[k]);
+    }
+    for (int u = 0; u < kChunk; ++u)
+      if (first + u * stride < end) s = s + v[u];
+  }
   return s;
 }
 

@@ -1,11 +1,13 @@
 // The adaptive test of node_update.hpp (two passes, stopping at the first
 // objecting tet) against the accept rule written out tet by tet, on every
 // movable node of meshes jittered hard enough to hold inverted and
-// near-degenerate tets.
+// near-degenerate tets; and row_sum's chunked fetches against the row added
+// entry by entry.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <ostream>
+#include <vector>
 
 #include "kernels/node_update.hpp"
 #include "mesh/topology.hpp"
@@ -68,6 +70,48 @@ TEST_P(AdaptiveTest, SameDecisionAsTheRuleTetByTet) {
 
 INSTANTIATE_TEST_SUITE_P(Meshes, AdaptiveTest,
                          ::testing::Values(Shake{0.1, 0}, Shake{0.3, 0}, Shake{0.3, 0.6}, Shake{0.3, 1.5}));
+
+// A lane's share of a row, added entry by entry in the row's order.
+template <class Real>
+Vec3<Real> share_entry_by_entry(const MeshView& m, const AosCoords<Real>& xyz, index_t i, int lane, int stride) {
+  Vec3<Real> s{0, 0, 0};
+  for (index_t k = m.nbr_off[i] + lane; k < m.nbr_off[i + 1]; k += stride) s = s + xyz.get(m.nbr[k]);
+  return s;
+}
+
+// Every lane's share, for shares of 1 to 8 lanes and rows longer and
+// shorter than a chunk: a chunk must neither skip nor reorder entries. In
+// float, on jittered positions, a reordered sum rarely keeps its bits.
+template <class Real, int kChunk>
+void expect_chunked_row_sums_match(const TetMesh& mesh, const Topology& topo) {
+  std::vector<Real> xyz_real(mesh.xyz.begin(), mesh.xyz.end());
+  const AosCoords<Real> xyz{xyz_real.data()};
+  const MeshView view{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
+                      topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+  int compared = 0;
+  for (index_t i = 0; i < static_cast<index_t>(mesh.num_nodes()); ++i)
+    for (int stride : {1, 2, 3, 8})
+      for (int lane = 0; lane < stride; ++lane) {
+        const Vec3<Real> want = share_entry_by_entry(view, xyz, i, lane, stride);
+        const Vec3<Real> got =
+            row_sum<Real, kChunk>(view, xyz, view.nbr_off[i], view.nbr_off[i + 1], lane, stride);
+        ASSERT_TRUE(got.x == want.x && got.y == want.y && got.z == want.z)
+            << "node " << i << ", lane " << lane << " of " << stride << ", chunk " << kChunk;
+        ++compared;
+      }
+  EXPECT_EQ(compared, static_cast<int>(mesh.num_nodes()) * (1 + 2 + 3 + 8));
+}
+
+TEST(RowSum, ChunkedFetchesKeepTheSumsBits) {
+  TetMesh mesh = testing::cube_grid(4, 0.3, 5);
+  for (double& x : mesh.xyz) x = x * 1.37 + 0.011;  // fractions that round
+  const Topology topo = build_topology(mesh);
+  expect_chunked_row_sums_match<float, 1>(mesh, topo);
+  expect_chunked_row_sums_match<float, 3>(mesh, topo);
+  expect_chunked_row_sums_match<float, 8>(mesh, topo);
+  expect_chunked_row_sums_match<double, 2>(mesh, topo);
+  expect_chunked_row_sums_match<double, 8>(mesh, topo);
+}
 
 }  // namespace
 }  // namespace tetsmooth

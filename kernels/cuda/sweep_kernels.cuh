@@ -22,9 +22,25 @@ namespace tetsmooth::cuda {
 
 inline constexpr int kSingleBlockThreads = 1024;
 
-// Threads that share one node in MultiBlock sweeps: each node's ~25
-// incident tets would otherwise run one after another on one thread.
-inline constexpr int kLanesPerNode = 8;
+// How a MultiBlock sweep shares a node among threads: `lanes` threads per
+// node, each fetching `chunk` of its neighbours' positions at a time
+// (row_sum in node_update.hpp).
+//   Adaptive: 8 lanes, so that a node's ~25 incident tets do not run one
+//   after another on one thread; chunks of 2 take 1.5-2% off (H100,
+//   lattice-215, 100 sweeps: 546 against 558 ms in float, 868 against 882
+//   in double).
+//   Ordinary: the centroid is the whole job, and a sweep waits on memory:
+//   offsets, then neighbour indices, then positions, once per fetch. One
+//   thread per node fetching 8 at a time takes 0.38 ms a sweep in float and
+//   0.59 in double (H100, lattice-215), against 0.97 and 1.49 with 8 lanes
+//   fetching one at a time; 2 lanes x 4 gave 0.41 and 0.57, 2 x 8 0.46 and
+//   0.74 (more registers), 1 x 16 0.45 and 0.67, 4 x 4 0.63 and 0.98.
+struct NodeShape {
+  int lanes;
+  int chunk;
+};
+template <bool kAdaptive>
+inline constexpr NodeShape kMultiBlockShape = kAdaptive ? NodeShape{8, 2} : NodeShape{1, 8};
 
 // Applies an evaluated move; returns whether the node moved.
 template <class Real, Form F, class Coords>
@@ -56,24 +72,24 @@ __device__ __forceinline__ bool smooth_node(const MeshView& m, const Coords& rea
 
 // The centroid of the neighbours in row [begin, end) of the neighbour CSR,
 // for a caller that has the row's bounds already.
-template <class Real, int G, class Coords>
+template <class Real, int G, int kChunk = 1, class Coords>
 __device__ __forceinline__ Vec3<Real> row_centroid_group(const MeshView& m, const Coords& xyz, index_t begin,
                                                          index_t end, int lane, bool active,
                                                          unsigned mask = 0xffffffffu) {
   Vec3<Real> sum{0, 0, 0};
-  if (active) sum = row_sum<Real>(m, xyz, begin, end, lane, G);
+  if (active) sum = row_sum<Real, kChunk>(m, xyz, begin, end, lane, G);
   sum = Vec3<Real>{group_sum<G>(sum.x, mask), group_sum<G>(sum.y, mask), group_sum<G>(sum.z, mask)};
   const Real degree = active ? Real(end - begin) : Real(1);
   return (Real(1) / degree) * sum;
 }
 
 // The centroid of node i's neighbours.
-template <class Real, int G, class Coords>
+template <class Real, int G, int kChunk = 1, class Coords>
 __device__ __forceinline__ Vec3<Real> centroid_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
                                                      bool active, unsigned mask = 0xffffffffu) {
   // One call for every lane: the group sums inside shuffle across groups.
   const index_t begin = active ? m.nbr_off[i] : 0, end = active ? m.nbr_off[i + 1] : 0;
-  return row_centroid_group<Real, G>(m, xyz, begin, end, lane, active, mask);
+  return row_centroid_group<Real, G, kChunk>(m, xyz, begin, end, lane, active, mask);
 }
 
 // The decision on moving node i from p to target; `old_quality` and
@@ -97,26 +113,28 @@ __device__ __forceinline__ NodeMove<Real> judge_move_group(const MeshView& m, co
   return decide_move<Real, true>(p, target, old_min, improves);
 }
 
-template <class Real, bool kAdaptive, int G, class Coords>
+template <class Real, bool kAdaptive, int G, int kChunk, class Coords>
 __device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
                                                               bool active) {
   const Vec3<Real> p = active ? xyz.get(i) : Vec3<Real>{0, 0, 0};
-  const Vec3<Real> target = centroid_group<Real, G>(m, xyz, i, lane, active);
+  const Vec3<Real> target = centroid_group<Real, G, kChunk>(m, xyz, i, lane, active);
   return judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active);
 }
 
-// One MultiBlock sweep over all N nodes, kLanesPerNode threads per node.
+// One MultiBlock sweep over all N nodes, kMultiBlockShape's lanes per node.
 // Form A leaves the counting to count_moves_kernel, after the repair.
 template <class Real, bool kAdaptive, Form F, class Coords>
 __global__ void sweep_kernel(MeshView m, Coords read, Coords write, index_t n, const std::uint8_t* movable,
                              Real* old_min, std::uint8_t* moved, SweepState* st, SweepCounters c) {
   if (st->done) return;
-  constexpr int G = kLanesPerNode;
+  constexpr NodeShape shape = kMultiBlockShape<kAdaptive>;
+  constexpr int G = shape.lanes;
   const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   const index_t i = static_cast<index_t>(gid / G);
   const int lane = static_cast<int>(gid % G);
   const bool active = i < n && movable[i];
-  const NodeMove<Real> mv = evaluate_node_group<Real, kAdaptive, G>(m, read, active ? i : 0, lane, active);
+  const NodeMove<Real> mv =
+      evaluate_node_group<Real, kAdaptive, G, shape.chunk>(m, read, active ? i : 0, lane, active);
   unsigned accepted = 0;
   double disp2 = 0;
   if (active && lane == 0) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);

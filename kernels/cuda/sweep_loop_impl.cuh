@@ -17,9 +17,11 @@ namespace detail {
 
 constexpr int kBlock = 256;
 inline unsigned blocks_for(index_t count) { return static_cast<unsigned>((count + kBlock - 1) / kBlock); }
-// Blocks for one thread group of kLanesPerNode per node.
-inline unsigned node_blocks_for(index_t nodes) {
-  return static_cast<unsigned>((static_cast<std::size_t>(nodes) * kLanesPerNode + kBlock - 1) / kBlock);
+// Blocks for one thread group per node (kMultiBlockShape).
+template <bool kAdaptive>
+unsigned node_blocks_for(index_t nodes) {
+  const std::size_t threads = static_cast<std::size_t>(nodes) * kMultiBlockShape<kAdaptive>.lanes;
+  return static_cast<unsigned>((threads + kBlock - 1) / kBlock);
 }
 
 template <class Real, Layout L>
@@ -80,10 +82,10 @@ class SweepLauncher {
   void launch_sweep(int s) {
     const Coords& read = (F == Form::A && (s & 1)) ? c1_ : c0_;
     const Coords& write = (F == Form::A && (s & 1)) ? c0_ : c1_;
-    sweep_kernel<Real, kAdaptive, F><<<node_blocks_for(a_.n), kBlock, 0, a_.stream>>>(
+    sweep_kernel<Real, kAdaptive, F><<<node_blocks_for<kAdaptive>(a_.n), kBlock, 0, a_.stream>>>(
         a_.view, read, write, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
     launched();
-    stats_.lanes_per_node = kLanesPerNode;
+    stats_.lanes_per_node = kMultiBlockShape<kAdaptive>.lanes;
     if (F == Form::A) {
       for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
         repair_check_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(

@@ -140,9 +140,10 @@ __global__ void sweep_kernel(MeshView m, Coords read, Coords write, index_t n, c
   if (active && lane == 0) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);
   // Ordinary smoothing's short nodes leave the sweep's counters as the
   // bottleneck unless a block posts them once (on an H100, lattice-215
-  // MultiBlock: 0.98 ms a sweep against 2.35 in float, 1.48 against 2.48 in
-  // double); the adaptive test's uneven nodes would wait at the block's
-  // barrier instead (574.7 ms against 557.9 for 100 sweeps in float).
+  // MultiBlock, when it still ran 8 lanes per node: 0.98 ms a sweep against
+  // 2.35 in float, 1.48 against 2.48 in double); the adaptive test's uneven
+  // nodes would wait at the block's barrier instead (574.7 ms against 557.9
+  // for 100 sweeps in float).
   if constexpr (F == Form::B) {
     if constexpr (kAdaptive)
       add_sweep_stats(c, st->sweep, accepted, disp2);

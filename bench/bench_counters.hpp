@@ -26,8 +26,8 @@ struct SweepFootprint {
 // settled nodes (CUDA Coloured) reads neither the row nor the star of a
 // skipped node, and ordinary Laplacian smoothing reads no star at all.
 // Re-reads of neighbour coordinates are not counted: an ideal cache would
-// serve them. Nor are a variant's own helpers (the Coloured tet quality
-// cache and colour classes): the floor is the smoothing's.
+// serve them. Nor are a variant's own helpers (the tet quality cache of
+// MultiBlock and Coloured, the colour classes): the floor is the smoothing's.
 double bytes_per_sweep(const SweepFootprint& f);
 
 // A run's counters by name: sweeps, accepted, evaluations, phase times,

@@ -72,19 +72,20 @@ for step in $steps; do
       ;;
     profile-lattice)
       # Where a lattice-215 sweep's time goes, in float: Nsight Compute on the
-      # whole 100-sweep coloured loop and on one mid-run MultiBlock sweep
-      # (DRAM traffic, cache hit rates, instructions, warp stalls). The
-      # lattice is generated once and cached on disk for the second run.
+      # whole 100-sweep coloured loop and on one mid-run MultiBlock sweep, its
+      # tet quality pass and its node pass (DRAM traffic, cache hit rates,
+      # instructions, warp stalls). The lattice is generated once and cached
+      # on disk for the second run.
       ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
-      for pick in "Coloured coloured_loop_kernel 0" "MultiBlock sweep_kernel 50"; do
+      for pick in "Coloured coloured_loop_kernel 0 1" "MultiBlock tet_quality_kernel|sweep_kernel 100 2"; do
         set -- $pick
-        timeout 420 "$ncu" --clock-control none --kernel-name "regex:$2" --launch-skip "$3" --launch-count 1 \
+        timeout 420 "$ncu" --clock-control none --kernel-name "regex:$2" --launch-skip "$3" --launch-count "$4" \
           --section SpeedOfLight --section MemoryWorkloadAnalysis --section WarpStateStats --section Occupancy \
           --metrics dram__bytes_read.sum,dram__bytes_write.sum,lts__t_sector_hit_rate.pct,smsp__inst_executed.sum \
           "$b/bench_smooth" --no-cpu --precision=float --scaling=lattice-215 \
           --benchmark_filter="^FormB/AoS/$1/lattice" --benchmark_min_time=0.01 > "$out/ncu_lattice_$1.txt" 2>&1
         echo "ncu $1 exit $?"
-        grep -E "dram__bytes|lts__t_sector_hit|inst_executed|Duration|DRAM Throughput|Memory Throughput|L2 Hit|L1/TEX Hit|Achieved Occupancy|Issue Slots|Stall" "$out/ncu_lattice_$1.txt" | head -30
+        grep -E "^  [a-z].*\(|dram__bytes|lts__t_sector_hit|inst_executed|Duration|DRAM Throughput|Memory Throughput|L2 Hit|L1/TEX Hit|Achieved Occupancy|Issue Slots|Stall" "$out/ncu_lattice_$1.txt" | cut -c1-140 | head -40
       done
       ;;
     study)

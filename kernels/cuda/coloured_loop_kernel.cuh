@@ -105,10 +105,8 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   cg::grid_group grid = cg::this_grid();
   const unsigned long long tid = grid.thread_rank(), threads = grid.size();
   if (kAdaptive)
-    for (unsigned long long t = tid; t < static_cast<unsigned long long>(num_tets); t += threads) {
-      const index_t* tet = m.tets + 4 * t;
-      tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
-    }
+    for (unsigned long long t = tid; t < static_cast<unsigned long long>(num_tets); t += threads)
+      store_tet_quality(m.tets, t, xyz, tet_q);
   // Every node is evaluated in the first sweep.
   for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) changed[i] = 1;
   // Nodes of the block's share of a class handed out so far, one counter for

@@ -51,8 +51,9 @@ struct GpuPipeline::Impl {
   DeviceBuffer<double> input;           // 3n, AoS, mesh units
   DeviceBuffer<double> buf0, buf1;      // working coordinates (3n Real)
   DeviceBuffer<double> old_min;         // n Real
-  // Coloured only, allocated by its first run: 8 B per tet and 1 B per node
-  // (0.5 GB for the 60M-tet lattice).
+  // Allocated by the first run that needs them: tet qualities for MultiBlock
+  // and Coloured (8 B per tet, 0.5 GB for the 60M-tet lattice), the changed
+  // flags for Coloured (1 B per node).
   DeviceBuffer<double> tet_quality;     // t Real
   DeviceBuffer<std::uint8_t> changed;   // n
   DeviceBuffer<std::uint8_t> moved, revert;
@@ -242,10 +243,12 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
     class_sizes.push_back((*class_off)[c + 1] - (*class_off)[c]);
     a.largest_class = std::max<index_t>(a.largest_class, static_cast<index_t>(class_sizes.back()));
   }
-  if (o.strategy == Strategy::Coloured) {
+  if (o.method == Method::Adaptive && o.strategy != Strategy::SingleBlock) {
     m.tet_quality.resize(m.t);
-    m.changed.resize(m.n);
     a.tet_quality = m.tet_quality.data();
+  }
+  if (o.strategy == Strategy::Coloured) {
+    m.changed.resize(m.n);
     a.changed = m.changed.data();
     m.colour_ns.resize(static_cast<std::size_t>(std::max(a.num_colours, 1)));
     CUDA_CHECK(cudaMemsetAsync(m.colour_ns.data(), 0, m.colour_ns.bytes(), m.stream));

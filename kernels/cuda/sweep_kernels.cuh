@@ -25,10 +25,15 @@ inline constexpr int kSingleBlockThreads = 1024;
 // How a MultiBlock sweep shares a node among threads: `lanes` threads per
 // node, each fetching `chunk` of its neighbours' positions at a time
 // (row_sum in node_update.hpp).
-//   Adaptive: 8 lanes, so that a node's ~25 incident tets do not run one
-//   after another on one thread; chunks of 2 take 1.5-2% off (H100,
-//   lattice-215, 100 sweeps: 546 against 558 ms in float, 868 against 882
-//   in double).
+//   Adaptive: 4 lanes fetching 4 at a time, so that a node's ~25 incident
+//   tets do not run one after another on one thread, and a rejected node's
+//   lanes stop after a few of them (star_improves). With the old qualities
+//   read from tet_q, 100 sweeps of lattice-215 on an H100 took, in ms,
+//   float / double: 8 lanes x 2 375 / 781, 4 x 4 324 / 646. Requesting
+//   each star's tets and qualities ahead (star_prefetch.cuh) gave 4 x 4
+//   329 / 622, 4 x 2 331 / 623, 2 x 8 334 / 622, 1 x 8 414 / 713, but cost
+//   the 109k model (4 x 4: 2.25 / 2.76 ms against 1.78 / 2.19), whose
+//   stars sit in L2 anyway.
 //   Ordinary: the centroid is the whole job, and a sweep waits on memory:
 //   offsets, then neighbour indices, then positions, once per fetch. One
 //   thread per node fetching 8 at a time takes 0.38 ms a sweep in float and
@@ -40,7 +45,7 @@ struct NodeShape {
   int chunk;
 };
 template <bool kAdaptive>
-inline constexpr NodeShape kMultiBlockShape = kAdaptive ? NodeShape{8, 2} : NodeShape{1, 8};
+inline constexpr NodeShape kMultiBlockShape = kAdaptive ? NodeShape{4, 4} : NodeShape{1, 8};
 
 // Applies an evaluated move; returns whether the node moved.
 template <class Real, Form F, class Coords>
@@ -113,19 +118,45 @@ __device__ __forceinline__ NodeMove<Real> judge_move_group(const MeshView& m, co
   return decide_move<Real, true>(p, target, old_min, improves);
 }
 
+// A MultiBlock node, start to finish, its old qualities read from tet_q.
 template <class Real, bool kAdaptive, int G, int kChunk, class Coords>
-__device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, index_t i, int lane,
-                                                              bool active) {
+__device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, const Real* tet_q,
+                                                              index_t i, int lane, bool active) {
   const Vec3<Real> p = active ? xyz.get(i) : Vec3<Real>{0, 0, 0};
   const Vec3<Real> target = centroid_group<Real, G, kChunk>(m, xyz, i, lane, active);
-  return judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active);
+  return judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active, CachedOldQuality<Real>{tet_q});
+}
+
+// Tet t's radius ratio where its corners stand now, into tet_q[t] (the
+// cache that CachedOldQuality reads).
+template <class Real, class Coords>
+__device__ __forceinline__ void store_tet_quality(const index_t* tets, std::size_t t, const Coords& xyz, Real* tet_q) {
+  const index_t* tet = tets + 4 * t;
+  tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
+}
+
+// Opens an adaptive MultiBlock sweep: every tet's quality before the sweep
+// moves anything. Each tet is computed here once instead of once by each of
+// its four corners, and the old half of the accept test becomes a read.
+template <class Real, class Coords>
+__global__ void tet_quality_kernel(const index_t* tets, index_t num_tets, Coords xyz, Real* tet_q,
+                                   const SweepState* st) {
+  if (st->done) return;
+  const std::size_t t = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (t < static_cast<std::size_t>(num_tets)) store_tet_quality(tets, t, xyz, tet_q);
 }
 
 // One MultiBlock sweep over all N nodes, kMultiBlockShape's lanes per node.
+// Adaptive smoothing takes a star's old minimum from tet_q, filled by
+// tet_quality_kernel as the sweep began: the paper's test against the
+// minimum "calculated in the previous iteration" (its section 3.4). For
+// Form A that is exactly the quality at the positions read; in place (Form
+// B) neighbours may have moved since, one more way in which the paper's
+// in-place sweep reads a half-updated mesh.
 // Form A leaves the counting to count_moves_kernel, after the repair.
 template <class Real, bool kAdaptive, Form F, class Coords>
 __global__ void sweep_kernel(MeshView m, Coords read, Coords write, index_t n, const std::uint8_t* movable,
-                             Real* old_min, std::uint8_t* moved, SweepState* st, SweepCounters c) {
+                             const Real* tet_q, Real* old_min, std::uint8_t* moved, SweepState* st, SweepCounters c) {
   if (st->done) return;
   constexpr NodeShape shape = kMultiBlockShape<kAdaptive>;
   constexpr int G = shape.lanes;
@@ -134,7 +165,7 @@ __global__ void sweep_kernel(MeshView m, Coords read, Coords write, index_t n, c
   const int lane = static_cast<int>(gid % G);
   const bool active = i < n && movable[i];
   const NodeMove<Real> mv =
-      evaluate_node_group<Real, kAdaptive, G, shape.chunk>(m, read, active ? i : 0, lane, active);
+      evaluate_node_group<Real, kAdaptive, G, shape.chunk>(m, read, tet_q, active ? i : 0, lane, active);
   unsigned accepted = 0;
   double disp2 = 0;
   if (active && lane == 0) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);

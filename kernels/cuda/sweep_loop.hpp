@@ -27,7 +27,7 @@ struct SweepLoopArgs {
   const index_t* class_off = nullptr;  // device, num_colours + 1
   int num_colours = 0;
   index_t largest_class = 0;
-  void* tet_quality = nullptr;  // Coloured: num_tets Real
+  void* tet_quality = nullptr;  // MultiBlock and Coloured: num_tets Real
   std::uint8_t* changed = nullptr;  // Coloured: n (coloured_loop_kernel.cuh)
   cudaStream_t stream = nullptr;
 };

@@ -82,8 +82,14 @@ class SweepLauncher {
   void launch_sweep(int s) {
     const Coords& read = (F == Form::A && (s & 1)) ? c1_ : c0_;
     const Coords& write = (F == Form::A && (s & 1)) ? c0_ : c1_;
+    Real* tet_q = static_cast<Real*>(a_.tet_quality);
+    if (kAdaptive) {
+      tet_quality_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(a_.view.tets, a_.num_tets, read, tet_q,
+                                                                           a_.state);
+      launched();
+    }
     sweep_kernel<Real, kAdaptive, F><<<node_blocks_for<kAdaptive>(a_.n), kBlock, 0, a_.stream>>>(
-        a_.view, read, write, a_.n, a_.movable, old_min(), a_.moved, a_.state, a_.counters);
+        a_.view, read, write, a_.n, a_.movable, tet_q, old_min(), a_.moved, a_.state, a_.counters);
     launched();
     stats_.lanes_per_node = kMultiBlockShape<kAdaptive>.lanes;
     if (F == Form::A) {

@@ -289,7 +289,9 @@ class BenchResult:
             f"CPU: {cpu_line}",
             f"git SHA: {self.context_text('git_sha', 'unknown')}",
             f"date: {self.context_text('date', 'unknown')}",
-            f"library build: {self.context_text('library_build_type', 'unknown')}",
+            # Google Benchmark's own build as its library reports it (Debian's
+            # package says "debug"), not tetsmooth's, which is a Release build.
+            f"Google Benchmark library build: {self.context_text('library_build_type', 'unknown')}",
         ]
         if copy:
             lines.append(f"measured device copy bandwidth: {copy / 1e9:.1f} GB/s (Memory/CopyBandwidth)")

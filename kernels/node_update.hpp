@@ -68,13 +68,28 @@ TS_HD Vec3<Real> neighbour_sum(const MeshView& m, const Coords& xyz, index_t i, 
   return row_sum<Real>(m, xyz, m.nbr_off[i], m.nbr_off[i + 1], lane, stride);
 }
 
+// The node indices of tet t (`tets` holds four per tet). On the device, one
+// 16-byte load: device buffers come from cudaMalloc, so every tet's four are
+// aligned, and a warp's gather of tets costs L1 one sector per lane instead
+// of four.
+struct TetNodes {
+  index_t v[4];
+};
+TS_HD TetNodes tet_nodes(const index_t* tets, std::size_t t) {
+#ifdef __CUDA_ARCH__
+  const int4 q = __ldg(reinterpret_cast<const int4*>(tets) + t);
+  return {{q.x, q.y, q.z, q.w}};
+#else
+  const index_t* p = tets + 4 * t;
+  return {{p[0], p[1], p[2], p[3]}};
+#endif
+}
+
 // The four corners of tet t, with node i replaced by `at`.
 template <class Real, class Coords>
 TS_HD void tet_corners(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> at, Vec3<Real> (&v)[4]) {
-  for (int k = 0; k < 4; ++k) {
-    const index_t n = m.tets[4 * t + k];
-    v[k] = n == i ? at : xyz.get(n);
-  }
+  const TetNodes tet = tet_nodes(m.tets, static_cast<std::size_t>(t));
+  for (int k = 0; k < 4; ++k) v[k] = tet.v[k] == i ? at : xyz.get(tet.v[k]);
 }
 
 // The tet-level part of the accept rule, shared with the Form A conflict check.
@@ -120,14 +135,29 @@ struct CachedOldQuality {
 // the remaining tets need not be computed. A tet whose new quality beats
 // the minimum and is positive keeps its validity whatever its old quality,
 // so the old quality is looked at again only for a new q <= 0 (rare).
-template <class Real, class Coords, class OldQuality = FreshOldQuality>
+// `at`, where given, receives the incidence entry of the minimum (that of
+// the lane's first entry when the lane has none below 2). The lane takes
+// kChunk of its entries' qualities before comparing any, as row_sum fetches
+// positions; the comparisons keep the entries' order.
+template <class Real, int kChunk = 1, class Coords, class OldQuality = FreshOldQuality>
 TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, int lane, int stride,
-                        const OldQuality& old_quality = {}) {
+                        const OldQuality& old_quality = {}, index_t* at = nullptr) {
   Real q_min = Real(2);
-  for (index_t k = m.inc_off[i] + lane; k < m.inc_off[i + 1]; k += stride) {
-    const Real q = old_quality(m, xyz, m.inc[k], i, p);
-    q_min = q < q_min || q != q ? q : q_min;  // a NaN stays, and rejects the move as it did tet by tet
+  const index_t begin = m.inc_off[i] + lane, end = m.inc_off[i + 1];
+  index_t k_min = begin;
+  for (index_t first = begin; first < end; first += kChunk * stride) {
+    Real q[kChunk];
+    for (int u = 0; u < kChunk; ++u) {
+      const index_t k = first + u * stride;
+      q[u] = k < end ? old_quality(m, xyz, m.inc[k], i, p) : Real(2);
+    }
+    for (int u = 0; u < kChunk; ++u)
+      if (q[u] < q_min || q[u] != q[u]) {  // a NaN stays, and rejects the move as it did tet by tet
+        q_min = q[u];
+        k_min = first + u * stride;
+      }
   }
+  if (at) *at = k_min;
   return q_min;
 }
 
@@ -141,6 +171,16 @@ struct IgnoreNewQuality {
 struct SoleLane {
   TS_HD bool operator()(bool objects) const { return objects; }
 };
+
+// Whether tet t, incident to node i, objects to i moving from p to target
+// (the second pass's test, tet by tet); q_new receives t's quality with i at
+// the target. Written so that a NaN objects.
+template <class Real, class Coords, class OldQuality = FreshOldQuality>
+TS_HD bool tet_objects(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> p, Vec3<Real> target,
+                       Real old_min, const OldQuality& old_quality, Real& q_new) {
+  q_new = tet_quality_with(m, xyz, t, i, target);
+  return !(q_new > old_min) || (!(q_new > Real(0)) && !keeps_validity(old_quality(m, xyz, t, i, p), q_new));
+}
 
 // The second pass. Lanes take the star's tets in rounds of `stride`;
 // `any(objects)` tells every lane of the group whether any lane's tet in the
@@ -161,11 +201,9 @@ TS_HD bool star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<R
     const index_t k = base + lane;
     bool objects = false;
     if (k < end) {
-      const index_t t = m.inc[k];
-      const Real q_new = tet_quality_with(m, xyz, t, i, target);
+      Real q_new;
+      objects = tet_objects(m, xyz, m.inc[k], i, p, target, old_min, old_quality, q_new);
       keep_new(k, q_new);
-      // Written so that a NaN objects.
-      objects = !(q_new > old_min) || (!(q_new > Real(0)) && !keeps_validity(old_quality(m, xyz, t, i, p), q_new));
     }
     if (any(objects)) return false;
   }

@@ -1,8 +1,8 @@
 // The adaptive test of node_update.hpp (two passes, stopping at the first
 // objecting tet) against the accept rule written out tet by tet, on every
 // movable node of meshes jittered hard enough to hold inverted and
-// near-degenerate tets; and row_sum's chunked fetches against the row added
-// entry by entry.
+// near-degenerate tets; row_sum's chunked fetches against the row added
+// entry by entry; star_old_min's chunked scan against one entry at a time.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -111,6 +111,54 @@ TEST(RowSum, ChunkedFetchesKeepTheSumsBits) {
   expect_chunked_row_sums_match<float, 8>(mesh, topo);
   expect_chunked_row_sums_match<double, 2>(mesh, topo);
   expect_chunked_row_sums_match<double, 8>(mesh, topo);
+}
+
+// The star's old minimum and where it sits, for every lane's share, chunked
+// or not, against a scan entry by entry: the same minimum, and `at` naming
+// the first entry that holds it (the entry the MultiBlock test deals first).
+template <int kChunk>
+void expect_star_minima_match(const TetMesh& mesh, const Topology& topo) {
+  const MeshView view{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
+                      topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+  const AosCoords<double> xyz{const_cast<double*>(mesh.xyz.data())};  // read only
+  for (index_t i = 0; i < static_cast<index_t>(mesh.num_nodes()); ++i)
+    for (int stride : {1, 3}) {
+      for (int lane = 0; lane < stride; ++lane) {
+        double want = 2;
+        index_t want_at = view.inc_off[i] + lane;
+        for (index_t k = view.inc_off[i] + lane; k < view.inc_off[i + 1]; k += stride) {
+          const double q = tet_quality_with(view, xyz, view.inc[k], i, xyz.get(i));
+          if (q < want) {
+            want = q;
+            want_at = k;
+          }
+        }
+        index_t at = -1;
+        const double got = star_old_min<double, kChunk>(view, xyz, i, xyz.get(i), lane, stride, FreshOldQuality{}, &at);
+        ASSERT_EQ(got, want) << "node " << i << ", lane " << lane << " of " << stride << ", chunk " << kChunk;
+        ASSERT_EQ(at, want_at) << "node " << i << ", lane " << lane << " of " << stride << ", chunk " << kChunk;
+      }
+    }
+}
+
+TEST(StarOldMin, ChunkedScanFindsTheSameMinimumAndEntry) {
+  // Pushed nodes give stars with inverted tets, so minima go below zero.
+  TetMesh mesh = testing::cube_grid(4, 0.3, 9);
+  const Topology topo = build_topology(mesh);
+  for (std::size_t n = 0; n < mesh.num_nodes(); n += 4)
+    if (topo.movable[n]) mesh.xyz[3 * n] += 1.2;
+  expect_star_minima_match<1>(mesh, topo);
+  expect_star_minima_match<4>(mesh, topo);
+  expect_star_minima_match<5>(mesh, topo);
+}
+
+TEST(TetNodes, ReadsTheTetsFourNodesInOrder) {
+  const std::vector<index_t> tets{0, 1, 2, 3, 7, 5, 9, 4};
+  const TetNodes b = tet_nodes(tets.data(), 1);
+  EXPECT_EQ(b.v[0], 7);
+  EXPECT_EQ(b.v[1], 5);
+  EXPECT_EQ(b.v[2], 9);
+  EXPECT_EQ(b.v[3], 4);
 }
 
 }  // namespace

@@ -1,9 +1,11 @@
 #pragma once
 // The smoothing kernels. Every strategy runs the per-node math of
 // node_update.hpp: SingleBlock through evaluate_node on one thread, the
-// others through centroid_group and judge_move_group below, the same steps
-// split over a group of lanes that share a node.
-//   MultiBlock: a thread group per node, a launch per sweep (the paper's).
+// others through the same steps split over lanes: centroid_group and
+// judge_move_group below for a group of lanes that share a node (Coloured),
+// warp_star_improves for a warp whose lanes share their nodes' stars
+// (MultiBlock).
+//   MultiBlock: a thread per node, a launch per sweep (the paper's).
 //   Coloured:   one colour class at a time, all sweeps in one cooperative
 //               launch (coloured_loop_kernel.cuh); nodes of one colour share
 //               no tet, so in-place updates are race-free.
@@ -15,6 +17,7 @@
 
 #include "kernels/cuda/lane_groups.cuh"
 #include "kernels/cuda/sweep_state.cuh"
+#include "kernels/cuda/warp_star_test.cuh"
 #include "kernels/node_update.hpp"
 #include "kernels/smooth_options.hpp"
 
@@ -22,30 +25,38 @@ namespace tetsmooth::cuda {
 
 inline constexpr int kSingleBlockThreads = 1024;
 
-// How a MultiBlock sweep shares a node among threads: `lanes` threads per
-// node, each fetching `chunk` of its neighbours' positions at a time
-// (row_sum in node_update.hpp).
-//   Adaptive: 4 lanes fetching 4 at a time, so that a node's ~25 incident
-//   tets do not run one after another on one thread, and a rejected node's
-//   lanes stop after a few of them (star_improves). With the old qualities
-//   read from tet_q, 100 sweeps of lattice-215 on an H100 took, in ms,
-//   float / double: 8 lanes x 2 375 / 781, 4 x 4 324 / 646. Requesting
-//   each star's tets and qualities ahead (star_prefetch.cuh) gave 4 x 4
-//   329 / 622, 4 x 2 331 / 623, 2 x 8 334 / 622, 1 x 8 414 / 713, but cost
-//   the 109k model (4 x 4: 2.25 / 2.76 ms against 1.78 / 2.19), whose
-//   stars sit in L2 anyway.
-//   Ordinary: the centroid is the whole job, and a sweep waits on memory:
-//   offsets, then neighbour indices, then positions, once per fetch. One
-//   thread per node fetching 8 at a time takes 0.38 ms a sweep in float and
-//   0.59 in double (H100, lattice-215), against 0.97 and 1.49 with 8 lanes
-//   fetching one at a time; 2 lanes x 4 gave 0.41 and 0.57, 2 x 8 0.46 and
-//   0.74 (more registers), 1 x 16 0.45 and 0.67, 4 x 4 0.63 and 0.98.
-struct NodeShape {
-  int lanes;
-  int chunk;
-};
-template <bool kAdaptive>
-inline constexpr NodeShape kMultiBlockShape = kAdaptive ? NodeShape{4, 4} : NodeShape{1, 8};
+// A MultiBlock sweep gives each node a thread, which fetches its
+// neighbours' positions kMultiBlockChunk at a time (row_sum in
+// node_update.hpp). The centroid waits on memory: offsets, then neighbour
+// indices, then positions, once per fetch. For ordinary smoothing, where the
+// centroid is the whole job, one thread per node fetching 8 at a time took
+// 0.38 ms a sweep in float and 0.59 in double (H100, lattice-215), against
+// 0.97 and 1.49 with 8 lanes fetching one at a time; 2 lanes x 4 gave 0.41
+// and 0.57, 2 x 8 0.46 and 0.74 (more registers), 1 x 16 0.45 and 0.67,
+// 4 x 4 0.63 and 0.98.
+// Adaptive smoothing then reads the star's old minimum from tet_q,
+// kOldMinChunk entries at a time, and shares the warp's lanes among its 32
+// nodes' stars for the new qualities, the old minimum's tet dealt first
+// (warp_star_test.cuh). 100 sweeps of lattice-215 on an H100, ms, float /
+// double, medians of 3:
+//   4 lanes per node, each fetching 4 positions at a time        325.5 / 648.9
+//   warp-shared stars, tets dealt in star order (a)              366.9 / 595.9
+//     with each tet's four nodes in one 16-byte load (tet_nodes) 343.6 / 578.4
+//     and the old minimum's tet first                            291.8 / 520.4
+//     and old qualities 4 at a time (b; 8 at a time 285.3 / 515.7) 284.9 / 514.7
+// (a) in a run where the first line took 324.5 / 645.8; (b) in a run where
+// the line above took 290.0 / 522.4.
+// Nsight Compute on one float sweep's node pass: 2.67 ms, 2.11 G warp
+// instructions and 1.19 G L1 sectors read with 4 lanes per node; 3.01 ms,
+// 1.85 G and 2.10 G with warp-shared stars in star order; 2.33 ms, 1.44 G
+// and 1.45 G with 16-byte tet loads and the old minimum first. The old
+// minimum's tet must improve for a move to pass; dealt first, it ends many
+// rejections in the first round instead of somewhere in the star.
+// Also tried: at most 40 registers, for 6 blocks of 256 per SM, 288.4 /
+// 1173 against 290.0 / 522.4 (double spills); x, y and z of a point as two
+// aligned pair loads instead of three, 307.6 / 729.0 against 281.8 / 512.7.
+inline constexpr int kMultiBlockChunk = 8;
+inline constexpr int kOldMinChunk = 4;
 
 // Applies an evaluated move; returns whether the node moved.
 template <class Real, Form F, class Coords>
@@ -118,21 +129,28 @@ __device__ __forceinline__ NodeMove<Real> judge_move_group(const MeshView& m, co
   return decide_move<Real, true>(p, target, old_min, improves);
 }
 
-// A MultiBlock node, start to finish, its old qualities read from tet_q.
-template <class Real, bool kAdaptive, int G, int kChunk, class Coords>
-__device__ __forceinline__ NodeMove<Real> evaluate_node_group(const MeshView& m, const Coords& xyz, const Real* tet_q,
-                                                              index_t i, int lane, bool active) {
+// A MultiBlock node, start to finish, on this thread (active) or lending
+// the thread to its warp's other nodes (not active); the old qualities are
+// read from tet_q. Every lane of the warp must call it.
+template <class Real, bool kAdaptive, class Coords>
+__device__ __forceinline__ NodeMove<Real> evaluate_node_multiblock(const MeshView& m, const Coords& xyz,
+                                                                   const Real* tet_q, index_t i, bool active) {
   const Vec3<Real> p = active ? xyz.get(i) : Vec3<Real>{0, 0, 0};
-  const Vec3<Real> target = centroid_group<Real, G, kChunk>(m, xyz, i, lane, active);
-  return judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active, CachedOldQuality<Real>{tet_q});
+  const Vec3<Real> target = centroid_group<Real, 1, kMultiBlockChunk>(m, xyz, i, 0, active);
+  if (!kAdaptive) return decide_move<Real, false>(p, target, Real(1), true);
+  const CachedOldQuality<Real> cached{tet_q};
+  index_t lead = 0;
+  const Real old_min = active ? star_old_min<Real, kOldMinChunk>(m, xyz, i, p, 0, 1, cached, &lead) : Real(2);
+  return decide_move<Real, true>(p, target, old_min,
+                                 warp_star_improves(m, xyz, i, p, target, old_min, lead, active, cached));
 }
 
 // Tet t's radius ratio where its corners stand now, into tet_q[t] (the
 // cache that CachedOldQuality reads).
 template <class Real, class Coords>
 __device__ __forceinline__ void store_tet_quality(const index_t* tets, std::size_t t, const Coords& xyz, Real* tet_q) {
-  const index_t* tet = tets + 4 * t;
-  tet_q[t] = radius_ratio(xyz.get(tet[0]), xyz.get(tet[1]), xyz.get(tet[2]), xyz.get(tet[3]));
+  const TetNodes tet = tet_nodes(tets, t);
+  tet_q[t] = radius_ratio(xyz.get(tet.v[0]), xyz.get(tet.v[1]), xyz.get(tet.v[2]), xyz.get(tet.v[3]));
 }
 
 // Opens an adaptive MultiBlock sweep: every tet's quality before the sweep
@@ -146,7 +164,7 @@ __global__ void tet_quality_kernel(const index_t* tets, index_t num_tets, Coords
   if (t < static_cast<std::size_t>(num_tets)) store_tet_quality(tets, t, xyz, tet_q);
 }
 
-// One MultiBlock sweep over all N nodes, kMultiBlockShape's lanes per node.
+// One MultiBlock sweep over all N nodes, a thread per node.
 // Adaptive smoothing takes a star's old minimum from tet_q, filled by
 // tet_quality_kernel as the sweep began: the paper's test against the
 // minimum "calculated in the previous iteration" (its section 3.4). For
@@ -158,23 +176,20 @@ template <class Real, bool kAdaptive, Form F, class Coords>
 __global__ void sweep_kernel(MeshView m, Coords read, Coords write, index_t n, const std::uint8_t* movable,
                              const Real* tet_q, Real* old_min, std::uint8_t* moved, SweepState* st, SweepCounters c) {
   if (st->done) return;
-  constexpr NodeShape shape = kMultiBlockShape<kAdaptive>;
-  constexpr int G = shape.lanes;
   const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
-  const index_t i = static_cast<index_t>(gid / G);
-  const int lane = static_cast<int>(gid % G);
-  const bool active = i < n && movable[i];
-  const NodeMove<Real> mv =
-      evaluate_node_group<Real, kAdaptive, G, shape.chunk>(m, read, tet_q, active ? i : 0, lane, active);
+  const index_t i = static_cast<index_t>(gid);
+  const bool active = gid < static_cast<std::size_t>(n) && movable[i];
+  const NodeMove<Real> mv = evaluate_node_multiblock<Real, kAdaptive>(m, read, tet_q, active ? i : 0, active);
   unsigned accepted = 0;
   double disp2 = 0;
-  if (active && lane == 0) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);
+  if (active) accepted = apply_move<Real, F>(mv, read, write, i, old_min, moved, disp2);
   // Ordinary smoothing's short nodes leave the sweep's counters as the
   // bottleneck unless a block posts them once (on an H100, lattice-215
   // MultiBlock, when it still ran 8 lanes per node: 0.98 ms a sweep against
   // 2.35 in float, 1.48 against 2.48 in double); the adaptive test's uneven
   // nodes would wait at the block's barrier instead (574.7 ms against 557.9
-  // for 100 sweeps in float).
+  // for 100 sweeps in float; with the warp-shared test, 292.4 against 290.0
+  // in float, 521.7 against 522.4 in double).
   if constexpr (F == Form::B) {
     if constexpr (kAdaptive)
       add_sweep_stats(c, st->sweep, accepted, disp2);

@@ -17,13 +17,6 @@ namespace detail {
 
 constexpr int kBlock = 256;
 inline unsigned blocks_for(index_t count) { return static_cast<unsigned>((count + kBlock - 1) / kBlock); }
-// Blocks for one thread group per node (kMultiBlockShape).
-template <bool kAdaptive>
-unsigned node_blocks_for(index_t nodes) {
-  const std::size_t threads = static_cast<std::size_t>(nodes) * kMultiBlockShape<kAdaptive>.lanes;
-  return static_cast<unsigned>((threads + kBlock - 1) / kBlock);
-}
-
 template <class Real, Layout L>
 struct CoordsFor;
 template <class Real>
@@ -88,10 +81,10 @@ class SweepLauncher {
                                                                            a_.state);
       launched();
     }
-    sweep_kernel<Real, kAdaptive, F><<<node_blocks_for<kAdaptive>(a_.n), kBlock, 0, a_.stream>>>(
+    sweep_kernel<Real, kAdaptive, F><<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(
         a_.view, read, write, a_.n, a_.movable, tet_q, old_min(), a_.moved, a_.state, a_.counters);
     launched();
-    stats_.lanes_per_node = kMultiBlockShape<kAdaptive>.lanes;
+    stats_.lanes_per_node = 1;
     if (F == Form::A) {
       for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
         repair_check_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(

@@ -9,9 +9,11 @@
 #include <cstdlib>
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "generators/models.hpp"
 #include "kernels/cuda/gpu_pipeline.hpp"
+#include "kernels/cuda/star_test_check.hpp"
 #include "kernels/smoother.hpp"
 #include "mesh/topology.hpp"
 #include "test_meshes.hpp"
@@ -119,6 +121,45 @@ TEST(GpuSmoother, JacobiMultiBlockDoubleMatchesCpu) {
   std::printf("reverted by the repair: cpu %lld gpu %lld\n", static_cast<long long>(rc.reverted_moves),
               static_cast<long long>(rg.reverted_moves));
   EXPECT_LE(std::llabs(rg.reverted_moves - rc.reverted_moves), rc.reverted_moves / 200 + 1);
+}
+
+// MultiBlock's warp-shared test (warp_star_test.cuh) against the one-thread
+// test the CPU runs, on the same device and the same inputs: they must
+// agree on every node, whatever tet the deal starts with. Targets are the
+// centroids, moved by up to a third of the mean edge length on two nodes in
+// three so that both verdicts are common and objections turn up at every
+// place in a star. The 5k model has stars of up to 74 tets, so a node's
+// tets also span rounds.
+TEST(GpuSmoother, WarpSharedStarTestMatchesOneThread) {
+  SKIP_WITHOUT_GPU();
+  const TetMesh& mesh = model_5k();
+  const Topology topo = build_topology(mesh);
+  index_t largest_star = 0;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) largest_star = std::max(largest_star, topo.node_tets.row_size(i));
+  EXPECT_GT(largest_star, 32);
+  const double h = mean_edge_length(mesh.xyz, topo.neighbours);
+  std::vector<double> targets(3 * mesh.num_nodes(), 0.0);
+  std::uint32_t state = 12345;
+  const auto jitter = [&] {
+    state = state * 1664525u + 1013904223u;  // a fixed sequence: the same targets on every run
+    return (static_cast<double>(state >> 8) / 16777216.0 - 0.5) * (2.0 / 3.0) * h;
+  };
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    const index_t degree = topo.neighbours.row_size(i);
+    for (const index_t* j = topo.neighbours.row_begin(i); j != topo.neighbours.row_end(i); ++j)
+      for (int k = 0; k < 3; ++k) targets[3 * i + k] += mesh.xyz[3 * static_cast<std::size_t>(*j) + k] / degree;
+    if (i % 3 != 0)
+      for (int k = 0; k < 3; ++k) targets[3 * i + k] += jitter();
+  }
+  for (const cuda::LeadRule rule : {cuda::LeadRule::OldMinimum, cuda::LeadRule::Rotating}) {
+    const cuda::StarTestAgreement a = cuda::compare_warp_star_test(mesh, targets, rule);
+    std::printf("warp-shared star test, lead %s: %zu of %zu movable nodes accepted, %zu disagree\n",
+                rule == cuda::LeadRule::OldMinimum ? "old minimum" : "rotating", a.accepted, a.judged,
+                a.disagreements);
+    EXPECT_EQ(a.disagreements, 0u);
+    EXPECT_GT(a.accepted, a.judged / 10);
+    EXPECT_LT(a.accepted, a.judged - a.judged / 10);
+  }
 }
 
 TEST(GpuSmoother, ColouredIsBitIdenticalAcrossRuns) {

@@ -1,0 +1,74 @@
+// compare_warp_star_test: both forms of the adaptive test's second pass on
+// one thread per node, so that they see identical inputs and must agree bit
+// for bit (the warp form changes only which lane computes a tet, and when).
+#include "kernels/cuda/star_test_check.hpp"
+
+#include "kernels/coords.hpp"
+#include "kernels/cuda/cuda_check.hpp"
+#include "kernels/cuda/device_buffer.hpp"
+#include "kernels/cuda/warp_star_test.cuh"
+#include "mesh/errors.hpp"
+#include "mesh/topology.hpp"
+
+namespace tetsmooth::cuda {
+namespace {
+
+// counts: judged, accepted, disagreements.
+__global__ void compare_star_tests_kernel(MeshView m, AosCoords<double> xyz, const double* targets,
+                                          const std::uint8_t* movable, index_t n, LeadRule rule,
+                                          unsigned long long* counts) {
+  const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  const index_t i = static_cast<index_t>(gid);
+  const bool active = gid < static_cast<std::size_t>(n) && movable[i];
+  Vec3<double> p{0, 0, 0}, target{0, 0, 0};
+  double old_min = 2;
+  index_t lead = 0;
+  bool reference = false;
+  if (active) {
+    p = xyz.get(i);
+    target = {targets[3 * gid], targets[3 * gid + 1], targets[3 * gid + 2]};
+    old_min = star_old_min(m, xyz, i, p, 0, 1, FreshOldQuality{}, &lead);
+    const index_t begin = m.inc_off[i], size = m.inc_off[i + 1] - begin;
+    if (rule == LeadRule::Rotating && size > 0) lead = begin + i % size;
+    reference = star_improves(m, xyz, i, p, target, old_min, 0, 1);
+  }
+  const bool shared = warp_star_improves(m, xyz, active ? i : 0, p, target, old_min, lead, active, FreshOldQuality{});
+  if (!active) return;
+  atomicAdd(&counts[0], 1ull);
+  if (reference) atomicAdd(&counts[1], 1ull);
+  if (reference != shared) atomicAdd(&counts[2], 1ull);
+}
+
+}  // namespace
+
+StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<double>& targets, LeadRule lead) {
+  if (targets.size() != 3 * mesh.num_nodes())
+    throw UsageError("compare_warp_star_test: " + std::to_string(targets.size()) + " target values for " +
+                     std::to_string(mesh.num_nodes()) + " nodes");
+  const Topology topo = build_topology(mesh);
+  DeviceBuffer<index_t> tets, nbr_off, nbr, inc_off, inc;
+  DeviceBuffer<double> xyz, target;
+  DeviceBuffer<std::uint8_t> movable;
+  DeviceBuffer<unsigned long long> counts(3);
+  tets.upload(mesh.tets);
+  nbr_off.upload(topo.neighbours.offsets);
+  nbr.upload(topo.neighbours.items);
+  inc_off.upload(topo.node_tets.offsets);
+  inc.upload(topo.node_tets.items);
+  xyz.upload(mesh.xyz);
+  target.upload(targets);
+  movable.upload(topo.movable);
+  CUDA_CHECK(cudaMemset(counts.data(), 0, counts.bytes()));
+  const MeshView view{tets.data(), nbr_off.data(), nbr.data(), inc_off.data(), inc.data()};
+  const index_t n = static_cast<index_t>(mesh.num_nodes());
+  constexpr unsigned kBlock = 128;
+  if (n > 0) {
+    compare_star_tests_kernel<<<(static_cast<unsigned>(n) + kBlock - 1) / kBlock, kBlock>>>(
+        view, AosCoords<double>{xyz.data()}, target.data(), movable.data(), n, lead, counts.data());
+    CUDA_CHECK_LAUNCH();
+  }
+  const std::vector<unsigned long long> c = counts.download();
+  return {static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1]), static_cast<std::size_t>(c[2])};
+}
+
+}  // namespace tetsmooth::cuda

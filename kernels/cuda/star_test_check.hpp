@@ -1,0 +1,29 @@
+#pragma once
+// A check of warp_star_improves (warp_star_test.cuh) against star_improves,
+// the one-thread form the CPU runs, on the device and on the same inputs:
+// for tests. Plain C++: callers need no CUDA headers.
+#include <cstddef>
+#include <vector>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::cuda {
+
+// Which star entry the warp form deals first.
+enum class LeadRule {
+  OldMinimum,  // the star's old minimum, as MultiBlock sweeps do
+  Rotating,    // entry (i mod star size) of node i: every place in the deal gets exercised
+};
+
+struct StarTestAgreement {
+  std::size_t judged = 0;         // movable nodes
+  std::size_t accepted = 0;       // by star_improves
+  std::size_t disagreements = 0;  // nodes where the two forms decide differently
+};
+
+// Judges a move of every movable node of `mesh` (double AoS coordinates, old
+// qualities computed afresh) to targets[3 i .. 3 i + 2], both ways, in one
+// kernel with a thread per node.
+StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<double>& targets, LeadRule lead);
+
+}  // namespace tetsmooth::cuda

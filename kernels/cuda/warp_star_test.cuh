@@ -61,7 +61,7 @@ __device__ __forceinline__ index_t dealt_entry(index_t begin, index_t lead, int 
 // lends its lane to the others). `old_min` and `old_quality` as in
 // star_improves; `lead` is the incidence entry dealt first, the star's
 // old minimum (star_old_min's `at`): the tet that must improve for the
-// move to pass, so where the test most often fails. Every lane of the warp
+// move to pass, and so a likely first objection. Every lane of the warp
 // must call it.
 template <class Real, class Coords, class OldQuality>
 __device__ bool warp_star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,

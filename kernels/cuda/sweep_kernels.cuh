@@ -54,7 +54,10 @@ inline constexpr int kSingleBlockThreads = 1024;
 // rejections in the first round instead of somewhere in the star.
 // Also tried: at most 40 registers, for 6 blocks of 256 per SM, 288.4 /
 // 1173 against 290.0 / 522.4 (double spills); x, y and z of a point as two
-// aligned pair loads instead of three, 307.6 / 729.0 against 281.8 / 512.7.
+// aligned pair loads instead of three, 307.6 / 729.0 against 281.8 / 512.7;
+// and, though L1 is the node pass's busiest unit (79%), points padded to
+// four values and read in one load (float) or two (double), 276.1 / 526.6
+// against 283.8 / 510.2, with Coloured slower in both: not worth a layout.
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

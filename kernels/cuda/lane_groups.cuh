@@ -1,12 +1,15 @@
 #pragma once
 // Reductions over a group of G consecutive lanes of a warp (G a power of two
-// up to 32), for kernels that give one item (a node) to several threads.
+// up to 32), for kernels that give one item (a node) to several threads; a
+// warp's prefix sum and broadcast, for kernels whose lanes share out work.
 // Every lane named in `mask` must call them: the whole warp by default (also
 // lanes whose group is idle), or just the group (group_mask) where groups of
 // one warp run apart. All lanes of a group get the same result: the same bits
 // for sums; for min and max, values that compare equal (a zero may keep its
 // sign).
 #include <cuda_runtime.h>
+
+#include "mesh/vec3.hpp"
 
 namespace tetsmooth::cuda {
 
@@ -58,6 +61,28 @@ __device__ __forceinline__ T group_or(T v, unsigned mask = 0xffffffffu) {
 template <int G>
 __device__ __forceinline__ bool group_any(bool b) {
   return __any_sync(group_mask<G>(), b) != 0;
+}
+
+inline constexpr unsigned kFullWarp = 0xffffffffu;
+
+// Sum of v over lanes 0..this one. Every lane of the warp must call it.
+__device__ __forceinline__ int warp_inclusive_sum(int v) {
+  const int lane = static_cast<int>(threadIdx.x & 31u);
+  for (int offset = 1; offset < 32; offset <<= 1) {
+    const int w = __shfl_up_sync(kFullWarp, v, offset);
+    if (lane >= offset) v += w;
+  }
+  return v;
+}
+
+// The value of lane `src`, for the types the hardware shuffles and Vec3.
+template <class T>
+__device__ __forceinline__ T lane_value(T v, int src) {
+  return __shfl_sync(kFullWarp, v, src);
+}
+template <class Real>
+__device__ __forceinline__ Vec3<Real> lane_value(Vec3<Real> v, int src) {
+  return {lane_value(v.x, src), lane_value(v.y, src), lane_value(v.z, src)};
 }
 
 // Adds every lane's v to *target with one atomic per warp (none when the

@@ -22,31 +22,10 @@
 // otherwise).
 #include <cuda_runtime.h>
 
+#include "kernels/cuda/lane_groups.cuh"
 #include "kernels/node_update.hpp"
 
 namespace tetsmooth::cuda {
-
-inline constexpr unsigned kFullWarp = 0xffffffffu;
-
-// Sum of v over lanes 0..this one. Every lane of the warp must call it.
-__device__ __forceinline__ int warp_inclusive_sum(int v) {
-  const int lane = static_cast<int>(threadIdx.x & 31u);
-  for (int offset = 1; offset < 32; offset <<= 1) {
-    const int w = __shfl_up_sync(kFullWarp, v, offset);
-    if (lane >= offset) v += w;
-  }
-  return v;
-}
-
-// The value of lane `src`, for the types the hardware shuffles and Vec3.
-template <class T>
-__device__ __forceinline__ T lane_value(T v, int src) {
-  return __shfl_sync(kFullWarp, v, src);
-}
-template <class Real>
-__device__ __forceinline__ Vec3<Real> lane_value(Vec3<Real> v, int src) {
-  return {lane_value(v.x, src), lane_value(v.y, src), lane_value(v.z, src)};
-}
 
 // The incidence entry at place `pos` of a star [begin, end) dealt with
 // entry `lead` first and the others in order.

@@ -44,8 +44,10 @@ inline constexpr int kSingleBlockThreads = 1024;
 //     with each tet's four nodes in one 16-byte load (tet_nodes) 343.6 / 578.4
 //     and the old minimum's tet first                            291.8 / 520.4
 //     and old qualities 4 at a time (b; 8 at a time 285.3 / 515.7) 284.9 / 514.7
+//     and the even share a power of 2 (c)                       271.7 / 500.7
 // (a) in a run where the first line took 324.5 / 645.8; (b) in a run where
-// the line above took 290.0 / 522.4.
+// the line above took 290.0 / 522.4; (c) against 282.0 / 510.5 in the same
+// run, and 280.3 / 504.4 against 284.6 / 511.2 in another.
 // Nsight Compute on one float sweep's node pass: 2.67 ms, 2.11 G warp
 // instructions and 1.19 G L1 sectors read with 4 lanes per node; 3.01 ms,
 // 1.85 G and 2.10 G with warp-shared stars in star order; 2.33 ms, 1.44 G
@@ -58,6 +60,22 @@ inline constexpr int kSingleBlockThreads = 1024;
 // and, though L1 is the node pass's busiest unit (79%), points padded to
 // four values and read in one load (float) or two (double), 276.1 / 526.6
 // against 283.8 / 510.2, with Coloured slower in both: not worth a layout.
+// Nsight Compute's source view of the float node pass (12.4 rounds of the
+// star test per warp, about 320 instructions each) puts its longest stalls
+// on the reads of a dealt tet's index and then its nodes. Tried against
+// that, each against 282.0 / 510.5 or so in its own run:
+//   star faces: each incidence entry's other three corners as places in
+//   the node's neighbour row (4 B per entry, built with the topology), the
+//   rows' positions staged in shared memory by the centroid: 311.9 / 735.1
+//   (43 KB of shared memory a block leaves L1 too little for the gathers,
+//   and the extra registers cost double a block per SM); the same faces
+//   with the corners read through the row instead of shared memory,
+//   280.0 / 507.5 with a fallback to the tets for rows over 256 places
+//   (272.9 / 492.5 without one): 1-3% for a new topology array;
+//   dealing each round's successor before computing it, so that the next
+//   tets' index and node reads overlap the radius ratios (re-dealt after a
+//   round with an objection): 326.0 / 664.4, and 304.5 / 547.8 held to
+//   48 / 80 registers, against 271.7 / 500.7 without it.
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

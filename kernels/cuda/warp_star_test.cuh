@@ -56,8 +56,11 @@ __device__ bool warp_star_improves(const MeshView& m, const Coords& xyz, index_t
     const unsigned busy = __ballot_sync(kFullWarp, pending > 0);
     if (busy == 0) break;
     // This round's slots: an even share first (at least one each), then
-    // whatever is left to the nodes in lane order.
-    const int even = max(1, 32 / __popc(busy));
+    // whatever is left to the nodes in lane order. The share is 32 / busy
+    // nodes rounded down to a power of 2: a shift, where the integer
+    // division took a 19-instruction call every round (the decision does
+    // not depend on the share).
+    const int even = 32 >> (32 - __clz(__popc(busy) - 1));
     const int base = min(pending, even), rest = pending - base;
     const int base_incl = warp_inclusive_sum(base), rest_incl = warp_inclusive_sum(rest);
     const int left = 32 - lane_value(base_incl, 31);

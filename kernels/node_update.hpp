@@ -16,6 +16,7 @@
 #include "mesh/hd.hpp"
 #include "mesh/tet_mesh.hpp"
 #include "mesh/tet_quality.hpp"
+#include "mesh/topology.hpp"
 
 namespace tetsmooth {
 
@@ -28,6 +29,13 @@ struct MeshView {
   const index_t* inc_off;   // N + 1
   const index_t* inc;       // incident tets
 };
+
+// The view of a mesh and its topology both held on the host (the CPU
+// backend, tests). The GPU's comes from DeviceTopology::view.
+inline MeshView host_view(const TetMesh& mesh, const Topology& topo) {
+  return MeshView{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
+                  topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+}
 
 template <class Real>
 struct NodeMove {

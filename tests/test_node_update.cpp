@@ -47,8 +47,7 @@ TEST_P(AdaptiveTest, SameDecisionAsTheRuleTetByTet) {
   const Topology topo = build_topology(mesh);
   for (std::size_t n = 0; n < mesh.num_nodes(); n += 5)
     if (topo.movable[n]) mesh.xyz[3 * n] += GetParam().push;  // the lattice spacing is 1
-  const MeshView view{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
-                      topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+  const MeshView view = host_view(mesh, topo);
   const AosCoords<double> xyz{mesh.xyz.data()};  // read only
   int accepted = 0, rejected = 0, inverted_stars = 0;
   for (std::size_t n = 0; n < mesh.num_nodes(); ++n) {
@@ -86,8 +85,7 @@ template <class Real, int kChunk>
 void expect_chunked_row_sums_match(const TetMesh& mesh, const Topology& topo) {
   std::vector<Real> xyz_real(mesh.xyz.begin(), mesh.xyz.end());
   const AosCoords<Real> xyz{xyz_real.data()};
-  const MeshView view{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
-                      topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+  const MeshView view = host_view(mesh, topo);
   int compared = 0;
   for (index_t i = 0; i < static_cast<index_t>(mesh.num_nodes()); ++i)
     for (int stride : {1, 2, 3, 8})
@@ -118,8 +116,7 @@ TEST(RowSum, ChunkedFetchesKeepTheSumsBits) {
 // the first entry that holds it (the entry the MultiBlock test deals first).
 template <int kChunk>
 void expect_star_minima_match(const TetMesh& mesh, const Topology& topo) {
-  const MeshView view{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
-                      topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+  const MeshView view = host_view(mesh, topo);
   const AosCoords<double> xyz{const_cast<double*>(mesh.xyz.data())};  // read only
   for (index_t i = 0; i < static_cast<index_t>(mesh.num_nodes()); ++i)
     for (int stride : {1, 3}) {

@@ -116,8 +116,7 @@ SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, s
 template <bool kAdaptive>
 void run_sweeps(TetMesh& mesh, const Topology& topo, const Colouring* colouring, const SmoothOptions& opt,
                 int threads, double tol_abs, SmoothResult& result) {
-  const MeshView view{mesh.tets.data(), topo.neighbours.offsets.data(), topo.neighbours.items.data(),
-                      topo.node_tets.offsets.data(), topo.node_tets.items.data()};
+  const MeshView view = host_view(mesh, topo);
   std::vector<index_t> natural;
   std::vector<double> other, old_min;
   std::vector<std::uint8_t> moved, revert;  // Form A: this sweep's movers, and those to put back

@@ -106,7 +106,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   const unsigned long long tid = grid.thread_rank(), threads = grid.size();
   if (kAdaptive)
     for (unsigned long long t = tid; t < static_cast<unsigned long long>(num_tets); t += threads)
-      store_tet_quality(m.tets, t, xyz, tet_q);
+      store_tet_qualities<1>(m.tets, static_cast<std::size_t>(num_tets), t, 0, xyz, tet_q);
   // Every node is evaluated in the first sweep.
   for (unsigned long long i = tid; i < static_cast<unsigned long long>(n); i += threads) changed[i] = 1;
   // Nodes of the block's share of a class handed out so far, one counter for

@@ -39,6 +39,13 @@ __global__ void compare_star_tests_kernel(MeshView m, AosCoords<double> xyz, con
   if (reference != shared) atomicAdd(&counts[2], 1ull);
 }
 
+constexpr int kMaxNumerator = 32, kMaxDivisor = 33;
+
+__global__ void small_quotient_kernel(unsigned long long* errors) {
+  const int n = static_cast<int>(threadIdx.x), d = static_cast<int>(blockIdx.x) + 1;
+  if (n <= kMaxNumerator && small_quotient(n, d) != n / d) atomicAdd(errors, 1ull);
+}
+
 }  // namespace
 
 StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<double>& targets, LeadRule lead) {
@@ -69,6 +76,14 @@ StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<
   }
   const std::vector<unsigned long long> c = counts.download();
   return {static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1]), static_cast<std::size_t>(c[2])};
+}
+
+std::size_t small_quotient_errors() {
+  DeviceBuffer<unsigned long long> errors(1);
+  CUDA_CHECK(cudaMemset(errors.data(), 0, errors.bytes()));
+  small_quotient_kernel<<<kMaxDivisor, 64>>>(errors.data());
+  CUDA_CHECK_LAUNCH();
+  return static_cast<std::size_t>(errors.download()[0]);
 }
 
 }  // namespace tetsmooth::cuda

@@ -1,7 +1,7 @@
 #pragma once
-// A check of warp_star_improves (warp_star_test.cuh) against star_improves,
-// the one-thread form the CPU runs, on the device and on the same inputs:
-// for tests. Plain C++: callers need no CUDA headers.
+// Checks of warp_star_improves (warp_star_test.cuh) on the device, for
+// tests: against star_improves, the one-thread form the CPU runs, on the
+// same inputs; and of the quotient its deal computes. Plain C++: callers need no CUDA headers.
 #include <cstddef>
 #include <vector>
 
@@ -25,5 +25,10 @@ struct StarTestAgreement {
 // qualities computed afresh) to targets[3 i .. 3 i + 2], both ways, in one
 // kernel with a thread per node.
 StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<double>& targets, LeadRule lead);
+
+// The pairs (n, d), 0 <= n <= 32 and 1 <= d <= 33, for which the deal's
+// small_quotient(n, d) differs from n / d on the device (every pair the deal
+// can ask for, so 0 means it is exact).
+std::size_t small_quotient_errors();
 
 }  // namespace tetsmooth::cuda

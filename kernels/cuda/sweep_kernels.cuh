@@ -45,9 +45,15 @@ inline constexpr int kSingleBlockThreads = 1024;
 //     and the old minimum's tet first                            291.8 / 520.4
 //     and old qualities 4 at a time (b; 8 at a time 285.3 / 515.7) 284.9 / 514.7
 //     and the even share a power of 2 (c)                       271.7 / 500.7
+//     slots dealt by rank in closed form, no scans (d)           267.4 / 489.3
 // (a) in a run where the first line took 324.5 / 645.8; (b) in a run where
 // the line above took 290.0 / 522.4; (c) against 282.0 / 510.5 in the same
-// run, and 280.3 / 504.4 against 284.6 / 511.2 in another.
+// run, and 280.3 / 504.4 against 284.6 / 511.2 in another; (d) against
+// 278.6 / 502.6, and 271.4 / 488.3 against 278.7 / 503.4 in another, where
+// the deal's owners' values read from shared memory instead of shuffled
+// took 279.3 / 506.4, and the leads judged by their own lanes before any
+// deal 267.2 / 484.8, against 266.6 / 488.1 (both with two tets a thread in
+// the tet pass).
 // Nsight Compute on one float sweep's node pass: 2.67 ms, 2.11 G warp
 // instructions and 1.19 G L1 sectors read with 4 lanes per node; 3.01 ms,
 // 1.85 G and 2.10 G with warp-shared stars in star order; 2.33 ms, 1.44 G
@@ -166,23 +172,40 @@ __device__ __forceinline__ NodeMove<Real> evaluate_node_multiblock(const MeshVie
                                  warp_star_improves(m, xyz, i, p, target, old_min, lead, active, cached));
 }
 
-// Tet t's radius ratio where its corners stand now, into tet_q[t] (the
-// cache that CachedOldQuality reads).
-template <class Real, class Coords>
-__device__ __forceinline__ void store_tet_quality(const index_t* tets, std::size_t t, const Coords& xyz, Real* tet_q) {
-  const TetNodes tet = tet_nodes(tets, t);
-  tet_q[t] = radius_ratio(xyz.get(tet.v[0]), xyz.get(tet.v[1]), xyz.get(tet.v[2]), xyz.get(tet.v[3]));
+// The radius ratios of tets t0, t0 + stride, ... (K of them, those below
+// num_tets) where their corners stand now, into tet_q (the cache that
+// CachedOldQuality reads). All K tets' nodes, then all their corners, are
+// requested before any quality is computed, so that a thread has K tets'
+// loads in flight at once.
+template <int K, class Real, class Coords>
+__device__ __forceinline__ void store_tet_qualities(const index_t* tets, std::size_t num_tets, std::size_t t0,
+                                                    std::size_t stride, const Coords& xyz, Real* tet_q) {
+  TetNodes tet[K];
+  for (int k = 0; k < K; ++k)
+    tet[k] = t0 + k * stride < num_tets ? tet_nodes(tets, t0 + k * stride) : TetNodes{{0, 0, 0, 0}};
+  Vec3<Real> v[K][4];
+  for (int k = 0; k < K; ++k)
+    for (int c = 0; c < 4; ++c) v[k][c] = xyz.get(tet[k].v[c]);  // node 0 stands in past the end
+  for (int k = 0; k < K; ++k)
+    if (t0 + k * stride < num_tets) tet_q[t0 + k * stride] = radius_ratio(v[k][0], v[k][1], v[k][2], v[k][3]);
 }
 
 // Opens an adaptive MultiBlock sweep: every tet's quality before the sweep
 // moves anything. Each tet is computed here once instead of once by each of
 // its four corners, and the old half of the accept test becomes a read.
+// A thread takes kTetsPerThread tets a block's width apart, so a warp's
+// loads stay coalesced. 100 sweeps of lattice-215 on an H100, ms, float /
+// double: 272.4 / 489.6 with one tet a thread, 262.5 / 488.7 with two,
+// 268.4 / 496.7 with four (the float node pass held to 40 registers in all
+// three).
+inline constexpr int kTetsPerThread = 2;
+
 template <class Real, class Coords>
 __global__ void tet_quality_kernel(const index_t* tets, index_t num_tets, Coords xyz, Real* tet_q,
                                    const SweepState* st) {
   if (st->done) return;
-  const std::size_t t = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
-  if (t < static_cast<std::size_t>(num_tets)) store_tet_quality(tets, t, xyz, tet_q);
+  const std::size_t t0 = static_cast<std::size_t>(blockIdx.x) * blockDim.x * kTetsPerThread + threadIdx.x;
+  store_tet_qualities<kTetsPerThread>(tets, static_cast<std::size_t>(num_tets), t0, blockDim.x, xyz, tet_q);
 }
 
 // One MultiBlock sweep over all N nodes, a thread per node.

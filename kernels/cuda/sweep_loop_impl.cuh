@@ -77,8 +77,8 @@ class SweepLauncher {
     const Coords& write = (F == Form::A && (s & 1)) ? c0_ : c1_;
     Real* tet_q = static_cast<Real*>(a_.tet_quality);
     if (kAdaptive) {
-      tet_quality_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(a_.view.tets, a_.num_tets, read, tet_q,
-                                                                           a_.state);
+      tet_quality_kernel<<<blocks_for((a_.num_tets + kTetsPerThread - 1) / kTetsPerThread), kBlock, 0, a_.stream>>>(
+          a_.view.tets, a_.num_tets, read, tet_q, a_.state);
       launched();
     }
     sweep_kernel<Real, kAdaptive, F><<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(

@@ -8,12 +8,11 @@
 // while rejected ones stop at their first objecting tet. With about a third
 // of the moves accepted (lattice-215), a warp of 8 nodes nearly always holds
 // an accepted one, and the lanes of its rejected nodes idle meanwhile. Here
-// a round gives each node with tets left at least one slot and fills the
-// remaining slots with further tets of the nodes in lane order, so the warp
-// computes 32 tets a round for as long as 32 are left. (Nsight Compute on
-// an H100, one lattice-215 sweep's node pass in float: 2.11 G warp
-// instructions with 4 lanes per node, 1.44 G with this and the lead below;
-// the A/B is in sweep_kernels.cuh.)
+// a round splits the 32 slots evenly among the nodes with tets left, so the
+// warp computes up to 32 tets a round for as long as its nodes have that
+// many left. (Nsight Compute on an H100, one lattice-215 sweep's node pass
+// in float: 2.11 G warp instructions with 4 lanes per node, 1.44 G with
+// this and the lead below; the A/B is in sweep_kernels.cuh.)
 //
 // The decision is star_improves's: a node's move is accepted when none of
 // its tets objects (tet_objects), whatever the order they were taken in.
@@ -35,6 +34,13 @@ __device__ __forceinline__ index_t dealt_entry(index_t begin, index_t lead, int 
   return e >= lead ? e + 1 : e;
 }
 
+// floor(n / d) for 0 <= n <= 32 and 1 <= d <= 33: (n + 1/2) / d lies
+// at least 1/(2d) from an integer, far beyond the approximate division's
+// error, so truncating it is exact (and costs no division subroutine).
+__device__ __forceinline__ int small_quotient(int n, int d) {
+  return __float2int_rz(__fdividef(static_cast<float>(n) + 0.5f, static_cast<float>(d)));
+}
+
 // Whether node i's move from p to target passes the test, for this lane's
 // node; `evaluated` is false for a lane without a node to judge (it still
 // lends its lane to the others). `old_min` and `old_quality` as in
@@ -45,7 +51,12 @@ __device__ __forceinline__ index_t dealt_entry(index_t begin, index_t lead, int 
 template <class Real, class Coords, class OldQuality>
 __device__ bool warp_star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
                                    Real old_min, index_t lead, bool evaluated, const OldQuality& old_quality) {
+  // The lanes of this warp's busy nodes by rank (their order among the busy
+  // lanes), rewritten each round: a row per warp, for blocks of up to 1024.
+  __shared__ unsigned char lane_of_rank[32][32];
+  unsigned char* const ranked = lane_of_rank[threadIdx.x >> 5];
   const int lane = static_cast<int>(threadIdx.x & 31u);
+  const unsigned lanes_below = (1u << lane) - 1u;
   const index_t begin = evaluated ? m.inc_off[i] : 0;
   const int count = evaluated ? static_cast<int>(m.inc_off[i + 1] - begin) : 0;
   int done = 0;  // places dealt so far
@@ -55,38 +66,38 @@ __device__ bool warp_star_improves(const MeshView& m, const Coords& xyz, index_t
     const int pending = alive ? count - done : 0;
     const unsigned busy = __ballot_sync(kFullWarp, pending > 0);
     if (busy == 0) break;
-    // This round's slots: an even share first (at least one each), then
-    // whatever is left to the nodes in lane order. The share is 32 / busy
-    // nodes rounded down to a power of 2: a shift, where the integer
-    // division took a 19-instruction call every round (the decision does
-    // not depend on the share).
-    const int even = 32 >> (32 - __clz(__popc(busy) - 1));
-    const int base = min(pending, even), rest = pending - base;
-    const int base_incl = warp_inclusive_sum(base), rest_incl = warp_inclusive_sum(rest);
-    const int left = 32 - lane_value(base_incl, 31);
-    const int first = (base_incl - base) + min(left, rest_incl - rest);  // this node's first slot
-    const int take = base + max(0, min(left - (rest_incl - rest), rest));
-    const int slots = first + take;  // past this node's last slot
-    // Slot `lane` belongs to the first node whose slots reach past it.
-    int owner = 0;
-    for (int step = 16; step > 0; step >>= 1)
-      if (lane_value(slots, owner + step - 1) <= lane) owner += step;
-    const bool dealt = lane < lane_value(slots, 31);
+    // This round's slots: 32 / (busy nodes) to each, one more to each of
+    // the first `extra` by rank, in rank order; a node with fewer tets
+    // left leaves the rest of its slots idle. Every quantity is a closed
+    // form of the node's rank, so no lane scans the warp.
+    const int nodes = __popc(busy);
+    const int share = small_quotient(32, nodes), extra = 32 - share * nodes;
+    const int rank = __popc(busy & lanes_below);
+    const int take = pending > 0 ? min(pending, share + (rank < extra ? 1 : 0)) : 0;
+    const int first = share * rank + min(rank, extra);  // this node's first slot
+    const unsigned mine = take == 0 ? 0u : take >= 32 ? kFullWarp : ((1u << take) - 1u) << first;
+    if (pending > 0) ranked[rank] = static_cast<unsigned char>(lane);
+    __syncwarp();
+    // Slot `lane` belongs to the node of rank r.
+    const int wide = extra * (share + 1);  // the slots of the nodes with one more
+    const int r = lane < wide ? small_quotient(lane, share + 1) : extra + small_quotient(lane - wide, share);
+    const int owner = ranked[r];
+    const int offset = lane - (share * r + min(r, extra));
+    const bool dealt = offset < lane_value(take, owner);
     const index_t owner_i = lane_value(i, owner), owner_begin = lane_value(begin, owner);
     const index_t owner_lead = lane_value(lead, owner);
-    const int owner_pos = lane_value(done, owner) + lane - lane_value(first, owner);
     const Real owner_min = lane_value(old_min, owner);
     const Vec3<Real> owner_p = lane_value(p, owner), owner_target = lane_value(target, owner);
+    const int owner_pos = lane_value(done, owner) + offset;
     bool objects = false;
     if (dealt) {
       Real q_new;
       const index_t t = m.inc[dealt_entry(owner_begin, owner_lead, owner_pos)];
       objects = tet_objects(m, xyz, t, owner_i, owner_p, owner_target, owner_min, old_quality, q_new);
     }
-    const unsigned objections = __ballot_sync(kFullWarp, objects);
-    const unsigned mine = take == 0 ? 0u : take >= 32 ? kFullWarp : ((1u << take) - 1u) << first;
-    if (objections & mine) alive = false;
+    if (__ballot_sync(kFullWarp, objects) & mine) alive = false;
     done += take;
+    __syncwarp();  // `ranked` is rewritten next round
   }
   return alive;
 }

@@ -162,6 +162,11 @@ TEST(GpuSmoother, WarpSharedStarTestMatchesOneThread) {
   }
 }
 
+TEST(GpuSmoother, DealQuotientIsExact) {
+  SKIP_WITHOUT_GPU();
+  EXPECT_EQ(cuda::small_quotient_errors(), 0u);
+}
+
 TEST(GpuSmoother, ColouredIsBitIdenticalAcrossRuns) {
   SKIP_WITHOUT_GPU();
   for (Precision p : {Precision::Double, Precision::Float}) {

@@ -53,7 +53,11 @@ inline constexpr int kSingleBlockThreads = 1024;
 // the deal's owners' values read from shared memory instead of shuffled
 // took 279.3 / 506.4, and the leads judged by their own lanes before any
 // deal 267.2 / 484.8, against 266.6 / 488.1 (both with two tets a thread in
-// the tet pass).
+// the tet pass). The closed form leaves a node's slots idle past its last
+// tet; the slots of the deal before, with no slot idle, computed without
+// shuffles (prefix sums from six ballots, the owners from the set bits of
+// the nodes' first slots) took 271.0 / 495.0 and 271.4 / 495.2 against
+// 257.4 / 487.2 and 259.1 / 487.3.
 // Nsight Compute on one float sweep's node pass: 2.67 ms, 2.11 G warp
 // instructions and 1.19 G L1 sectors read with 4 lanes per node; 3.01 ms,
 // 1.85 G and 2.10 G with warp-shared stars in star order; 2.33 ms, 1.44 G

@@ -12,7 +12,8 @@
 // warp computes up to 32 tets a round for as long as its nodes have that
 // many left. (Nsight Compute on an H100, one lattice-215 sweep's node pass
 // in float: 2.11 G warp instructions with 4 lanes per node, 1.44 G with
-// this and the lead below; the A/B is in sweep_kernels.cuh.)
+// warp-shared stars and the lead below, 1.37 G with this deal; the A/B is
+// in sweep_kernels.cuh.)
 //
 // The decision is star_improves's: a node's move is accepted when none of
 // its tets objects (tet_objects), whatever the order they were taken in.

@@ -1,7 +1,7 @@
 #pragma once
 // Reductions over a group of G consecutive lanes of a warp (G a power of two
 // up to 32), for kernels that give one item (a node) to several threads; a
-// warp's prefix sum and broadcast, for kernels whose lanes share out work.
+// warp's broadcast, for kernels whose lanes share out work.
 // Every lane named in `mask` must call them: the whole warp by default (also
 // lanes whose group is idle), or just the group (group_mask) where groups of
 // one warp run apart. All lanes of a group get the same result: the same bits
@@ -64,16 +64,6 @@ __device__ __forceinline__ bool group_any(bool b) {
 }
 
 inline constexpr unsigned kFullWarp = 0xffffffffu;
-
-// Sum of v over lanes 0..this one. Every lane of the warp must call it.
-__device__ __forceinline__ int warp_inclusive_sum(int v) {
-  const int lane = static_cast<int>(threadIdx.x & 31u);
-  for (int offset = 1; offset < 32; offset <<= 1) {
-    const int w = __shfl_up_sync(kFullWarp, v, offset);
-    if (lane >= offset) v += w;
-  }
-  return v;
-}
 
 // The value of lane `src`, for the types the hardware shuffles and Vec3.
 template <class T>

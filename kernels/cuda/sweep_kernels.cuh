@@ -86,6 +86,26 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   tets' index and node reads overlap the radius ratios (re-dealt after a
 //   round with an objection): 326.0 / 664.4, and 304.5 / 547.8 held to
 //   48 / 80 registers, against 271.7 / 500.7 without it.
+// Tried after (d), none kept, each against the code above in the same run
+// (its figures in brackets):
+//   a bound that spares a tet its square roots and division when it beats
+//   the old minimum by a margin (Cauchy-Schwarz on the face norms; exact,
+//   it never changes a decision), with the three shuffles of the owner's
+//   position that a cached old quality never reads left out: 271.9 / 496.9
+//   [264.2 / 488.5]. A warp runs the full ratio whenever any of its 32
+//   lanes needs it, which is nearly always; the serial CPU sweep got slower
+//   with it too (59k model, 2687 ms against 2374 on a 2-core host);
+//   the same three shuffles left out alone: 259.1 / 488.4 [258.3 / 487.8,
+//   and 261.1 / 488.0 in a repeat];
+//   two tets a lane each round, both requested before either is judged
+//   (warp_star_test.cuh): 312.2 / 605.7, and 282.8 / 875.7 held to 64
+//   registers [264.2 / 488.5];
+//   128 threads a block 264.7 / 477.6, 512 278.4 / 616.2, 128 held to 42
+//   registers (12 blocks an SM in float) 269.7 / 1079, all held to 64
+//   registers (4 blocks an SM in double) 258.7 / 491.1 [as above];
+//   a persistent grid (as many blocks as the device holds, each striding
+//   over blocks of nodes, counters posted once a block): 350.7 / 562.0
+//   [258.9 / 488.8], and ordinary smoothing 28.7 / 117.9 [26.4 / 33.2].
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

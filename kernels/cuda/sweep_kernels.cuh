@@ -105,7 +105,11 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   registers (4 blocks an SM in double) 258.7 / 491.1 [as above];
 //   a persistent grid (as many blocks as the device holds, each striding
 //   over blocks of nodes, counters posted once a block): 350.7 / 562.0
-//   [258.9 / 488.8], and ordinary smoothing 28.7 / 117.9 [26.4 / 33.2].
+//   [258.9 / 488.8], and ordinary smoothing 28.7 / 117.9 [26.4 / 33.2];
+//   each node's incidence row requested into L1 before the centroid, then
+//   every tet of its star with prefetch.global (star_prefetch.cuh does it
+//   for Coloured) before the old minimum: 422.3 / 526.8 into L1, 422.5 /
+//   526.8 into L2 [257.2 / 486.2, and 259.9 / 486.3 in a repeat].
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

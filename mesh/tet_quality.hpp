@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "mesh/hd.hpp"
+#include "mesh/quality_roots.hpp"
 #include "mesh/vec3.hpp"
 
 namespace tetsmooth {
@@ -38,18 +39,18 @@ TS_HD Real signed_volume6(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d
 //    keeps tets down to ~1e-6 of the unit box in range.
 template <class Real>
 TS_HD Real radius_ratio(Vec3<Real> a, Vec3<Real> b, Vec3<Real> c, Vec3<Real> d) {
-  using std::sqrt;
   constexpr Real kNoise = Real(32) * std::numeric_limits<Real>::epsilon();
   const Vec3<Real> u = b - a, v = c - a, w = d - a;
   const Vec3<Real> vw = cross(v, w), wu = cross(w, u), uv = cross(u, v);
   const Real v6 = dot(u, vw);
   const Real uu = norm2(u), vv = norm2(v), ww = norm2(w);
   if (!(v6 * v6 > kNoise * kNoise * (uu * vv * ww))) return Real(0);  // also NaN and Inf
-  const Real s = Real(1) / (uu > vv ? (uu > ww ? uu : ww) : (vv > ww ? vv : ww));
-  const Real area2 = sqrt(norm2(vw)) + sqrt(norm2(wu)) + sqrt(norm2(uv)) + sqrt(norm2(vw + wu + uv));  // 2 S
-  const Real n = sqrt(norm2((uu * s) * vw + (vv * s) * wu + (ww * s) * uv));                             // |N| s
+  const Real s = quality_div(Real(1), uu > vv ? (uu > ww ? uu : ww) : (vv > ww ? vv : ww));
+  const Real area2 = quality_sqrt(norm2(vw)) + quality_sqrt(norm2(wu)) + quality_sqrt(norm2(uv)) +
+                     quality_sqrt(norm2(vw + wu + uv));                                   // 2 S
+  const Real n = quality_sqrt(norm2((uu * s) * vw + (vv * s) * wu + (ww * s) * uv));  // |N| s
   if (!(area2 > Real(0)) || !(n > Real(0))) return Real(0);
-  return Real(6) * v6 * (v6 < Real(0) ? -v6 : v6) * s / (area2 * n);
+  return quality_div(Real(6) * v6 * (v6 < Real(0) ? -v6 : v6) * s, area2 * n);
 }
 
 // Mean ratio eta = 12 (3|V|)^(2/3) / sum(l^2), signed like the volume.

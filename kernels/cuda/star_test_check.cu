@@ -46,6 +46,18 @@ __global__ void small_quotient_kernel(unsigned long long* errors) {
   if (n <= kMaxNumerator && small_quotient(n, d) != n / d) atomicAdd(errors, 1ull);
 }
 
+template <class Real>
+__global__ void radius_ratio_kernel(const double* corners, std::size_t tets, double* q) {
+  const std::size_t t = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (t >= tets) return;
+  Vec3<Real> v[4];
+  for (int k = 0; k < 4; ++k) {
+    const double* p = corners + 12 * t + 3 * k;
+    v[k] = {static_cast<Real>(p[0]), static_cast<Real>(p[1]), static_cast<Real>(p[2])};
+  }
+  q[t] = radius_ratio(v[0], v[1], v[2], v[3]);
+}
+
 }  // namespace
 
 StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<double>& targets, LeadRule lead) {
@@ -76,6 +88,23 @@ StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<
   }
   const std::vector<unsigned long long> c = counts.download();
   return {static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1]), static_cast<std::size_t>(c[2])};
+}
+
+std::vector<double> device_radius_ratios(const std::vector<double>& corners, Precision precision) {
+  if (corners.size() % 12 != 0)
+    throw UsageError("device_radius_ratios: " + std::to_string(corners.size()) + " corner values, not 12 a tet");
+  const std::size_t tets = corners.size() / 12;
+  if (tets == 0) return {};
+  DeviceBuffer<double> d_corners, q(tets);
+  d_corners.upload(corners);
+  constexpr unsigned kBlock = 128;
+  const unsigned blocks = static_cast<unsigned>((tets + kBlock - 1) / kBlock);
+  if (precision == Precision::Float)
+    radius_ratio_kernel<float><<<blocks, kBlock>>>(d_corners.data(), tets, q.data());
+  else
+    radius_ratio_kernel<double><<<blocks, kBlock>>>(d_corners.data(), tets, q.data());
+  CUDA_CHECK_LAUNCH();
+  return q.download();
 }
 
 std::size_t small_quotient_errors() {

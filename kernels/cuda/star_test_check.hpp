@@ -1,11 +1,12 @@
 #pragma once
 // Checks of warp_star_improves (warp_star_test.cuh) on the device, for
 // tests: against star_improves, the one-thread form the CPU runs, on the
-// same inputs; and of the quotient its deal computes. Plain C++: callers
-// need no CUDA headers.
+// same inputs; of the quotient its deal computes; and of radius_ratio in
+// the float sweeps' arithmetic. Plain C++: callers need no CUDA headers.
 #include <cstddef>
 #include <vector>
 
+#include "kernels/smooth_options.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::cuda {
@@ -31,5 +32,11 @@ StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<
 // small_quotient(n, d) differs from n / d on the device (every pair the deal
 // can ask for, so 0 means it is exact).
 std::size_t small_quotient_errors();
+
+// radius_ratio of each tet (corners[12 t .. 12 t + 11]: x, y, z of its four
+// corners) on the device in `precision`, built as the sweeps are built
+// (in float: approximate square roots and division, subnormal operands of
+// both taken as zero; mesh/quality_roots.hpp).
+std::vector<double> device_radius_ratios(const std::vector<double>& corners, Precision precision);
 
 }  // namespace tetsmooth::cuda

@@ -46,9 +46,12 @@ __device__ __forceinline__ index_t dealt_entry(index_t begin, index_t lead, int 
 
 // floor(n / d) for 0 <= n <= 32 and 1 <= d <= 33: (n + 1/2) / d lies
 // at least 1/(2d) from an integer, far beyond the approximate division's
-// error, so truncating it is exact (and costs no division subroutine).
+// error, so truncating it is exact (and costs no division subroutine; the
+// operands are never subnormal, so the division need not test for them).
 __device__ __forceinline__ int small_quotient(int n, int d) {
-  return __float2int_rz(__fdividef(static_cast<float>(n) + 0.5f, static_cast<float>(d)));
+  float q;
+  asm("div.approx.ftz.f32 %0, %1, %2;" : "=f"(q) : "f"(static_cast<float>(n) + 0.5f), "f"(static_cast<float>(d)));
+  return __float2int_rz(q);
 }
 
 // Whether node i's move from p to target passes the test, for this lane's

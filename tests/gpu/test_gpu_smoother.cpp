@@ -15,6 +15,7 @@
 #include "kernels/cuda/gpu_pipeline.hpp"
 #include "kernels/cuda/star_test_check.hpp"
 #include "kernels/smoother.hpp"
+#include "mesh/tet_quality.hpp"
 #include "mesh/topology.hpp"
 #include "test_meshes.hpp"
 
@@ -165,6 +166,31 @@ TEST(GpuSmoother, WarpSharedStarTestMatchesOneThread) {
 TEST(GpuSmoother, DealQuotientIsExact) {
   SKIP_WITHOUT_GPU();
   EXPECT_EQ(cuda::small_quotient_errors(), 0u);
+}
+
+// The float sweeps' radius ratio (approximate square roots and division,
+// subnormal operands taken as zero) keeps small tets, down to the size
+// below which float loses their volume, as the CPU's double does.
+TEST(GpuSmoother, FloatRadiusRatioKeepsSmallTets) {
+  SKIP_WITHOUT_GPU();
+  const Vec3<double> shapes[2][4] = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                                     {{0.1, 0.2, 0.05}, {1.3, 0.1, 0.2}, {0.4, 0.9, 0.1}, {0.5, 0.4, 0.7}}};
+  std::vector<double> corners, expected;
+  for (double h : {1e-1, 1e-2, 1e-3, 1e-4, 1e-5, 1e-6})
+    for (const auto& shape : shapes) {
+      Vec3<double> v[4];
+      for (int k = 0; k < 4; ++k) {
+        v[k] = h * shape[k];
+        corners.insert(corners.end(), {v[k].x, v[k].y, v[k].z});
+      }
+      expected.push_back(radius_ratio(v[0], v[1], v[2], v[3]));
+    }
+  for (Precision p : {Precision::Float, Precision::Double}) {
+    const std::vector<double> q = cuda::device_radius_ratios(corners, p);
+    ASSERT_EQ(q.size(), expected.size());
+    for (std::size_t t = 0; t < q.size(); ++t)
+      EXPECT_NEAR(q[t], expected[t], p == Precision::Float ? 1e-5 : 1e-12) << to_string(p) << " tet " << t;
+  }
 }
 
 TEST(GpuSmoother, ColouredIsBitIdenticalAcrossRuns) {

@@ -19,10 +19,9 @@
 // CPU's decisions) takes from 18.2 rounds a warp in the first sweep to 13.5
 // in the last, where 17.7 and 12.9 would do if every slot of every round
 // computed a tet that the decision needed: the rounds are the stars' own
-// work, not the deal's waste. Giving each lane two tets
-// a round halves the rounds, but the registers for a second tet's corners
-// cost more occupancy than the halved deal and shuffles save (the A/B is in
-// sweep_kernels.cuh).
+// work, not the deal's waste. Giving each lane two tets a round halves the
+// rounds, but the registers for a second tet's corners cost more occupancy
+// than the halved deal and shuffles save (the A/B is in sweep_kernels.cuh).
 //
 // The decision is star_improves's: a node's move is accepted when none of
 // its tets objects (tet_objects), whatever the order they were taken in.

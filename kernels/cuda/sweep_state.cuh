@@ -83,7 +83,8 @@ __device__ __forceinline__ void add_sweep_stats(const SweepCounters& c, int swee
 // The same aggregated over the block, for kernels with a thread (or a few)
 // per node, whose warps would otherwise all update the sweep's two counters:
 // hundreds of thousands of warps per MultiBlock sweep of a 10M-node mesh,
-// all at the same two addresses. Every thread of the block must call it, once per kernel.
+// all at the same two addresses. Every thread of the block must call it,
+// once per kernel.
 __device__ __forceinline__ void add_sweep_stats_block(const SweepCounters& c, int sweep, unsigned accepted,
                                                       double disp2) {
   const SweepStats s =

@@ -109,7 +109,32 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   each node's incidence row requested into L1 before the centroid, then
 //   every tet of its star with prefetch.global (star_prefetch.cuh does it
 //   for Coloured) before the old minimum: 422.3 / 526.8 into L1, 422.5 /
-//   526.8 into L2 [257.2 / 486.2, and 259.9 / 486.3 in a repeat].
+//   526.8 into L2 [257.2 / 486.2, and 259.9 / 486.3 in a repeat];
+//   a sweep in one launch: blocks took tet tiles (512 tets' qualities) and
+//   node tiles (256 nodes) in turn from a ticket counter, each node tile
+//   after, and waiting on flags for, the tet tiles its stars read, so that
+//   the tet pass's streaming overlapped the node pass's gathers and those
+//   found their tets in L2: 329.8 / 558.5 [248.4 / 482.2]. Its waits read
+//   the flags with acquire loads, each followed in the SASS by an L1
+//   invalidation (CCTL.IVALL); polled without them, 296.3 / 541.0 [249.0 /
+//   482.6]; with node tiles put 256 or 1024 tet tiles after their last
+//   need, so that they seldom wait, 300.6 / 549.5 and 304.3 / 561.0, and
+//   the latter with one acquire fence a node tile 318.2 / 576.5 [246.4 /
+//   483.5]. Not the waits, then: tet tiles beside node tiles on an SM cost
+//   the node tiles more than the overlap gains (our reading, not profiled);
+//   nodes renumbered along a Morton curve of their positions, tets sorted
+//   by their first corner (on the host, before the timed pipeline): 269.6 /
+//   508.7 [248.7 / 482.6], the lattice's own order being the better one. On
+//   the 109k TetGen model, whose node order has little locality, MultiBlock
+//   took 0.888 ms against 1.506 in float and 1.49 against 2.01 in double,
+//   but Coloured, the pipeline that the 109k figures time, only 1.14
+//   against 1.21 and 2.11 against 2.18, about 0.07 ms that a renumbering
+//   inside the timed pipeline would have to cost less than (not built);
+//   a slot's deal (its owner, the owner's values, its place in the star)
+//   kept across rounds while the warp's busy nodes stay the same, only the
+//   place advancing: 253.4 / 570.4 at the 56 / 92 registers it takes, and
+//   251.1 / 495.9 held to 48 / 80 (spilling) [245.6 / 482.1, and 246.1 /
+//   481.8 in a repeat].
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

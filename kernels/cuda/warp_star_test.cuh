@@ -21,7 +21,9 @@
 // computed a tet that the decision needed: the rounds are the stars' own
 // work, not the deal's waste. Giving each lane two tets a round halves the
 // rounds, but the registers for a second tet's corners cost more occupancy
-// than the halved deal and shuffles save (the A/B is in sweep_kernels.cuh).
+// than the halved deal and shuffles save; so does keeping a slot's deal
+// across rounds in which no node drops out (both A/Bs are in
+// sweep_kernels.cuh).
 //
 // The decision is star_improves's: a node's move is accepted when none of
 // its tets objects (tet_objects), whatever the order they were taken in.

@@ -134,7 +134,26 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   kept across rounds while the warp's busy nodes stay the same, only the
 //   place advancing: 253.4 / 570.4 at the 56 / 92 registers it takes, and
 //   251.1 / 495.9 held to 48 / 80 (spilling) [245.6 / 482.1, and 246.1 /
-//   481.8 in a repeat].
+//   481.8 in a repeat];
+//   after the round of leads, two tets a slot, computed one after the
+//   other so that no second tet's corners are held, to halve the deal and
+//   the votes a tet: 255.4 in float, 255.7 with three a slot, 257.6 with
+//   four, 259.0 with two in the leads' round as well, 255.1 with two held
+//   to 48 registers [245.0, and 244.7 at the end of the run]. Nsight
+//   Compute counts as many instructions as before (1.225 G against 1.223 G):
+//   the coarser slots compute the tets that the deal would have spared;
+//   the most L1 the SM offers (8 KB of shared memory, the rank rows of
+//   warp_star_test.cuh cut to the block's 8 warps, so that 5 blocks still
+//   fit): an L1 hit rate of 84.3% against 83.8%, and 244.6 / 243.9 in
+//   float [245.7 / 245.1]; without the cut, 4 blocks fit: 261.9 [244.9].
+// Where the node pass waits (Nsight Compute's warp stall samples by SASS
+// instruction, one float sweep of the code above, H100): 77% of them fall
+// in the star test's rounds, 9% in the old minimum and 9% in the centroid.
+// The three dependent reads of a round hold most: 11% of all samples wait
+// on the dealt incidence entry, 21% on that tet's nodes and 11% on its
+// corners. The pass is bound by the latency of that chain (58% of its
+// stalls are on L1TEX loads, 60% of issue slots used), not by its
+// instructions or its DRAM traffic (1.6 TB/s).
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

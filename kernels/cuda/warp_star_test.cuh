@@ -22,8 +22,9 @@
 // work, not the deal's waste. Giving each lane two tets a round halves the
 // rounds, but the registers for a second tet's corners cost more occupancy
 // than the halved deal and shuffles save; so does keeping a slot's deal
-// across rounds in which no node drops out (both A/Bs are in
-// sweep_kernels.cuh).
+// across rounds in which no node drops out. Two tets a slot computed one
+// after the other save no instructions either: the coarser slots compute
+// tets that the deal would have spared (the A/Bs are in sweep_kernels.cuh).
 //
 // Nor can a cleverer choice of tets cut that work by much. In a host replay
 // of the CPU's rule (lattice-30, 100 Jacobi sweeps without the repair, 45% of

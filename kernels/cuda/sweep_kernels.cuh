@@ -145,7 +145,16 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   the most L1 the SM offers (8 KB of shared memory, the rank rows of
 //   warp_star_test.cuh cut to the block's 8 warps, so that 5 blocks still
 //   fit): an L1 hit rate of 84.3% against 83.8%, and 244.6 / 243.9 in
-//   float [245.7 / 245.1]; without the cut, 4 blocks fit: 261.9 [244.9].
+//   float [245.7 / 245.1]; without the cut, 4 blocks fit: 261.9 [244.9];
+//   each warp taking its next 32 nodes from a ticket counter (a grid of as
+//   many blocks as the device holds, reset by the tet pass), so that no
+//   block keeps its place on an SM for its slowest warp: 246.3 / 246.3 in
+//   float [245.2 / 245.2], and 275.3 held to 40 registers (6 blocks an SM):
+//   blocks that wait on their last warp cost nothing measurable;
+//   the incidence rows, their offsets, the neighbour rows and tet_q read
+//   through the read-only path (__ldg), as the tets already are: 234.4 /
+//   234.4 in float and 478.5 / 480.5 in double [233.8 / 233.9 and 476.1 /
+//   477.7], on an H200 (the only figures here not taken on an H100).
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep of the code above, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.
@@ -154,6 +163,22 @@ inline constexpr int kSingleBlockThreads = 1024;
 // corners. The pass is bound by the latency of that chain (58% of its
 // stalls are on L1TEX loads, 60% of issue slots used), not by its
 // instructions or its DRAM traffic (1.6 TB/s).
+// What 2x of the memory floor asks of the two passes (float, lattice-215: a
+// floor of 0.955 ms, so 1.91 ms a sweep). The node pass keeps L1/TEX 77%
+// busy for 1.95 ms, the tet pass DRAM 74% for 0.525 ms
+// (results/h100/ncu_lattice_MultiBlock.txt, the code above). With the loads
+// they make now, the node pass cannot take less than 1.51 ms, nor the tet
+// pass less than 0.39 ms, even with its busiest unit at full throughput:
+// 1.90 ms together, 1.99x. So 2x needs both passes at their peak, or fewer
+// L1 requests for each tet the star test computes and then more of their
+// latency hidden. The cuts of L1 requests tried (each corner in one padded
+// load, star faces read through the row) saved at most 3%, since what holds
+// the pass today is its reads' latency, not L1's throughput. Nor does a
+// level of the chain come out for free: an incidence entry that carries
+// its tet's other three corners (16 B with the tet's index, 3.8 GB for
+// lattice-215) would replace 1.9 GB of incidence entries and tets with
+// 3.8 GB, leaving the node pass about 4.9 GB to read: 1.48 ms at the
+// H100's peak DRAM bandwidth (3.35 TB/s), so as tight as now (not built).
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

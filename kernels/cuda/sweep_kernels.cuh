@@ -154,7 +154,18 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   the incidence rows, their offsets, the neighbour rows and tet_q read
 //   through the read-only path (__ldg), as the tets already are: 234.4 /
 //   234.4 in float and 478.5 / 480.5 in double [233.8 / 233.9 and 476.1 /
-//   477.7], on an H200 (the only figures here not taken on an H100).
+//   477.7], on an H200 (the only figures here not taken on an H100);
+//   a node pass tiled in shared memory (a prototype, its tiles built on the
+//   host outside the timed run): a block first stages the positions of all
+//   nodes its 256 nodes' stars touch (1,627 on average, at most 1,636, in
+//   2,048 slots of 12 B), then reads neighbours and corners from there
+//   through 16-bit places kept for each neighbour entry and four for each
+//   incidence entry (2.4 GB more on the device): 233.2 in float [245.5].
+//   Nsight Compute: a node pass of 1.83 ms against 1.95, with 40 registers
+//   and 65% of warps active against 48 and 52%, but 1.33 G instructions
+//   against 1.22 G, 70% of issue slots used, and 3.37 GB of DRAM reads
+//   against 3.04. Bound by issue now, it would need 93% of the issue slots
+//   for 2x; not kept, for 5% at the cost of 2.4 GB and a topology step.
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep of the code above, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.
@@ -179,6 +190,9 @@ inline constexpr int kSingleBlockThreads = 1024;
 // lattice-215) would replace 1.9 GB of incidence entries and tets with
 // 3.8 GB, leaving the node pass about 4.9 GB to read: 1.48 ms at the
 // H100's peak DRAM bandwidth (3.35 TB/s), so as tight as now (not built).
+// The tiled node pass above takes the tets' level out, and serves the
+// corners from shared memory, for 0.33 GB more DRAM reads; it still takes
+// 2.33 ms a sweep, 2.44x of that floor.
 inline constexpr int kMultiBlockChunk = 8;
 inline constexpr int kOldMinChunk = 4;
 

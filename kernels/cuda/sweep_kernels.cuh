@@ -166,6 +166,13 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   against 1.22 G, 70% of issue slots used, and 3.37 GB of DRAM reads
 //   against 3.04. Bound by issue now, it would need 93% of the issue slots
 //   for 2x; not kept, for 5% at the cost of 2.4 GB and a topology step.
+//   no deal at all: a thread a node settles the centroid, the old minimum
+//   and the lead tet, queues the nodes still undecided in shared memory,
+//   and groups of G lanes then take the queue, each node's other tets G a
+//   round, a group taking the next node as soon as its own is settled
+//   (a prototype, 40 registers): 255.6 / 500.2 with G = 8 and 254.0 /
+//   508.1 with G = 4 [244.5 / 482.3, and 244.6 / 481.3 at the end of the
+//   run]; not profiled further, since it lost in both precisions.
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep of the code above, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.

@@ -64,9 +64,7 @@ __device__ __forceinline__ index_t dealt_entry(index_t begin, index_t lead, int 
 // error, so truncating it is exact (and costs no division subroutine; the
 // operands are never subnormal, so the division need not test for them).
 __device__ __forceinline__ int small_quotient(int n, int d) {
-  float q;
-  asm("div.approx.ftz.f32 %0, %1, %2;" : "=f"(q) : "f"(static_cast<float>(n) + 0.5f), "f"(static_cast<float>(d)));
-  return __float2int_rz(q);
+  return __float2int_rz(div_approx_ftz(static_cast<float>(n) + 0.5f, static_cast<float>(d)));
 }
 
 // Whether node i's move from p to target passes the test, for this lane's

@@ -21,17 +21,6 @@
 
 namespace tetsmooth {
 
-#ifdef __CUDACC__
-// a / b by the hardware's approximate division, a subnormal operand taken as
-// zero (device code only): quality_div below under TETSMOOTH_FTZ_FLOAT_ROOTS,
-// and small_quotient (kernels/cuda/warp_star_test.cuh) always.
-__device__ __forceinline__ float div_approx_ftz(float a, float b) {
-  float r;
-  asm("div.approx.ftz.f32 %0, %1, %2;" : "=f"(r) : "f"(a), "f"(b));
-  return r;
-}
-#endif
-
 TS_HD double quality_sqrt(double x) { return std::sqrt(x); }
 TS_HD double quality_div(double a, double b) { return a / b; }
 
@@ -47,7 +36,9 @@ TS_HD float quality_sqrt(float x) {
 
 TS_HD float quality_div(float a, float b) {
 #if defined(__CUDA_ARCH__) && defined(TETSMOOTH_FTZ_FLOAT_ROOTS)
-  return div_approx_ftz(a, b);
+  float r;
+  asm("div.approx.ftz.f32 %0, %1, %2;" : "=f"(r) : "f"(a), "f"(b));
+  return r;
 #else
   return a / b;
 #endif

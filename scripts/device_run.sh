@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs on the GPU machine from the repository root, with gpu-bundle/ carried
 # there: GPU tests, compute-sanitizer and the benchmarks, everything written
-# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile] [profile-lattice]
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile] [profile-lattice] [profile-source]
 # (default: tests sanitize bench)
 set -uo pipefail
 b=$(cd "$(dirname "$0")" && pwd)
@@ -87,6 +87,21 @@ for step in $steps; do
         echo "ncu $1 exit $?"
         grep -E "^  [a-z].*\(|dram__bytes|lts__t_sector_hit|inst_executed|Duration|DRAM Throughput|Memory Throughput|L2 Hit|L1/TEX Hit|Achieved Occupancy|Issue Slots|Stall" "$out/ncu_lattice_$1.txt" | cut -c1-140 | head -40
       done
+      ;;
+    profile-source)
+      # Nsight Compute's source counters for one mid-run float MultiBlock
+      # node pass of lattice-215: executed instructions and stall samples for
+      # each SASS instruction (ncu_source_MultiBlock.csv), to see what a
+      # round of the star test costs and where it waits.
+      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      timeout 420 "$ncu" --clock-control none --kernel-name regex:sweep_kernel --launch-skip 50 --launch-count 1 \
+        --section SourceCounters --section WarpStateStats --section InstructionStats --section SpeedOfLight \
+        -o "$out/ncu_source_MultiBlock" "$b/bench_smooth" --no-cpu --precision=float --scaling=lattice-215 \
+        --benchmark_filter='^FormB/AoS/MultiBlock/lattice' --benchmark_min_time=0.01 > "$out/ncu_source.log" 2>&1
+      echo "ncu exit $?"
+      "$ncu" --import "$out/ncu_source_MultiBlock.ncu-rep" --page source --csv --print-source sass \
+        > "$out/ncu_source_MultiBlock.csv"
+      echo "source export $? ($(wc -l < "$out/ncu_source_MultiBlock.csv") lines)"
       ;;
     study)
       "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \

@@ -39,11 +39,43 @@ __global__ void compare_star_tests_kernel(MeshView m, AosCoords<double> xyz, con
   if (reference != shared) atomicAdd(&counts[2], 1ull);
 }
 
-constexpr int kMaxNumerator = 32, kMaxDivisor = 33;
-
-__global__ void small_quotient_kernel(unsigned long long* errors) {
-  const int n = static_cast<int>(threadIdx.x), d = static_cast<int>(blockIdx.x) + 1;
-  if (n <= kMaxNumerator && small_quotient(n, d) != n / d) atomicAdd(errors, 1ull);
+// One round of the deal (deal_round) for warps whose lanes have
+// pseudo-random pending counts (0 to 40, so that a warp holds from one busy
+// node to 32, some short of their share), against the rule written out with
+// integer division: counts [0] busy nodes dealt to, [1] nodes whose number
+// of slots breaks the rule, [2] nodes whose slots are not those of their
+// mask, not where the rule puts them, or not in the order of their tets.
+__global__ void deal_check_kernel(unsigned seed, unsigned long long* counts) {
+  __shared__ unsigned char rows[32][32];
+  const int lane = static_cast<int>(threadIdx.x & 31u);
+  unsigned h = (seed * 0x9e3779b9u) ^ ((blockIdx.x * blockDim.x + threadIdx.x) * 0x85ebca6bu);
+  h ^= h >> 15;
+  h *= 0x2c1b3c6du;
+  h ^= h >> 12;
+  const unsigned w = __shfl_sync(kFullWarp, h, 0);           // one draw per warp:
+  const int span = 1 + static_cast<int>((w >> 8) % 41);      // how many tets its nodes have at most,
+  const bool idle = static_cast<int>((w >> 16) % 33) > lane;  // and how many of its lanes have none
+  const int pending = idle ? 0 : static_cast<int>(h % 64) % span;
+  const unsigned busy = __ballot_sync(kFullWarp, pending > 0);
+  if (busy == 0) return;
+  const RoundDeal d = deal_round(busy, pending, lane, rows[threadIdx.x >> 5]);
+  const int nodes = __popc(busy), rank = __popc(busy & ((1u << lane) - 1u));
+  const int share = 32 / nodes, extra = 32 % nodes;
+  const int take = pending > 0 ? min(pending, share + (rank < extra ? 1 : 0)) : 0;
+  const int first = share * rank + min(rank, extra);
+  const int owner_take = __shfl_sync(kFullWarp, d.take, d.owner);
+  const bool dealt = d.offset >= 0 && d.offset < owner_take;
+  bool bad_slots = pending > 0 && d.mine != (take >= 32 ? kFullWarp : ((1u << take) - 1u) << first);
+  for (int node = 0; node < 32; ++node) {
+    const bool serves = dealt && d.owner == node;
+    const int node_first = __shfl_sync(kFullWarp, first, node);
+    const unsigned served = __ballot_sync(kFullWarp, serves);
+    const bool misplaced = __any_sync(kFullWarp, serves && d.offset != lane - node_first) != 0;
+    if (lane == node && (served != d.mine || misplaced)) bad_slots = true;
+  }
+  if (pending > 0) atomicAdd(&counts[0], 1ull);
+  if (d.take != take) atomicAdd(&counts[1], 1ull);
+  if (bad_slots) atomicAdd(&counts[2], 1ull);
 }
 
 template <class Real>
@@ -107,12 +139,16 @@ std::vector<double> device_radius_ratios(const std::vector<double>& corners, Pre
   return q.download();
 }
 
-std::size_t small_quotient_errors() {
-  DeviceBuffer<unsigned long long> errors(1);
-  CUDA_CHECK(cudaMemset(errors.data(), 0, errors.bytes()));
-  small_quotient_kernel<<<kMaxDivisor, 64>>>(errors.data());
-  CUDA_CHECK_LAUNCH();
-  return static_cast<std::size_t>(errors.download()[0]);
+DealCheck check_deal() {
+  constexpr unsigned kSeeds = 8, kBlocks = 256, kBlock = 256;
+  DeviceBuffer<unsigned long long> counts(3);
+  CUDA_CHECK(cudaMemset(counts.data(), 0, counts.bytes()));
+  for (unsigned seed = 0; seed < kSeeds; ++seed) {
+    deal_check_kernel<<<kBlocks, kBlock>>>(seed, counts.data());
+    CUDA_CHECK_LAUNCH();
+  }
+  const std::vector<unsigned long long> c = counts.download();
+  return {static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1] + c[2])};
 }
 
 }  // namespace tetsmooth::cuda

@@ -1,7 +1,7 @@
 #pragma once
 // Checks of warp_star_improves (warp_star_test.cuh) on the device, for
 // tests: against star_improves, the one-thread form the CPU runs, on the
-// same inputs; of the quotient its deal computes; and of radius_ratio in
+// same inputs; of its deal; and of radius_ratio in
 // the float sweeps' arithmetic. Plain C++: callers need no CUDA headers.
 #include <cstddef>
 #include <vector>
@@ -28,10 +28,15 @@ struct StarTestAgreement {
 // kernel with a thread per node.
 StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<double>& targets, LeadRule lead);
 
-// The pairs (n, d), 0 <= n <= 32 and 1 <= d <= 33, for which the deal's
-// small_quotient(n, d) differs from n / d on the device (every pair the deal
-// can ask for, so 0 means it is exact).
-std::size_t small_quotient_errors();
+// One round of the deal (deal_round) for 16,384 warps of pseudo-random
+// pending counts, against its rule (warp_star_test.cuh) written out with
+// integer division: how many slots each busy node gets, which ones, and
+// that they serve its tets in order.
+struct DealCheck {
+  std::size_t nodes = 0;   // busy nodes dealt to
+  std::size_t broken = 0;  // nodes dealt other than by the rule
+};
+DealCheck check_deal();
 
 // radius_ratio of each tet (corners[12 t .. 12 t + 11]: x, y, z of its four
 // corners) on the device in `precision`, built as the sweeps are built

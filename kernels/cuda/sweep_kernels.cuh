@@ -173,6 +173,18 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   (a prototype, 40 registers): 255.6 / 500.2 with G = 8 and 254.0 /
 //   508.1 with G = 4 [244.5 / 482.3, and 244.6 / 481.3 at the end of the
 //   run]; not profiled further, since it lost in both precisions.
+// Nsight Compute's source counters (the float node pass at 98121a7, H100)
+// split a round of the star test, 252 instructions, into the deal (67: the
+// slots' owners, then nine shuffles of their values), the dealt tet's
+// index, nodes and corners (50), its radius ratio (105) and the vote (30);
+// the rounds are 80% of the pass's 1.22 G instructions. Of the stall
+// samples, 39% wait in the round's dependent loads, 20% in the radius
+// ratio, 13% in the deal, 10% in the old minimum and 8% in the centroid.
+// Kept from that: the owners found by one OR of the nodes' first slots
+// (deal_round in warp_star_test.cuh) and AoS points addressed in 64 bits
+// (kernels/coords.hpp), 2-3% together; a shared-memory row addressed in 32
+// bits once instead of every round (inline PTX) saved nothing measurable
+// (229.5 / 464.7 against 229.2 / 464.0 on an H200).
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep of the code above, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.

@@ -163,9 +163,11 @@ TEST(GpuSmoother, WarpSharedStarTestMatchesOneThread) {
   }
 }
 
-TEST(GpuSmoother, DealQuotientIsExact) {
+TEST(GpuSmoother, DealGivesEachNodeItsSlots) {
   SKIP_WITHOUT_GPU();
-  EXPECT_EQ(cuda::small_quotient_errors(), 0u);
+  const cuda::DealCheck c = cuda::check_deal();
+  EXPECT_GT(c.nodes, 100000u);
+  EXPECT_EQ(c.broken, 0u);
 }
 
 // The float sweeps' radius ratio (approximate square roots and division,

@@ -184,7 +184,13 @@ inline constexpr int kSingleBlockThreads = 1024;
 // (deal_round in warp_star_test.cuh) and AoS points addressed in 64 bits
 // (kernels/coords.hpp), 2-3% together; a shared-memory row addressed in 32
 // bits once instead of every round (inline PTX) saved nothing measurable
-// (229.5 / 464.7 against 229.2 / 464.0 on an H200).
+// (229.5 / 464.7 against 229.2 / 464.0 on an H200). Tried after it, against
+// 240.6 / 470.7 and 240.3 / 471.5 (H100): each node's first 8 incidence
+// entries in dealt order staged in shared memory before the rounds (read
+// again from L1 just after the old minimum), so that a round's first
+// level of loads is a shared-memory read: 257.6 / 585.6 and 258.5 / 586.9,
+// and 258.6 / 594.0 with 16 (10 KB and 18 KB of shared memory a block;
+// not profiled, having lost in both precisions).
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep of the code above, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.

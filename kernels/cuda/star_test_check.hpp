@@ -1,8 +1,8 @@
 #pragma once
 // Checks of warp_star_improves (warp_star_test.cuh) on the device, for
 // tests: against star_improves, the one-thread form the CPU runs, on the
-// same inputs; of its deal; and of radius_ratio in
-// the float sweeps' arithmetic. Plain C++: callers need no CUDA headers.
+// same inputs; of its deal; and of radius_ratio in the float sweeps'
+// arithmetic. Plain C++: callers need no CUDA headers.
 #include <cstddef>
 #include <vector>
 

@@ -49,6 +49,48 @@ struct NodeMove {
 // can share one node (lane l handles entries l, l + stride, ...) and combine
 // the parts; the CPU calls them with lane 0 and stride 1.
 
+// A lane's walk over entries [begin, end) of a CSR row array, kChunk
+// entries a step: entries first + u * stride for u < kChunk, those in
+// [begin, end) valid. On the device a lone lane (lane 0, stride 1) with
+// whole quads of entries a step walks aligned quads from the quad holding
+// `begin`, each one 16-byte load where kChunk scalar loads took a tag lookup
+// each: a warp whose lanes read 32 rows touches as many cache lines per load
+// either way. That needs every device CSR array 16-byte aligned and readable
+// to its last whole quad (DeviceBuffer pads its allocations to that).
+template <int kChunk>
+struct RowWalk {
+  index_t begin, end;
+  int stride;
+  bool quads;
+  TS_HD RowWalk(index_t b, index_t e, int lane, int s) : begin(b), end(e), stride(s), quads(false) {
+#ifdef __CUDA_ARCH__
+    quads = kChunk % 4 == 0 && lane == 0 && s == 1;
+#endif
+    first = quads ? (b & ~index_t(3)) : b + lane;
+  }
+  index_t first;  // the chunk's first entry
+  TS_HD bool more() const { return first < end; }
+  TS_HD void next() { first += kChunk * stride; }
+  TS_HD index_t entry(int u) const { return first + u * stride; }
+  TS_HD bool valid(int u) const { return entry(u) >= begin && entry(u) < end; }
+  // The chunk's items of `row` (those of invalid entries unspecified).
+  TS_HD void fetch(const index_t* row, index_t (&item)[kChunk]) const {
+#ifdef __CUDA_ARCH__
+    if (quads) {
+      for (int q = 0; q < kChunk / 4; ++q) {
+        const int4 v = first + 4 * q < end ? __ldg(reinterpret_cast<const int4*>(row + first) + q) : int4{0, 0, 0, 0};
+        item[4 * q] = v.x;
+        item[4 * q + 1] = v.y;
+        item[4 * q + 2] = v.z;
+        item[4 * q + 3] = v.w;
+      }
+      return;
+    }
+#endif
+    for (int u = 0; u < kChunk; ++u) item[u] = valid(u) ? row[entry(u)] : index_t(0);
+  }
+};
+
 // Sum of the positions of the neighbours in entries [begin, end) of the
 // neighbour CSR (a node's row, or none), over this lane's share. The lane
 // fetches kChunk of its entries before adding any, so a GPU lane with
@@ -58,14 +100,14 @@ struct NodeMove {
 template <class Real, int kChunk = 1, class Coords>
 TS_HD Vec3<Real> row_sum(const MeshView& m, const Coords& xyz, index_t begin, index_t end, int lane, int stride) {
   Vec3<Real> s{0, 0, 0};
-  for (index_t first = begin + lane; first < end; first += kChunk * stride) {
-    Vec3<Real> v[kChunk]{};  // entries past the row stay unused
-    for (int u = 0; u < kChunk; ++u) {
-      const index_t k = first + u * stride;
-      if (k < end) v[u] = xyz.get(m.nbr[k]);
-    }
+  for (RowWalk<kChunk> w(begin, end, lane, stride); w.more(); w.next()) {
+    index_t nb[kChunk];
+    w.fetch(m.nbr, nb);
+    Vec3<Real> v[kChunk]{};  // entries outside the row stay unused
     for (int u = 0; u < kChunk; ++u)
-      if (first + u * stride < end) s = s + v[u];
+      if (w.valid(u)) v[u] = xyz.get(nb[u]);
+    for (int u = 0; u < kChunk; ++u)
+      if (w.valid(u)) s = s + v[u];
   }
   return s;
 }
@@ -151,18 +193,17 @@ template <class Real, int kChunk = 1, class Coords, class OldQuality = FreshOldQ
 TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, int lane, int stride,
                         const OldQuality& old_quality = {}, index_t* at = nullptr) {
   Real q_min = Real(2);
-  const index_t begin = m.inc_off[i] + lane, end = m.inc_off[i + 1];
-  index_t k_min = begin;
-  for (index_t first = begin; first < end; first += kChunk * stride) {
+  const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
+  index_t k_min = begin + lane;
+  for (RowWalk<kChunk> w(begin, end, lane, stride); w.more(); w.next()) {
+    index_t t[kChunk];
+    w.fetch(m.inc, t);
     Real q[kChunk];
-    for (int u = 0; u < kChunk; ++u) {
-      const index_t k = first + u * stride;
-      q[u] = k < end ? old_quality(m, xyz, m.inc[k], i, p) : Real(2);
-    }
+    for (int u = 0; u < kChunk; ++u) q[u] = w.valid(u) ? old_quality(m, xyz, t[u], i, p) : Real(2);
     for (int u = 0; u < kChunk; ++u)
       if (q[u] < q_min || q[u] != q[u]) {  // a NaN stays, and rejects the move as it did tet by tet
         q_min = q[u];
-        k_min = first + u * stride;
+        k_min = w.entry(u);
       }
   }
   if (at) *at = k_min;

@@ -28,14 +28,17 @@ class DeviceBuffer {
   }
   ~DeviceBuffer() { release(); }
 
-  // Reallocates only when growing; contents are not preserved.
+  // Reallocates only when growing; contents are not preserved. The
+  // allocation is rounded up to whole 16-byte blocks, so that a kernel may
+  // read the last block of a buffer whole (RowWalk in node_update.hpp reads
+  // CSR rows a 16-byte quad at a time).
   void resize(std::size_t n) {
     if (n <= capacity_) {
       size_ = n;
       return;
     }
     release();
-    if (n > 0) CUDA_CHECK(cudaMalloc(reinterpret_cast<void**>(&ptr_), n * sizeof(T)));
+    if (n > 0) CUDA_CHECK(cudaMalloc(reinterpret_cast<void**>(&ptr_), (n * sizeof(T) + 15) / 16 * 16));
     size_ = capacity_ = n;
   }
   void upload(const T* host, std::size_t n, cudaStream_t stream = nullptr) {

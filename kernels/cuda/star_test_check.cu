@@ -6,12 +6,29 @@
 #include "kernels/coords.hpp"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_buffer.hpp"
+#include "kernels/cuda/sweep_kernels.cuh"
 #include "kernels/cuda/warp_star_test.cuh"
 #include "mesh/errors.hpp"
 #include "mesh/topology.hpp"
 
 namespace tetsmooth::cuda {
 namespace {
+
+// A mesh and its topology copied to the device, with double AoS coordinates.
+struct DeviceMeshCopy {
+  DeviceBuffer<index_t> tets, nbr_off, nbr, inc_off, inc;
+  DeviceBuffer<double> xyz;
+  DeviceMeshCopy(const TetMesh& mesh, const Topology& topo) {
+    tets.upload(mesh.tets);
+    nbr_off.upload(topo.neighbours.offsets);
+    nbr.upload(topo.neighbours.items);
+    inc_off.upload(topo.node_tets.offsets);
+    inc.upload(topo.node_tets.items);
+    xyz.upload(mesh.xyz);
+  }
+  MeshView view() const { return MeshView{tets.data(), nbr_off.data(), nbr.data(), inc_off.data(), inc.data()}; }
+  AosCoords<double> coords() const { return AosCoords<double>{const_cast<double*>(xyz.data())}; }
+};
 
 // counts: judged, accepted, disagreements.
 __global__ void compare_star_tests_kernel(MeshView m, AosCoords<double> xyz, const double* targets,
@@ -78,6 +95,20 @@ __global__ void deal_check_kernel(unsigned seed, unsigned long long* counts) {
   if (bad_slots) atomicAdd(&counts[2], 1ull);
 }
 
+// Each node's neighbour sum (sum[3 i .. 3 i + 2]), old minimum and its
+// entry, walked as sweep_kernel walks them.
+__global__ void row_walk_kernel(MeshView m, AosCoords<double> xyz, index_t n, double* sum, double* old_min,
+                                index_t* at) {
+  const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
+  if (gid >= static_cast<std::size_t>(n)) return;
+  const index_t i = static_cast<index_t>(gid);
+  const Vec3<double> s = row_sum<double, kMultiBlockChunk>(m, xyz, m.nbr_off[i], m.nbr_off[i + 1], 0, 1);
+  sum[3 * gid] = s.x;
+  sum[3 * gid + 1] = s.y;
+  sum[3 * gid + 2] = s.z;
+  old_min[gid] = star_old_min<double, kOldMinChunk>(m, xyz, i, xyz.get(i), 0, 1, FreshOldQuality{}, &at[gid]);
+}
+
 template <class Real>
 __global__ void radius_ratio_kernel(const double* corners, std::size_t tets, double* q) {
   const std::size_t t = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
@@ -97,29 +128,53 @@ StarTestAgreement compare_warp_star_test(const TetMesh& mesh, const std::vector<
     throw UsageError("compare_warp_star_test: " + std::to_string(targets.size()) + " target values for " +
                      std::to_string(mesh.num_nodes()) + " nodes");
   const Topology topo = build_topology(mesh);
-  DeviceBuffer<index_t> tets, nbr_off, nbr, inc_off, inc;
-  DeviceBuffer<double> xyz, target;
+  const DeviceMeshCopy d(mesh, topo);
+  DeviceBuffer<double> target;
   DeviceBuffer<std::uint8_t> movable;
   DeviceBuffer<unsigned long long> counts(3);
-  tets.upload(mesh.tets);
-  nbr_off.upload(topo.neighbours.offsets);
-  nbr.upload(topo.neighbours.items);
-  inc_off.upload(topo.node_tets.offsets);
-  inc.upload(topo.node_tets.items);
-  xyz.upload(mesh.xyz);
   target.upload(targets);
   movable.upload(topo.movable);
   CUDA_CHECK(cudaMemset(counts.data(), 0, counts.bytes()));
-  const MeshView view{tets.data(), nbr_off.data(), nbr.data(), inc_off.data(), inc.data()};
+  const MeshView view = d.view();
   const index_t n = static_cast<index_t>(mesh.num_nodes());
   constexpr unsigned kBlock = 128;
   if (n > 0) {
     compare_star_tests_kernel<<<(static_cast<unsigned>(n) + kBlock - 1) / kBlock, kBlock>>>(
-        view, AosCoords<double>{xyz.data()}, target.data(), movable.data(), n, lead, counts.data());
+        view, d.coords(), target.data(), movable.data(), n, lead, counts.data());
     CUDA_CHECK_LAUNCH();
   }
   const std::vector<unsigned long long> c = counts.download();
   return {static_cast<std::size_t>(c[0]), static_cast<std::size_t>(c[1]), static_cast<std::size_t>(c[2])};
+}
+
+RowWalkCheck check_row_walks(const TetMesh& mesh) {
+  const Topology topo = build_topology(mesh);
+  const std::size_t n = mesh.num_nodes();
+  const DeviceMeshCopy d(mesh, topo);
+  DeviceBuffer<index_t> at(n);
+  DeviceBuffer<double> sum(3 * n), old_min(n);
+  constexpr unsigned kBlock = 128;
+  if (n > 0) {
+    row_walk_kernel<<<static_cast<unsigned>((n + kBlock - 1) / kBlock), kBlock>>>(
+        d.view(), d.coords(), static_cast<index_t>(n), sum.data(), old_min.data(), at.data());
+    CUDA_CHECK_LAUNCH();
+  }
+  const std::vector<double> d_sum = sum.download(), d_min = old_min.download();
+  const std::vector<index_t> d_at = at.download();
+  const MeshView host = host_view(mesh, topo);
+  const AosCoords<double> host_xyz{const_cast<double*>(mesh.xyz.data())};
+  RowWalkCheck c;
+  for (std::size_t i = 0; i < n; ++i) {
+    const index_t node = static_cast<index_t>(i);
+    const Vec3<double> s = row_sum<double>(host, host_xyz, host.nbr_off[i], host.nbr_off[i + 1], 0, 1);
+    index_t h_at = 0;
+    const double h_min = star_old_min(host, host_xyz, node, host_xyz.get(node), 0, 1, FreshOldQuality{}, &h_at);
+    ++c.nodes;
+    if (s.x != d_sum[3 * i] || s.y != d_sum[3 * i + 1] || s.z != d_sum[3 * i + 2] || h_min != d_min[i] ||
+        h_at != d_at[i])
+      ++c.mismatches;
+  }
+  return c;
 }
 
 std::vector<double> device_radius_ratios(const std::vector<double>& corners, Precision precision) {

@@ -1,8 +1,8 @@
 #pragma once
-// Checks of warp_star_improves (warp_star_test.cuh) on the device, for
-// tests: against star_improves, the one-thread form the CPU runs, on the
-// same inputs; of its deal; and of radius_ratio in the float sweeps'
-// arithmetic. Plain C++: callers need no CUDA headers.
+// Checks of the MultiBlock node pass's pieces on the device, for tests:
+// warp_star_improves (warp_star_test.cuh) against star_improves, the
+// one-thread form the CPU runs, on the same inputs; its deal; the quad walks
+// of the CSR rows; and radius_ratio in the float sweeps' arithmetic. Plain C++: callers need no CUDA headers.
 #include <cstddef>
 #include <vector>
 
@@ -37,6 +37,18 @@ struct DealCheck {
   std::size_t broken = 0;  // nodes dealt other than by the rule
 };
 DealCheck check_deal();
+
+// row_sum and star_old_min as MultiBlock sweeps call them (a lane a node,
+// walking its CSR rows a 16-byte quad at a time: RowWalk in node_update.hpp),
+// on the device for every node of `mesh` (double AoS coordinates, old
+// qualities computed afresh), against the host walking the same rows entry
+// by entry: the neighbour sums, the old minima and the minima's entries must
+// agree bit for bit.
+struct RowWalkCheck {
+  std::size_t nodes = 0;       // nodes compared
+  std::size_t mismatches = 0;  // nodes where any of the three differ
+};
+RowWalkCheck check_row_walks(const TetMesh& mesh);
 
 // radius_ratio of each tet (corners[12 t .. 12 t + 11]: x, y, z of its four
 // corners) on the device in `precision`, built as the sweeps are built

@@ -191,6 +191,20 @@ inline constexpr int kSingleBlockThreads = 1024;
 // level of loads is a shared-memory read: 257.6 / 585.6 and 258.5 / 586.9,
 // and 258.6 / 594.0 with 16 (10 KB and 18 KB of shared memory a block;
 // not profiled, having lost in both precisions).
+// The same source counters count L1 tag requests: a lane reading its own
+// row entry by entry makes each load of the warp look up about 24 lines
+// (32 rows side by side), so the old minimum's walk of the incidence rows
+// took 576 lookups a warp and the centroid's neighbour rows about 290, a
+// third of the pass's. Kept: the rows read a 16-byte quad at a time
+// (RowWalk in node_update.hpp), 234.6 / 470.4 and 235.1 / 469.8 against
+// 241.0 / 473.2 and 240.7 / 469.9 (H100). Tried after it, against 232.4 to
+// 233.6 in float in the same runs: 40 registers (6 blocks an SM) 239.9, 32
+// (8 blocks) 316.8, 53 (4 blocks) 250.6, so more warps only crowd L1; the
+// neighbour rows read past L1 (ld.global.nc.L1::no_allocate) 241.0, since
+// a row's quads share lines; the tet pass's tets read past L1 233.2, and
+// blocks that take a 32 x 4 x 2 brick of lattice nodes (lattice-specific
+// indexing, for the A/B only) 235.0 in float but 562.5 in double against
+// 471.3, with 240.9 in float for the code before RowWalk.
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep of the code above, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.

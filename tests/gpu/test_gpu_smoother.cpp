@@ -170,6 +170,29 @@ TEST(GpuSmoother, DealGivesEachNodeItsSlots) {
   EXPECT_EQ(c.broken, 0u);
 }
 
+// MultiBlock's lanes read their CSR rows a 16-byte quad at a time from the
+// quad that holds the row's first entry (RowWalk in node_update.hpp); the
+// 5k model's rows start (and so end) at every place in a quad, and the
+// last row of each array ends at the array's end. Sums, minima and the minima's
+// entries must be those of the host's walk entry by entry.
+TEST(GpuSmoother, QuadRowWalksMatchHost) {
+  SKIP_WITHOUT_GPU();
+  const TetMesh& mesh = model_5k();
+  const Topology topo = build_topology(mesh);
+  int inc_starts[4] = {0, 0, 0, 0}, nbr_starts[4] = {0, 0, 0, 0};  // rows by where in a quad they start
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    ++inc_starts[topo.node_tets.offsets[i] % 4];
+    ++nbr_starts[topo.neighbours.offsets[i] % 4];
+  }
+  for (int r = 0; r < 4; ++r) {
+    EXPECT_GT(inc_starts[r], 0) << "no incidence row starts at place " << r << " of a quad";
+    EXPECT_GT(nbr_starts[r], 0) << "no neighbour row starts at place " << r << " of a quad";
+  }
+  const cuda::RowWalkCheck c = cuda::check_row_walks(mesh);
+  EXPECT_EQ(c.nodes, mesh.num_nodes());
+  EXPECT_EQ(c.mismatches, 0u);
+}
+
 // The float sweeps' radius ratio (approximate square roots and division,
 // subnormal operands taken as zero) keeps small tets, down to the size
 // below which float loses their volume, as the CPU's double does.

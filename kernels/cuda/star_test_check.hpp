@@ -39,10 +39,10 @@ struct DealCheck {
 DealCheck check_deal();
 
 // row_sum and star_old_min as MultiBlock sweeps call them (a lane a node,
-// walking its CSR rows a 16-byte quad at a time: RowWalk in node_update.hpp),
-// on the device for every node of `mesh` (double AoS coordinates, old
-// qualities computed afresh), against the host walking the same rows entry
-// by entry: the neighbour sums, the old minima and the minima's entries must
+// walking its CSR rows a 16-byte quad at a time: RowWalk in node_update.hpp)
+// against the same walking the rows entry by entry, for every node of `mesh`
+// (double AoS coordinates, old qualities computed afresh), both on the
+// device: the neighbour sums, the old minima and the minima's entries must
 // agree bit for bit.
 struct RowWalkCheck {
   std::size_t nodes = 0;       // nodes compared

@@ -51,20 +51,23 @@ struct NodeMove {
 
 // A lane's walk over entries [begin, end) of a CSR row array, kChunk
 // entries a step: entries first + u * stride for u < kChunk, those in
-// [begin, end) valid. On the device a lone lane (lane 0, stride 1) with
-// whole quads of entries a step walks aligned quads from the quad holding
-// `begin`, each one 16-byte load where kChunk scalar loads took a tag lookup
-// each: a warp whose lanes read 32 rows touches as many cache lines per load
-// either way. That needs every device CSR array 16-byte aligned and readable
-// to its last whole quad (DeviceBuffer pads its allocations to that).
-template <int kChunk>
+// [begin, end) valid. With kQuads, on the device, a lone lane (lane 0,
+// stride 1) with whole quads of entries a step walks aligned quads from the
+// quad holding `begin` instead, each one 16-byte load where four scalar
+// loads took a tag lookup each (a warp whose lanes read 32 rows touches as
+// many cache lines per load either way). The price is a step more for a row
+// that starts late in a quad, so only star_old_min's incidence rows take it
+// (the A/B is in kernels/cuda/sweep_kernels.cuh). Quads need every device
+// CSR array 16-byte aligned and readable to its last whole quad
+// (DeviceBuffer pads its allocations to that).
+template <int kChunk, bool kQuads = false>
 struct RowWalk {
   index_t begin, end;
   int stride;
   bool quads;
   TS_HD RowWalk(index_t b, index_t e, int lane, int s) : begin(b), end(e), stride(s), quads(false) {
 #ifdef __CUDA_ARCH__
-    quads = kChunk % 4 == 0 && lane == 0 && s == 1;
+    quads = kQuads && kChunk % 4 == 0 && lane == 0 && s == 1;
 #endif
     first = quads ? (b & ~index_t(3)) : b + lane;
   }
@@ -72,7 +75,7 @@ struct RowWalk {
   TS_HD bool more() const { return first < end; }
   TS_HD void next() { first += kChunk * stride; }
   TS_HD index_t entry(int u) const { return first + u * stride; }
-  TS_HD bool valid(int u) const { return entry(u) >= begin && entry(u) < end; }
+  TS_HD bool valid(int u) const { return (!quads || entry(u) >= begin) && entry(u) < end; }
   // The chunk's items of `row` (those of invalid entries unspecified).
   TS_HD void fetch(const index_t* row, index_t (&item)[kChunk]) const {
 #ifdef __CUDA_ARCH__
@@ -195,7 +198,7 @@ TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Re
   Real q_min = Real(2);
   const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
   index_t k_min = begin + lane;
-  for (RowWalk<kChunk> w(begin, end, lane, stride); w.more(); w.next()) {
+  for (RowWalk<kChunk, true> w(begin, end, lane, stride); w.more(); w.next()) {
     index_t t[kChunk];
     w.fetch(m.inc, t);
     Real q[kChunk];

@@ -31,7 +31,7 @@ class DeviceBuffer {
   // Reallocates only when growing; contents are not preserved. The
   // allocation is rounded up to whole 16-byte blocks, so that a kernel may
   // read the last block of a buffer whole (RowWalk in node_update.hpp reads
-  // CSR rows a 16-byte quad at a time).
+  // incidence rows a 16-byte quad at a time).
   void resize(std::size_t n) {
     if (n <= capacity_) {
       size_ = n;

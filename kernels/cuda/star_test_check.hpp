@@ -2,7 +2,8 @@
 // Checks of the MultiBlock node pass's pieces on the device, for tests:
 // warp_star_improves (warp_star_test.cuh) against star_improves, the
 // one-thread form the CPU runs, on the same inputs; its deal; the quad walks
-// of the CSR rows; and radius_ratio in the float sweeps' arithmetic. Plain C++: callers need no CUDA headers.
+// of the incidence rows; and radius_ratio in the float sweeps' arithmetic.
+// Plain C++: callers need no CUDA headers.
 #include <cstddef>
 #include <vector>
 
@@ -39,11 +40,11 @@ struct DealCheck {
 DealCheck check_deal();
 
 // row_sum and star_old_min as MultiBlock sweeps call them (a lane a node,
-// walking its CSR rows a 16-byte quad at a time: RowWalk in node_update.hpp)
-// against the same walking the rows entry by entry, for every node of `mesh`
-// (double AoS coordinates, old qualities computed afresh), both on the
-// device: the neighbour sums, the old minima and the minima's entries must
-// agree bit for bit.
+// with the incidence rows walked a 16-byte quad at a time: RowWalk in
+// node_update.hpp) against the same walking the rows entry by entry, for
+// every node of `mesh` (double AoS coordinates, old qualities computed
+// afresh), both on the device: the neighbour sums, the old minima and the
+// minima's entries must agree bit for bit.
 struct RowWalkCheck {
   std::size_t nodes = 0;       // nodes compared
   std::size_t mismatches = 0;  // nodes where any of the three differ

@@ -195,9 +195,20 @@ inline constexpr int kSingleBlockThreads = 1024;
 // row entry by entry makes each load of the warp look up about 24 lines
 // (32 rows side by side), so the old minimum's walk of the incidence rows
 // took 576 lookups a warp and the centroid's neighbour rows about 290, a
-// third of the pass's. Kept: the rows read a 16-byte quad at a time
-// (RowWalk in node_update.hpp), 234.6 / 470.4 and 235.1 / 469.8 against
-// 241.0 / 473.2 and 240.7 / 469.9 (H100). Tried after it, against 232.4 to
+// third of the pass's. Read a 16-byte quad at a time (RowWalk in
+// node_update.hpp), ms for 100 sweeps and Ordinary MultiBlock's ms a sweep,
+// float / double, one H100 run:
+//   entry by entry (the code before)        240.2 / 471.9, 0.376 / 0.472
+//   both rows in quads                      233.4 / 468.1, 0.383 / 0.541
+//   the incidence rows only (kept)          229.8 / 462.5, 0.373 / 0.490
+//     and 8 old qualities at a time         232.6 / 461.7
+//   both, 8 old qualities at a time         235.6 / 471.4
+// with that code at 229.7 / 461.1 again at the end of the run (kept with
+// RowWalk's check of a row's start left to quads). A row
+// walked in aligned quads takes a step more when it starts late in a quad:
+// the lattice's neighbour rows of 14 entries then span three steps of 8, not
+// two, and Ordinary smoothing, whose sweep is that walk, waits on it.
+// Tried with both rows in quads, against 232.4 to
 // 233.6 in float in the same runs: 40 registers (6 blocks an SM) 239.9, 32
 // (8 blocks) 316.8, 53 (4 blocks) 250.6, so more warps only crowd L1; the
 // neighbour rows read past L1 (ld.global.nc.L1::no_allocate) 241.0, since

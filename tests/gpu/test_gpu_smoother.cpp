@@ -170,12 +170,13 @@ TEST(GpuSmoother, DealGivesEachNodeItsSlots) {
   EXPECT_EQ(c.broken, 0u);
 }
 
-// MultiBlock's lanes read their CSR rows a 16-byte quad at a time from the
-// quad that holds the row's first entry (RowWalk in node_update.hpp): sums,
-// minima and the minima's entries must be those of the walk entry by entry.
-// The 5k model's neighbour rows start (and so end) at every place in a
-// quad, its incidence rows only at places 0 and 2 (every star of it has an
-// even number of tets), and each array's last row ends at its end.
+// MultiBlock's lanes read their incidence rows a 16-byte quad at a time
+// from the quad that holds the row's first entry (RowWalk in
+// node_update.hpp): the old minima and their entries must be those of the
+// walk entry by entry, and the neighbour sums those of the step sizes the
+// sweeps use. The 5k model's neighbour rows start (and so end) at every
+// place in a quad, its incidence rows only at places 0 and 2 (every star of
+// it has an even number of tets), and each array's last row ends at its end.
 TEST(GpuSmoother, QuadRowWalksMatchEntryByEntry) {
   SKIP_WITHOUT_GPU();
   const TetMesh& mesh = model_5k();

@@ -225,13 +225,14 @@ inline constexpr int kSingleBlockThreads = 1024;
 // stalls are on L1TEX loads, 60% of issue slots used), not by its
 // instructions or its DRAM traffic (1.6 TB/s).
 // What 2x of the memory floor asks of the two passes (float, lattice-215: a
-// floor of 0.955 ms, so 1.91 ms a sweep). The node pass keeps L1/TEX 79%
-// busy for 1.89 ms, the tet pass DRAM 75% for 0.523 ms
-// (results/h100/ncu_lattice_MultiBlock.txt, the code above; 77% for 1.95 ms
-// and 74% for 0.525 ms before deal_round). With the loads they make now,
-// the node pass cannot take less than 1.49 ms, nor the tet pass less than
-// 0.39 ms, even with its busiest unit at full throughput: 1.88 ms
-// together, 1.97x. So 2x needs both passes at their peak, or fewer
+// floor of 0.955 ms, so 1.91 ms a sweep). The node pass keeps L1/TEX 73%
+// busy for 1.80 ms, the tet pass DRAM 75% for 0.523 ms
+// (results/h100/ncu_lattice_MultiBlock.txt, the code above at 2cf0290; 79%
+// for 1.89 ms before RowWalk, 77% for 1.95 ms before deal_round). With the
+// loads they make now, the node pass cannot take less than 1.31 ms, nor the
+// tet pass less than 0.39 ms, even with its busiest unit at full
+// throughput: 1.70 ms together, 1.78x. So 2x needs both passes near their
+// peak (the node pass at 1.39 ms, 94% of L1's throughput), or fewer
 // L1 requests for each tet the star test computes and then more of their
 // latency hidden. The cuts of L1 requests tried (each corner in one padded
 // load, star faces read through the row) saved at most 3%, since what holds

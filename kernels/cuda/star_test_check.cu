@@ -97,8 +97,9 @@ __global__ void deal_check_kernel(unsigned seed, unsigned long long* counts) {
 
 // Each node's neighbour sum, old minimum and the minimum's entry, walked as
 // sweep_kernel walks them (incidence rows in quads) and entry by entry;
-// counts [0] nodes, [1] nodes where the two walks differ. Both on the device: the host's radius
-// ratio rounds differently (nvcc contracts its products into FMAs).
+// counts [0] nodes, [1] nodes where the two walks differ. Both on the
+// device: the host's radius ratio rounds differently (nvcc contracts its
+// products into FMAs).
 __global__ void row_walk_kernel(MeshView m, AosCoords<double> xyz, index_t n, unsigned long long* counts) {
   const std::size_t gid = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
   if (gid >= static_cast<std::size_t>(n)) return;

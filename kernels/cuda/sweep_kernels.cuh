@@ -204,12 +204,12 @@ inline constexpr int kSingleBlockThreads = 1024;
 //     and 8 old qualities at a time         232.6 / 461.7
 //   both, 8 old qualities at a time         235.6 / 471.4
 // with that code at 229.7 / 461.1 again at the end of the run (kept with
-// RowWalk's check of a row's start left to quads). A row
-// walked in aligned quads takes a step more when it starts late in a quad:
-// the lattice's neighbour rows of 14 entries then span three steps of 8, not
-// two, and Ordinary smoothing, whose sweep is that walk, waits on it.
-// Tried with both rows in quads, against 232.4 to
-// 233.6 in float in the same runs: 40 registers (6 blocks an SM) 239.9, 32
+// RowWalk's check of a row's start left to quads). A row walked in aligned
+// quads takes a step more when it starts late in a quad: the lattice's
+// neighbour rows of 14 entries then span three steps of 8, not two, and
+// Ordinary smoothing, whose sweep is that walk, waits on it. Tried with
+// both rows in quads, against 232.4 to 233.6 in float in the same runs:
+// 40 registers (6 blocks an SM) 239.9, 32
 // (8 blocks) 316.8, 53 (4 blocks) 250.6, so more warps only crowd L1; the
 // neighbour rows read past L1 (ld.global.nc.L1::no_allocate) 241.0, since
 // a row's quads share lines; the tet pass's tets read past L1 233.2, and

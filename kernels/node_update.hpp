@@ -51,23 +51,24 @@ struct NodeMove {
 
 // A lane's walk over entries [begin, end) of a CSR row array, kChunk
 // entries a step: entries first + u * stride for u < kChunk, those in
-// [begin, end) valid. With kQuads, on the device, a lone lane (lane 0,
-// stride 1) with whole quads of entries a step walks aligned quads from the
-// quad holding `begin` instead, each one 16-byte load where four scalar
-// loads took a tag lookup each (a warp whose lanes read 32 rows touches as
-// many cache lines per load either way). The price is a step more for a row
-// that starts late in a quad, so only star_old_min's incidence rows take it
-// (the A/B is in kernels/cuda/sweep_kernels.cuh). Quads need every device
-// CSR array 16-byte aligned and readable to its last whole quad
-// (DeviceBuffer pads its allocations to that).
-template <int kChunk, bool kQuads = false>
+// [begin, end) valid. On the device, a lone lane (lane 0, stride 1) with
+// whole quads of entries a step walks aligned quads from the quad holding
+// `begin` instead, each one 16-byte load where four scalar loads took a tag
+// lookup each (a warp whose lanes read 32 rows touches as many cache lines
+// per load either way). The price is a step more for a row that starts
+// late in a quad, so only star_old_min's incidence rows take it; row_sum
+// reads its neighbour rows entry by entry (the A/Bs are in
+// kernels/cuda/sweep_kernels.cuh). Quads need every device CSR array
+// 16-byte aligned and readable to its last whole quad (DeviceBuffer pads
+// its allocations to that).
+template <int kChunk>
 struct RowWalk {
   index_t begin, end;
   int stride;
   bool quads;
   TS_HD RowWalk(index_t b, index_t e, int lane, int s) : begin(b), end(e), stride(s), quads(false) {
 #ifdef __CUDA_ARCH__
-    quads = kQuads && kChunk % 4 == 0 && lane == 0 && s == 1;
+    quads = kChunk % 4 == 0 && lane == 0 && s == 1;
 #endif
     first = quads ? (b & ~index_t(3)) : b + lane;
   }
@@ -103,14 +104,14 @@ struct RowWalk {
 template <class Real, int kChunk = 1, class Coords>
 TS_HD Vec3<Real> row_sum(const MeshView& m, const Coords& xyz, index_t begin, index_t end, int lane, int stride) {
   Vec3<Real> s{0, 0, 0};
-  for (RowWalk<kChunk> w(begin, end, lane, stride); w.more(); w.next()) {
-    index_t nb[kChunk];
-    w.fetch(m.nbr, nb);
-    Vec3<Real> v[kChunk]{};  // entries outside the row stay unused
+  for (index_t first = begin + lane; first < end; first += kChunk * stride) {
+    Vec3<Real> v[kChunk]{};  // entries past the row stay unused
+    for (int u = 0; u < kChunk; ++u) {
+      const index_t k = first + u * stride;
+      if (k < end) v[u] = xyz.get(m.nbr[k]);
+    }
     for (int u = 0; u < kChunk; ++u)
-      if (w.valid(u)) v[u] = xyz.get(nb[u]);
-    for (int u = 0; u < kChunk; ++u)
-      if (w.valid(u)) s = s + v[u];
+      if (first + u * stride < end) s = s + v[u];
   }
   return s;
 }
@@ -198,7 +199,7 @@ TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Re
   Real q_min = Real(2);
   const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
   index_t k_min = begin + lane;
-  for (RowWalk<kChunk, true> w(begin, end, lane, stride); w.more(); w.next()) {
+  for (RowWalk<kChunk> w(begin, end, lane, stride); w.more(); w.next()) {
     index_t t[kChunk];
     w.fetch(m.inc, t);
     Real q[kChunk];

@@ -216,6 +216,17 @@ inline constexpr int kSingleBlockThreads = 1024;
 // blocks that take a 32 x 4 x 2 brick of lattice nodes (lattice-specific
 // indexing, for the A/B only) 235.0 in float but 562.5 in double against
 // 471.3, with 240.9 in float for the code before RowWalk.
+// row_sum then went back to its own loop (each entry's index and position
+// requested together), as before RowWalk: in the same H100 run, 100 sweeps
+// 229.7 / 463.1 and Ordinary MultiBlock 0.376 / 0.470 ms a sweep, against
+// 230.2 / 464.6 and 0.374 / 0.493 with RowWalk's neighbour rows (230.3 /
+// 465.1 and 0.372 / 0.497 again at the end of the run). Tried in that run,
+// against the same figures: points padded to four values again (one load
+// in float, two in double), 235.9 / 478.3; a tet's corners requested as the
+// three that are not node i, in an order that keeps the orientation, so
+// that 9 loads replace 12 predicated ones (the round's SASS read 4 x 3),
+// 234.1 / 465.9: choosing the three puts compares and selects between the
+// tet's nodes and the corners' loads; and both, 238.0 / 479.7.
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep at f4667ee, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.

@@ -236,9 +236,9 @@ inline constexpr int kSingleBlockThreads = 1024;
 // stalls are on L1TEX loads, 60% of issue slots used), not by its
 // instructions or its DRAM traffic (1.6 TB/s).
 // What 2x of the memory floor asks of the two passes (float, lattice-215: a
-// floor of 0.955 ms, so 1.91 ms a sweep). The node pass keeps L1/TEX 73%
-// busy for 1.80 ms, the tet pass DRAM 75% for 0.523 ms
-// (results/h100/ncu_lattice_MultiBlock.txt, the code above at 2cf0290; 79%
+// floor of 0.956 ms, so 1.91 ms a sweep). The node pass keeps L1/TEX 73%
+// busy for 1.79 ms, the tet pass DRAM 74% for 0.525 ms
+// (results/h100/ncu_lattice_MultiBlock.txt, the code above at ea476b5; 79%
 // for 1.89 ms before RowWalk, 77% for 1.95 ms before deal_round). With the
 // loads they make now, the node pass cannot take less than 1.31 ms, nor the
 // tet pass less than 0.39 ms, even with its busiest unit at full
@@ -246,8 +246,9 @@ inline constexpr int kSingleBlockThreads = 1024;
 // peak (the node pass at 1.39 ms, 94% of L1's throughput), or fewer
 // L1 requests for each tet the star test computes and then more of their
 // latency hidden. The cuts of L1 requests tried (each corner in one padded
-// load, star faces read through the row) saved at most 3%, since what holds
-// the pass today is its reads' latency, not L1's throughput. Nor does a
+// load, star faces read through the row) saved at most 3%, and padded
+// corners lost 2.5% once the incidence rows came in quads (the A/B above):
+// what holds the pass is its reads' latency, not L1's throughput. Nor does a
 // level of the chain come out for free: an incidence entry that carries
 // its tet's other three corners (16 B with the tet's index, 3.8 GB for
 // lattice-215) would replace 1.9 GB of incidence entries and tets with

@@ -226,7 +226,11 @@ inline constexpr int kSingleBlockThreads = 1024;
 // three that are not node i, in an order that keeps the orientation, so
 // that 9 loads replace 12 predicated ones (the round's SASS read 4 x 3),
 // 234.1 / 465.9: choosing the three puts compares and selects between the
-// tet's nodes and the corners' loads; and both, 238.0 / 479.7.
+// tet's nodes and the corners' loads; and both, 238.0 / 479.7. In a later
+// H100 run, against 229.3 / 462.6 and 229.0 / 462.1: the star's second
+// lowest old quality dealt second as well (tracked by the old minimum's
+// walk, one more shuffle a round), 233.1 / 564.9 and 233.6 / 564.8 (in
+// double 82 registers, allocated as 88: two blocks an SM instead of three).
 // Where the node pass waits (Nsight Compute's warp stall samples by SASS
 // instruction, one float sweep at f4667ee, H100): 77% of them fall
 // in the star test's rounds, 9% in the old minimum and 9% in the centroid.

@@ -173,6 +173,23 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   (a prototype, 40 registers): 255.6 / 500.2 with G = 8 and 254.0 /
 //   508.1 with G = 4 [244.5 / 482.3, and 244.6 / 481.3 at the end of the
 //   run]; not profiled further, since it lost in both precisions.
+//   The same without groups, to drop every per-round shuffle and vote: a
+//   warp's lanes settle 32 nodes' centroids, old minima and leads at a time,
+//   queue the undecided ones in shared memory (a ring of 64 a warp, 12 KB a
+//   block) and then each walk one queued node's other tets alone, a tet a
+//   step, with the incidence row read a quad at a time (a prototype, 64
+//   registers). A lane that took its next node as soon as its own was settled
+//   left the warp's lanes at unrelated places in unrelated stars: 436.7 /
+//   767.6 with 8 chunks of 32 nodes a warp, on an H100 [237.8 / 461.9, and
+//   238.4 / 462.7 at the end of the run]. Lanes that took their nodes all
+//   together, so that they walked neighbouring stars in step: 333.7 / 712.6
+//   with 4 chunks a warp and 355.3 / 711.1 with 8, on an H200 [232.3 / 457.2].
+//   Nsight Compute (that H200, one float node pass): 2.86 ms, 1.48 G warp
+//   instructions, 5.98 GB read from DRAM and an L1 hit rate of 72%, against
+//   1.72 ms, 1.12 G, 2.94 GB and 82% for the deal: lanes that wait in step for
+//   the slowest of 32 stars issue more, not fewer (our reading), and DRAM
+//   served twice the bytes. Its nodes' centroids were all summed before any of
+//   their moves, so it accepted more moves (384 M against 354 M in float).
 // Nsight Compute's source counters (the float node pass at 98121a7, H100)
 // split a round of the star test, 252 instructions, into the deal (67: the
 // slots' owners, then nine shuffles of their values), the dealt tet's

@@ -190,6 +190,23 @@ inline constexpr int kSingleBlockThreads = 1024;
 //   the slowest of 32 stars issue more, not fewer (our reading), and DRAM
 //   served twice the bytes. Its nodes' centroids were all summed before any of
 //   their moves, so it accepted more moves (384 M against 354 M in float).
+//   Each SM's warps taking 32-node chunks from a contiguous range of its own
+//   (a grid of resident blocks, a counter per %smid, reset by the tet pass;
+//   a warp whose range was done helped the first range with chunks left),
+//   so that the 40 warps of an SM share their stars' lines in L1 (a
+//   prototype): 247.0 / 467.4 and 246.6 / 466.2 against 225.2 / 456.0 and
+//   222.6 / 455.8, on an H200. Nsight Compute (one float node pass): an L1
+//   hit rate of 84.5%, but 4.77 GB read from DRAM against the 2.94 GB
+//   above: 132 ranges spread over the mesh share no planes in L2, where the
+//   GPU's one front through the node order does. Each range swept in order
+//   also let more moves through (392.6 M against 354.4 M in float), and so
+//   more whole stars. Keeping the one front, with pieces of 1,024 nodes
+//   dealt to the SMs in turn (piece k to SM k % 132, its warps taking the
+//   piece's chunks in order): 236.7 / 457.7 and 239.3 / 458.6 against
+//   230.9 / 454.8 and 231.1 / 456.2 in another H200 run. A float node pass
+//   then had an L1 hit rate of 83.1% against 81.5%, but read 3.47 GB from
+//   DRAM against 2.94, issued 1.22 G instructions against 1.12 G (370 M
+//   moves accepted against 354 M) and took 1.74 ms against 1.72.
 // Nsight Compute's source counters (the float node pass at 98121a7, H100)
 // split a round of the star test, 252 instructions, into the deal (67: the
 // slots' owners, then nine shuffles of their values), the dealt tet's
@@ -269,7 +286,13 @@ inline constexpr int kSingleBlockThreads = 1024;
 // latency hidden. The cuts of L1 requests tried (each corner in one padded
 // load, star faces read through the row) saved at most 3%, and padded
 // corners lost 2.5% once the incidence rows came in quads (the A/B above):
-// what holds the pass is its reads' latency, not L1's throughput. Nor does a
+// what holds the pass is its reads' latency, not L1's throughput. Profiled
+// once more (H100, one float node pass at d3f41e0), padded points halve the
+// pass's L1 requests (44.1 M against 83.6 M) and cut its L1 sectors by a
+// third (0.84 G against 1.28 G), yet the pass takes 1.81 ms against 1.79:
+// L1's hit rate falls from 82% to 69%, and L2, already as busy as L1 (73%),
+// goes to 76%. 100 sweeps, in which the tet pass reads padded points too:
+// 234.9 and 234.6 ms against 237.1 and 238.4 in float. Nor does a
 // level of the chain come out for free: an incidence entry that carries
 // its tet's other three corners (16 B with the tet's index, 3.8 GB for
 // lattice-215) would replace 1.9 GB of incidence entries and tets with

@@ -58,9 +58,9 @@ struct NodeMove {
 // per load either way). The price is a step more for a row that starts
 // late in a quad, so only star_old_min's incidence rows take it; row_sum
 // requests each neighbour's index and then its position, one entry at a
-// time (the A/Bs are in kernels/cuda/sweep_kernels.cuh). Quads need every
-// device CSR array 16-byte aligned and readable to its last whole quad
-// (DeviceBuffer pads its allocations to that).
+// time (the A/Bs are in kernels/cuda/multiblock_experiments.md). Quads need
+// every device CSR array 16-byte aligned and readable to its last whole
+// quad (DeviceBuffer pads its allocations to that).
 template <int kChunk>
 struct RowWalk {
   index_t begin, end;

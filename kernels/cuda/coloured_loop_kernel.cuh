@@ -42,8 +42,10 @@
 // adaptive node's star is requested before the centroid (star_prefetch.cuh).
 #include <cooperative_groups.h>
 
+#include "kernels/cuda/node_steps.cuh"
 #include "kernels/cuda/star_prefetch.cuh"
-#include "kernels/cuda/sweep_kernels.cuh"
+#include "kernels/cuda/sweep_state.cuh"
+#include "kernels/cuda/tet_quality_pass.cuh"
 
 namespace tetsmooth::cuda {
 

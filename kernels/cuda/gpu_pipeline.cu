@@ -12,7 +12,7 @@
 #include "kernels/sweep_log.hpp"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_topology.hpp"
-#include "kernels/cuda/sweep_kernels.cuh"
+#include "kernels/cuda/stopping_rule_kernels.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
 
 namespace tetsmooth::cuda {

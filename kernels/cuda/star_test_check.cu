@@ -6,7 +6,7 @@
 #include "kernels/coords.hpp"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_buffer.hpp"
-#include "kernels/cuda/sweep_kernels.cuh"
+#include "kernels/cuda/multiblock_kernels.cuh"
 #include "kernels/cuda/warp_star_test.cuh"
 #include "mesh/errors.hpp"
 #include "mesh/topology.hpp"

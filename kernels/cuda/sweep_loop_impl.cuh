@@ -7,8 +7,13 @@
 #include <cstring>
 
 #include "kernels/cuda/coloured_loop_launch.cuh"
+#include "kernels/cuda/coords_transfer_kernels.cuh"
 #include "kernels/cuda/cuda_check.hpp"
-#include "kernels/cuda/sweep_kernels.cuh"
+#include "kernels/cuda/form_a_repair_kernels.cuh"
+#include "kernels/cuda/multiblock_kernels.cuh"
+#include "kernels/cuda/single_block_kernel.cuh"
+#include "kernels/cuda/stopping_rule_kernels.cuh"
+#include "kernels/cuda/tet_quality_pass.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
 #include "mesh/errors.hpp"
 

@@ -13,7 +13,7 @@
 // many left. (Nsight Compute on an H100, one lattice-215 sweep's node pass
 // in float: 2.11 G warp instructions with 4 lanes per node, 1.44 G with
 // warp-shared stars and the lead below, 1.37 G with this deal; the A/B is
-// in sweep_kernels.cuh.)
+// in multiblock_experiments.md.)
 //
 // A replay of the deal on the host (lattice-48, 30 Jacobi sweeps with the
 // CPU's decisions) takes from 18.2 rounds a warp in the first sweep to 13.5
@@ -24,7 +24,8 @@
 // than the halved deal and shuffles save; so does keeping a slot's deal
 // across rounds in which no node drops out. Two tets a slot computed one
 // after the other save no instructions either: the coarser slots compute
-// tets that the deal would have spared (the A/Bs are in sweep_kernels.cuh).
+// tets that the deal would have spared (the A/Bs are in
+// multiblock_experiments.md).
 //
 // Nor can a cleverer choice of tets cut that work by much. In a host replay
 // of the CPU's rule (lattice-30, 100 Jacobi sweeps without the repair, 45% of

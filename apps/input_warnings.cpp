@@ -4,9 +4,10 @@
 
 namespace tetsmooth::cli {
 
-std::vector<std::string> input_warnings(const ValidationReport& report, const std::string& source,
+std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationReport& report, const std::string& source,
                                         const std::string& inverted_note) {
   std::vector<std::string> warnings;
+  for (const std::string& note : mesh.extras.read_notes) warnings.push_back(source + ": " + note);
   if (report.inverted > 0)
     warnings.push_back(source + ": " + with_thousands(report.inverted) + " inverted tets (negative volume)" +
                        (inverted_note.empty() ? "" : "; " + inverted_note));

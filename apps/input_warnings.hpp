@@ -8,10 +8,11 @@
 
 namespace tetsmooth::cli {
 
-// One message per kind of problem (inverted, degenerate, unreferenced),
+// The reader's notes on what it skipped (FileExtras::read_notes), then one
+// message per kind of problem (inverted, degenerate, unreferenced), each
 // naming `source` and the count. `inverted_note` is appended to the
 // inverted-tets message when not empty.
-std::vector<std::string> input_warnings(const ValidationReport& report, const std::string& source,
+std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationReport& report, const std::string& source,
                                         const std::string& inverted_note = "");
 
 }  // namespace tetsmooth::cli

@@ -16,7 +16,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
   record.format = format_from_path(c.input, c.input_format);
   const TetMesh mesh = read_mesh(c.input, record.format);
   record.mesh = validate_mesh(mesh, c.input);
-  for (const std::string& w : input_warnings(record.mesh, c.input)) console.warn(w);
+  for (const std::string& w : input_warnings(mesh, record.mesh, c.input)) console.warn(w);
 
   // The topology tells which tets smoothing could change (min_movable).
   const Topology topology = build_topology(mesh);

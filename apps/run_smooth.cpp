@@ -107,7 +107,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   const char* inverted_note = c.options.method == Method::Adaptive
                                   ? "continuing: adaptive smoothing never makes them worse"
                                   : "continuing, but ordinary smoothing may make them worse";
-  record.warnings = input_warnings(record.input, c.input, inverted_note);
+  record.warnings = input_warnings(mesh, record.input, c.input, inverted_note);
   for (std::string& w : ignored_option_warnings(c, record.device)) record.warnings.push_back(std::move(w));
   for (const std::string& w : record.warnings) console.warn(w);
   console.note(c.input + ": " + with_thousands(record.input.nodes) + " nodes, " + with_thousands(record.input.tets) +

@@ -40,6 +40,10 @@ struct FileExtras {
   // elements) so that a Medit file is written back as it was read.
   std::vector<std::int32_t> required_nodes;
   std::vector<std::int32_t> corner_nodes;
+  // What the reader read but will not write back, or could not map (a
+  // section it skips, a data array it does not carry), one sentence each
+  // without the file's name; the command line prints them as warnings.
+  std::vector<std::string> read_notes;
 };
 
 }  // namespace tetsmooth

@@ -1,8 +1,15 @@
 #include "apps/input_warnings.hpp"
 
 #include "apps/report_text.hpp"
+#include "mesh/topology.hpp"
 
 namespace tetsmooth::cli {
+
+ValidationReport inspect_input(const TetMesh& mesh, const std::string& source) {
+  ValidationReport report = validate_mesh(mesh, source);
+  report.repeated = count_repeated_tets(mesh.tets);
+  return report;
+}
 
 std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationReport& report, const std::string& source,
                                         const std::string& inverted_note) {
@@ -14,6 +21,11 @@ std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationRep
   if (report.degenerate > 0)
     warnings.push_back(source + ": " + with_thousands(report.degenerate) +
                        " degenerate tets (zero volume or a repeated node)");
+  if (report.repeated > 0)
+    warnings.push_back(source + ": " + with_thousands(report.repeated) +
+                       " tets repeat the nodes of an earlier tet (Gmsh's MSH 2.2 writer lists a volume in two "
+                       "physical groups twice); each node set counts as one tet for the boundary, and the "
+                       "quality statistics count the tets as listed");
   if (report.unreferenced > 0)
     warnings.push_back(source + ": " + with_thousands(report.unreferenced) +
                        " nodes belong to no tet; they are kept as they are");

@@ -11,7 +11,8 @@ nlohmann::ordered_json mesh_counts_json(const ValidationReport& v) {
           {"tets", v.tets},
           {"inverted_tets", v.inverted},
           {"degenerate_tets", v.degenerate},
-          {"unreferenced_nodes", v.unreferenced}};
+          {"unreferenced_nodes", v.unreferenced},
+          {"repeated_tets", v.repeated}};
 }
 
 nlohmann::ordered_json options_json(const SmoothCommand& c) {

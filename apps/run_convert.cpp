@@ -15,7 +15,7 @@ void run_convert(const ConvertCommand& c, const Console& console) {
   const MeshFormat output_format = format_from_path(c.output, c.output_format);
   check_output_location(c.output);
   const TetMesh mesh = read_mesh(c.input, input_format);
-  for (const std::string& w : input_warnings(mesh, validate_mesh(mesh, c.input), c.input)) console.warn(w);
+  for (const std::string& w : input_warnings(mesh, inspect_input(mesh, c.input), c.input)) console.warn(w);
   write_mesh_with_fields(mesh, c.output, output_format);
   console.note("wrote " + c.output + ": " + with_thousands(mesh.num_nodes()) + " nodes, " +
                with_thousands(mesh.num_tets()) + " tets (" + input_format_name(input_format) + " -> " +

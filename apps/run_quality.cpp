@@ -15,7 +15,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
   QualityRecord record;
   record.format = format_from_path(c.input, c.input_format);
   const TetMesh mesh = read_mesh(c.input, record.format);
-  record.mesh = validate_mesh(mesh, c.input);
+  record.mesh = inspect_input(mesh, c.input);
   for (const std::string& w : input_warnings(mesh, record.mesh, c.input)) console.warn(w);
 
   // The topology tells which tets smoothing could change (min_movable).

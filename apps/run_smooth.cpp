@@ -103,7 +103,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   Clock::time_point t0 = Clock::now();
   TetMesh mesh = read_mesh(c.input, record.input_format);
   record.read_ms = ms_since(t0);
-  record.input = validate_mesh(mesh, c.input);
+  record.input = inspect_input(mesh, c.input);
   const char* inverted_note = c.options.method == Method::Adaptive
                                   ? "continuing: adaptive smoothing never makes them worse"
                                   : "continuing, but ordinary smoothing may make them worse";

@@ -60,24 +60,43 @@ Csr build_node_tets(const std::vector<index_t>& tets, std::size_t num_nodes) {
 }
 
 std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes) {
+  struct FaceUse {
+    std::array<index_t, 3> face;  // ascending
+    index_t opposite;             // the tet's fourth node
+    bool operator<(const FaceUse& o) const { return face != o.face ? face < o.face : opposite < o.opposite; }
+  };
   const std::size_t nt = tets.size() / 4;
-  std::vector<std::array<index_t, 3>> faces(nt * 4);
+  std::vector<FaceUse> uses(nt * 4);
   for (std::size_t t = 0; t < nt; ++t)
     for (int f = 0; f < 4; ++f) {
-      std::array<index_t, 3> face{tets[4 * t + kTetFaces[f][0]], tets[4 * t + kTetFaces[f][1]],
-                                  tets[4 * t + kTetFaces[f][2]]};
-      std::sort(face.begin(), face.end());
-      faces[4 * t + f] = face;
+      FaceUse& u = uses[4 * t + f];
+      u.face = {tets[4 * t + kTetFaces[f][0]], tets[4 * t + kTetFaces[f][1]], tets[4 * t + kTetFaces[f][2]]};
+      std::sort(u.face.begin(), u.face.end());
+      u.opposite = tets[4 * t + f];
     }
-  std::sort(faces.begin(), faces.end());
+  std::sort(uses.begin(), uses.end());
   std::vector<std::uint8_t> boundary(num_nodes, 0);
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const bool same_prev = i > 0 && faces[i - 1] == faces[i];
-    const bool same_next = i + 1 < faces.size() && faces[i + 1] == faces[i];
-    if (!same_prev && !same_next)
-      for (index_t n : faces[i]) boundary[static_cast<std::size_t>(n)] = 1;
+  for (std::size_t first = 0, last; first < uses.size(); first = last) {
+    for (last = first + 1; last < uses.size() && uses[last].face == uses[first].face; ++last) {
+    }
+    // Sorted by opposite node within the run: all uses agree on it exactly
+    // when the first and the last do.
+    if (uses[first].opposite == uses[last - 1].opposite)
+      for (index_t n : uses[first].face) boundary[static_cast<std::size_t>(n)] = 1;
   }
   return boundary;
+}
+
+std::size_t count_repeated_tets(const std::vector<index_t>& tets) {
+  std::vector<std::array<index_t, 4>> sorted(tets.size() / 4);
+  for (std::size_t t = 0; t < sorted.size(); ++t) {
+    std::copy(tets.begin() + 4 * t, tets.begin() + 4 * t + 4, sorted[t].begin());
+    std::sort(sorted[t].begin(), sorted[t].end());
+  }
+  std::sort(sorted.begin(), sorted.end());
+  std::size_t repeated = 0;
+  for (std::size_t t = 1; t < sorted.size(); ++t) repeated += sorted[t] == sorted[t - 1];
+  return repeated;
 }
 
 std::vector<std::uint8_t> movable_nodes(const TetMesh& mesh, const std::vector<std::uint8_t>& boundary,

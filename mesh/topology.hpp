@@ -18,10 +18,16 @@ Csr build_neighbours(const std::vector<index_t>& tets, std::size_t num_nodes);
 Csr build_node_tets(const std::vector<index_t>& tets, std::size_t num_nodes);
 
 // 1 for nodes on a boundary face: each tet's 4 faces are stored with sorted
-// node indices, all faces sorted, and a face that appears once is on the
-// boundary. Nodes in no tet are not boundary nodes (they have no faces);
-// they never move because they have no neighbours.
+// node indices and the tet's fourth node, all faces sorted, and a face is on
+// the boundary when one tet uses it. A tet listed twice (Gmsh's MSH 2.2
+// writer repeats the tets of a volume in two physical groups) is still one
+// tet: the uses of a face count as one when they share the fourth node, so
+// such a file keeps its boundary. Nodes in no tet are not boundary nodes
+// (they have no faces); they never move because they have no neighbours.
 std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes);
+
+// How many tets have the same four nodes as an earlier tet (in any order).
+std::size_t count_repeated_tets(const std::vector<index_t>& tets);
 
 // A node may move when it is not on the boundary, not pinned by the file
 // (mesh.fixed) and has at least one neighbour.

@@ -12,6 +12,11 @@ struct ValidationReport {
   std::size_t inverted = 0;      // signed volume < 0
   std::size_t degenerate = 0;    // signed volume == 0 or a repeated node
   std::size_t unreferenced = 0;  // nodes in no tet
+  // Tets with the node set of an earlier tet (count_repeated_tets in
+  // mesh/topology.hpp). A sort of every tet, which the readers' own
+  // validation does not need: validate_mesh leaves it 0 and the command
+  // line fills it in.
+  std::size_t repeated = 0;
 };
 
 // Throws InputError (naming `source` and the offending tet or node) when a

@@ -19,6 +19,8 @@
 #include "apps/worst_tets.hpp"
 #include "kernels/smoother.hpp"
 #include "mesh/errors.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/topology.hpp"
 #include "test_meshes.hpp"
 
 namespace tetsmooth::cli {
@@ -358,6 +360,41 @@ TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
   EXPECT_NE(r.err.find("after"), std::string::npos);
   EXPECT_NE(r.err.find("radius ratio histogram"), std::string::npos);
   EXPECT_NE(r.err.find("on cpu (2 thread(s)"), std::string::npos) << r.err;
+}
+
+// A volume in two physical groups, as Gmsh's MSH 2.2 writer saves it: every
+// tet twice, under two tags. The run says so, counts the repeats, and the
+// boundary stays put: read as a mesh without boundary, it would all move.
+TEST_F(CliFiles, RepeatedTetsAreNamedAndKeepTheBoundary) {
+  TetMesh mesh = read_mesh(lattice(4));
+  const std::size_t nt = mesh.num_tets();
+  mesh.extras.tet_tags.assign(nt, 1);
+  for (std::size_t t = 0; t < nt; ++t) {
+    mesh.tets.insert(mesh.tets.end(), {mesh.tets[4 * t], mesh.tets[4 * t + 1], mesh.tets[4 * t + 2],
+                                       mesh.tets[4 * t + 3]});
+    mesh.extras.tet_tags.push_back(2);
+  }
+  write_mesh(mesh, path("twice.msh"), MeshFormat::Msh22);
+  const CliRun r = run({"smooth", path("twice.msh"), "-o", path("out.msh"), "--device", "cpu", "--report",
+                        path("report.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("384 tets repeat the nodes of an earlier tet"), std::string::npos) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("report.json")) >> j;
+  EXPECT_EQ(j["input"]["repeated_tets"], 384);
+  EXPECT_EQ(j["movable_nodes"], 27);
+
+  const TetMesh out = read_mesh(path("out.msh"));
+  ASSERT_EQ(out.num_nodes(), mesh.num_nodes());
+  const std::vector<index_t> listed_once(mesh.tets.begin(), mesh.tets.begin() + 4 * nt);
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(listed_once, mesh.num_nodes());
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      if (boundary[i]) EXPECT_EQ(out.xyz[3 * i + c], mesh.xyz[3 * i + c]) << "boundary node " << i;
+      moved += out.xyz[3 * i + c] != mesh.xyz[3 * i + c];
+    }
+  EXPECT_GT(moved, 0u);
 }
 
 TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {

@@ -21,18 +21,22 @@ std::vector<std::set<index_t>> brute_neighbours(const TetMesh& m) {
   return nb;
 }
 
+// A face is on the boundary when one tet uses it; tets with the same node
+// set are one tet, however often they are listed.
 std::vector<std::uint8_t> brute_boundary(const TetMesh& m) {
-  std::map<std::set<index_t>, int> uses;
-  for (std::size_t t = 0; t < m.num_tets(); ++t)
+  std::map<std::set<index_t>, std::set<std::set<index_t>>> users;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const std::set<index_t> tet(m.tets.begin() + 4 * t, m.tets.begin() + 4 * t + 4);
     for (int skip = 0; skip < 4; ++skip) {
       std::set<index_t> f;
       for (int k = 0; k < 4; ++k)
         if (k != skip) f.insert(m.tets[4 * t + k]);
-      ++uses[f];
+      users[f].insert(tet);
     }
+  }
   std::vector<std::uint8_t> b(m.num_nodes(), 0);
-  for (const auto& [face, count] : uses)
-    if (count == 1)
+  for (const auto& [face, tets] : users)
+    if (tets.size() == 1)
       for (index_t n : face) b[n] = 1;
   return b;
 }
@@ -96,6 +100,49 @@ TEST(Topology, UnreferencedAndPinnedNodesNeverMove) {
   m.fixed[8] = 1;
   topo = build_topology(m);
   EXPECT_EQ(topo.movable[8], 0);
+}
+
+// A tet listed again, its nodes in another order or not (Gmsh's MSH 2.2
+// writer repeats the tets of a volume in two physical groups), is one tet:
+// the boundary stays that of the mesh listed once.
+TEST(Topology, RepeatedTetsKeepTheBoundary) {
+  const TetMesh once = testing::cube_with_centre();
+  TetMesh twice = once;
+  for (std::size_t t = 0; t < once.num_tets(); ++t) {
+    const index_t* v = &once.tets[4 * t];
+    if (t % 2)
+      twice.tets.insert(twice.tets.end(), v, v + 4);
+    else
+      twice.tets.insert(twice.tets.end(), {v[2], v[0], v[1], v[3]});
+  }
+  expect_matches_brute_force(twice);
+  const Topology a = build_topology(once), b = build_topology(twice);
+  EXPECT_EQ(b.boundary, a.boundary);
+  EXPECT_EQ(b.movable, a.movable);
+  EXPECT_EQ(b.movable[8], 1);
+  EXPECT_EQ(b.node_tets.row_size(8), 24);
+}
+
+// A face used by a tet, its repeat and a neighbour is interior: the repeat
+// must not hide the neighbour.
+TEST(Topology, RepeatedTetBesideANeighbour) {
+  const TetMesh once = testing::random_delaunay(300, 5);
+  TetMesh some_twice = once;
+  for (std::size_t t = 0; t < once.num_tets(); t += 7)
+    some_twice.tets.insert(some_twice.tets.end(), once.tets.begin() + 4 * t, once.tets.begin() + 4 * t + 4);
+  expect_matches_brute_force(some_twice);
+  EXPECT_EQ(build_topology(some_twice).boundary, build_topology(once).boundary);
+}
+
+TEST(Topology, CountsRepeatedTets) {
+  const TetMesh m = testing::cube_with_centre();
+  EXPECT_EQ(count_repeated_tets(m.tets), 0u);
+  std::vector<index_t> tets = m.tets;
+  const index_t* v = &m.tets[0];
+  tets.insert(tets.end(), {v[3], v[1], v[2], v[0]});      // tet 0 reordered
+  tets.insert(tets.end(), v, v + 4);                      // and as it was
+  tets.insert(tets.end(), m.tets.begin() + 4, m.tets.begin() + 8);  // tet 1 again
+  EXPECT_EQ(count_repeated_tets(tets), 3u);
 }
 
 TEST(Topology, MeanEdgeLengthOfRegularTet) {

@@ -1,6 +1,9 @@
 // Boundary nodes on the GPU (paper §3.3): every tet's 4 faces as sorted node
 // triples, one radix sort, and a face that equals no other face is used
-// once, so it is a boundary face and its 3 nodes are boundary nodes.
+// once, so it is a boundary face and its 3 nodes are boundary nodes. As on
+// the CPU (find_boundary_nodes in mesh/topology.hpp), an equal face whose
+// tet has the same fourth node is the same tet listed again, not a
+// neighbour, so it does not make the face interior.
 //
 // The sort key is a 32-bit hash of the sorted triple, with the face's index
 // (4t + f) as the value, sorted on its top kSortedBits bits only: three
@@ -72,17 +75,25 @@ __global__ void emit_faces(const index_t* tets, std::size_t num_faces, std::uint
 constexpr int kSortedBits = 24;
 constexpr int kUnsortedBits = 32 - kSortedBits;
 
+// The node of face `face`'s tet that the face leaves out (its local vertex f).
+__device__ index_t opposite_node(const index_t* tets, std::size_t face) { return tets[face]; }
+
 // Stores of 1 from several threads to one flag are race-free.
 __global__ void mark_single_faces(const index_t* tets, const std::uint32_t* hashes, const std::uint32_t* ids,
                                   std::size_t n, std::uint8_t* boundary) {
   const std::size_t k = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
   if (k >= n) return;
   const Triple mine = face_triple(tets, ids[k]);
+  const index_t opposite = opposite_node(tets, ids[k]);
   const std::uint32_t h = hashes[k], run = h >> kUnsortedBits;
+  // Another tet's use of this face: the same triple, another fourth node.
+  const auto neighbour = [&](std::size_t j) {
+    return hashes[j] == h && face_triple(tets, ids[j]) == mine && opposite_node(tets, ids[j]) != opposite;
+  };
   for (std::size_t j = k; j > 0 && hashes[j - 1] >> kUnsortedBits == run; --j)
-    if (hashes[j - 1] == h && face_triple(tets, ids[j - 1]) == mine) return;
+    if (neighbour(j - 1)) return;
   for (std::size_t j = k + 1; j < n && hashes[j] >> kUnsortedBits == run; ++j)
-    if (hashes[j] == h && face_triple(tets, ids[j]) == mine) return;
+    if (neighbour(j)) return;
   boundary[mine.a] = 1;
   boundary[mine.b] = 1;
   boundary[mine.c] = 1;

@@ -94,6 +94,19 @@ TEST_F(GpuTopology, RepeatedNodeInATet) {
   expect_same_as_cpu(m);
 }
 
+// Tets listed twice (as Gmsh's MSH 2.2 writer lists a volume in two
+// physical groups), one of them with its nodes in another order: the same
+// boundary as without the repeats, and each copy in its nodes' rows.
+TEST_F(GpuTopology, RepeatedTets) {
+  TetMesh m = testing::cube_grid(3, 0.2);
+  const std::size_t nt = m.num_tets();
+  for (std::size_t t = 0; t < nt; t += 2) {
+    const index_t* v = &m.tets[4 * t];
+    m.tets.insert(m.tets.end(), {v[1], v[2], v[0], v[3]});
+  }
+  expect_same_as_cpu(m);
+}
+
 // Node indices above 2^22, as in the 10M-node lattice: 23 bits each, so
 // edge keys of 46 bits and faces whose packed triple would need 69 (the
 // face sort hashes them). The nodes below the shift are unreferenced.

@@ -1,8 +1,12 @@
 // Format names and extensions, read_mesh/write_mesh dispatch for every
 // format, and the atomic-write helper every writer goes through.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -190,6 +194,62 @@ TEST_F(IoDir, AtomicWriteReportsABadStream) {
     EXPECT_NE(std::string(e.what()).find("t.txt"), std::string::npos) << e.what();
   }
   EXPECT_EQ(files(), 0u);
+}
+
+// A link to the real file: the file is replaced, the link stays a link, and
+// no temporary is left in either directory.
+TEST_F(IoDir, AtomicWriteFollowsSymbolicLinks) {
+  fs::create_directory(path("real"));
+  write_atomically(path("real/t.txt"), [](std::ostream& out) { out << "old"; });
+  fs::create_symlink("real/t.txt", path("link.txt"));  // relative to the link's directory
+  write_atomically(path("link.txt"), [](std::ostream& out) { out << "new"; });
+  EXPECT_TRUE(fs::is_symlink(path("link.txt")));
+  EXPECT_EQ(contents(path("real/t.txt")), "new");
+  EXPECT_EQ(files(), 2u);
+  EXPECT_EQ(std::distance(fs::directory_iterator(path("real")), fs::directory_iterator{}), 1);
+  // A dangling link: the file it names is created.
+  fs::create_symlink(path("real/later.txt"), path("dangling.txt"));
+  write_atomically(path("dangling.txt"), [](std::ostream& out) { out << "made"; });
+  EXPECT_TRUE(fs::is_symlink(path("dangling.txt")));
+  EXPECT_EQ(contents(path("real/later.txt")), "made");
+}
+
+TEST_F(IoDir, AtomicWriteKeepsTheModeOfTheFileItReplaces) {
+  write_atomically(path("t.txt"), [](std::ostream& out) { out << "old"; });
+  fs::permissions(path("t.txt"), fs::perms::owner_read | fs::perms::owner_write);
+  write_atomically(path("t.txt"), [](std::ostream& out) { out << "new"; });
+  EXPECT_EQ(fs::status(path("t.txt")).permissions(), fs::perms::owner_read | fs::perms::owner_write);
+  EXPECT_EQ(contents(path("t.txt")), "new");
+}
+
+// A FIFO (like /dev/stdout in a pipeline) is written into, not replaced.
+TEST_F(IoDir, AtomicWriteIntoAFifoWritesThrough) {
+  ASSERT_EQ(::mkfifo(path("pipe").c_str(), 0600), 0);
+  // Opened for reading first and without blocking, so the write below finds
+  // a reader; its few bytes fit in the pipe's buffer.
+  const int reader = ::open(path("pipe").c_str(), O_RDONLY | O_NONBLOCK);
+  ASSERT_GE(reader, 0);
+  write_atomically(path("pipe"), [](std::ostream& out) { out << "through the pipe"; });
+  char buf[64] = {};
+  const ssize_t n = ::read(reader, buf, sizeof buf - 1);
+  ::close(reader);
+  EXPECT_EQ(std::string(buf, n > 0 ? static_cast<std::size_t>(n) : 0), "through the pipe");
+  EXPECT_EQ(fs::status(path("pipe")).type(), fs::file_type::fifo);
+  EXPECT_EQ(files(), 1u);
+}
+
+// Killed while the body is still writing: the temporary goes with the
+// process, and the old file stays.
+TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
+  write_atomically(path("t.txt"), [](std::ostream& out) { out << "old"; });
+  EXPECT_EXIT(write_atomically(path("t.txt"),
+                               [](std::ostream& out) {
+                                 out << std::string(1 << 20, 'x');  // part of it already in the file
+                                 std::raise(SIGTERM);
+                               }),
+              ::testing::KilledBySignal(SIGTERM), "");
+  EXPECT_EQ(contents(path("t.txt")), "old");
+  EXPECT_EQ(files(), 1u);
 }
 
 TEST_F(IoDir, WriteMeshFailureLeavesNoFile) {

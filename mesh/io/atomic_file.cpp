@@ -1,6 +1,7 @@
 #include "mesh/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -10,6 +11,7 @@
 #include <streambuf>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/temp_file_cleanup.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -62,36 +64,75 @@ class FdBuf : public std::streambuf {
   char buf_[1 << 16];
 };
 
-// A temporary file beside its target, removed unless commit() renamed it.
+// The path a write to `path` lands on: symbolic links followed to their
+// end, each relative one against its own directory. A cycle or a chain too
+// long ends with the path reached, and the write reports what open() says.
+std::string resolve_links(std::string path) {
+  for (int hop = 0; hop < 40; ++hop) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return path;
+    std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
+    const ssize_t n = ::readlink(path.c_str(), link.data(), link.size());
+    if (n < 0 || static_cast<std::size_t>(n) >= link.size()) return path;
+    link.resize(static_cast<std::size_t>(n));
+    const std::size_t slash = path.rfind('/');
+    path = link[0] == '/' || slash == std::string::npos ? link : path.substr(0, slash + 1) + link;
+  }
+  return path;
+}
+
+// Where the bytes go: a temporary beside the target, renamed over it by
+// commit() and removed otherwise; or, for a target that is a device, FIFO or
+// socket, the target itself.
 class TempFile {
  public:
-  explicit TempFile(std::string target) : target_(std::move(target)) {
+  explicit TempFile(const std::string& target) : target_(target), dest_(resolve_links(target)) {
+    struct stat st {};
+    const bool exists = ::stat(dest_.c_str(), &st) == 0;
+    if (exists && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+      direct_ = true;
+      fd_ = ::open(dest_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+      if (fd_ < 0) fail(target_, "", errno);
+      return;
+    }
     static std::atomic<unsigned> counter{0};
-    const std::size_t slash = target_.rfind('/');
-    const std::string dir = slash == std::string::npos ? "" : target_.substr(0, slash + 1);
-    const std::string base = slash == std::string::npos ? target_ : target_.substr(slash + 1);
+    const std::size_t slash = dest_.rfind('/');
+    const std::string dir = slash == std::string::npos ? "" : dest_.substr(0, slash + 1);
+    const std::string base = slash == std::string::npos ? dest_ : dest_.substr(slash + 1);
     // O_EXCL with a fresh name per attempt: concurrent writers of the same
     // target never share a temporary. Mode 0666 lets the umask decide, as for
-    // any newly created file.
+    // any newly created file; a file that is replaced keeps its own mode.
     for (int attempt = 0; attempt < 100; ++attempt) {
       path_ = dir + "." + base + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
       fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd_ >= 0) return;
+      if (fd_ >= 0) break;
       if (errno != EEXIST) break;
     }
-    const int err = errno;
-    path_.clear();
-    fail(target_, "cannot create a temporary file beside it: ", err);
+    if (fd_ < 0) {
+      const int err = errno;
+      path_.clear();
+      fail(target_, "cannot create a temporary file beside it: ", err);
+    }
+    slot_ = remember_temp_file(path_);
+    if (exists && S_ISREG(st.st_mode) && ::fchmod(fd_, st.st_mode & 07777) != 0) {
+      const int err = errno;  // no destructor runs for a throwing constructor
+      ::close(fd_);
+      ::unlink(path_.c_str());
+      forget_temp_file(slot_);
+      fail(target_, "cannot give the new file the mode of the old one: ", err);
+    }
   }
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
   ~TempFile() {
     if (fd_ >= 0) ::close(fd_);
     if (!path_.empty()) ::unlink(path_.c_str());
+    forget_temp_file(slot_);
   }
 
   // Runs the body into the file and makes the bytes durable, so that the
-  // rename never exposes a file whose data is still only in the page cache.
+  // rename never exposes a file whose data is still only in the page cache
+  // (a device or pipe has no such cache to flush).
   void fill(const StreamBody& body) {
     FdBuf buf(fd_);
     std::ostream out(&buf);
@@ -99,21 +140,25 @@ class TempFile {
     out.flush();
     if (buf.error() != 0) fail(target_, "", buf.error());
     if (!out) fail(target_, "the output stream went bad while formatting", 0);
-    if (::fsync(fd_) != 0) fail(target_, "", errno);
+    if (!direct_ && ::fsync(fd_) != 0) fail(target_, "", errno);
     const int fd = fd_;
     fd_ = -1;
     if (::close(fd) != 0) fail(target_, "", errno);
   }
 
   void commit() {
-    if (::rename(path_.c_str(), target_.c_str()) != 0) fail(target_, "cannot rename the temporary into place: ", errno);
+    if (direct_) return;
+    if (::rename(path_.c_str(), dest_.c_str()) != 0) fail(target_, "cannot rename the temporary into place: ", errno);
     path_.clear();
   }
 
  private:
-  std::string target_;
-  std::string path_;
+  std::string target_;  // as the caller named it, for messages
+  std::string dest_;    // where it leads
+  std::string path_;    // the temporary, while it exists
+  bool direct_ = false;
   int fd_ = -1;
+  int slot_ = -1;
 };
 
 }  // namespace

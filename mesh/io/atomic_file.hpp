@@ -4,8 +4,15 @@
 // rename cannot cross file systems), flushed to disk, and renamed over the
 // target. On any failure the temporary is removed and OutputError names the
 // path and the reason (strerror). Exceptions thrown by the body itself are
-// passed on unchanged, after the same clean-up. A symbolic link at the target
-// is replaced by the new file, not followed.
+// passed on unchanged, after the same clean-up, and an interrupting signal
+// (SIGINT, SIGTERM, SIGHUP) removes the temporary too (temp_file_cleanup.hpp).
+//
+// What stands at the target decides the rest:
+//  * a symbolic link is followed (to its end, even a dangling one): the file
+//    it names is replaced and the link stays a link;
+//  * an existing regular file keeps its permission bits;
+//  * a device, FIFO or socket (/dev/stdout, a pipe) is written directly, as
+//    there is nothing to rename over it: such a write is not atomic.
 #include <functional>
 #include <ostream>
 #include <string>

@@ -5,8 +5,10 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <vector>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/tetgen_io.hpp"
 
 namespace tetsmooth::cli {
 
@@ -21,6 +23,35 @@ void check_output_location(const std::string& path) {
   if (!fs::exists(status)) fail("directory '" + dir + "' does not exist");
   if (!fs::is_directory(status)) fail("'" + dir + "' is not a directory");
   if (::access(dir.c_str(), W_OK | X_OK) != 0) fail("directory '" + dir + "': " + std::strerror(errno));
+}
+
+namespace {
+
+// The files a mesh path stands for in its format.
+std::vector<std::string> mesh_files(const std::string& path, MeshFormat format) {
+  if (format != MeshFormat::TetGen) return {path};
+  const std::string base = tetgen_base(path);
+  return {base + ".node", base + ".ele"};
+}
+
+// One file under two names: the same inode where both exist, else the same
+// path once "." / ".." and links are resolved.
+bool same_file(const std::string& a, const std::string& b) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(a, ec) && fs::exists(b, ec)) return fs::equivalent(a, b, ec);
+  const fs::path ca = fs::weakly_canonical(a, ec), cb = fs::weakly_canonical(b, ec);
+  return !ec && ca == cb;
+}
+
+}  // namespace
+
+void check_report_path(const std::string& report, const std::string& input, MeshFormat input_format,
+                       const std::string& output, MeshFormat output_format) {
+  for (const std::string& f : mesh_files(input, input_format))
+    if (same_file(report, f)) throw UsageError("--report '" + report + "' is the input mesh '" + f + "'");
+  for (const std::string& f : mesh_files(output, output_format))
+    if (same_file(report, f)) throw UsageError("--report '" + report + "' is the output mesh '" + f + "'");
 }
 
 }  // namespace tetsmooth::cli

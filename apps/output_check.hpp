@@ -4,10 +4,19 @@
 // still report (and clean up) any failure that happens later.
 #include <string>
 
+#include "mesh/io/mesh_io.hpp"
+
 namespace tetsmooth::cli {
 
 // Throws OutputError when `path`'s directory does not exist, is not a
 // directory or is not writable, or when `path` itself is a directory.
 void check_output_location(const std::string& path);
+
+// Throws UsageError when the report at `report` would be written over the
+// mesh that was read (`input` in `input_format`) or the one to be written
+// (`output` in `output_format`): a file of the TetGen pair counts for both.
+// The two meshes may be one file (smoothing in place).
+void check_report_path(const std::string& report, const std::string& input, MeshFormat input_format,
+                       const std::string& output, MeshFormat output_format);
 
 }  // namespace tetsmooth::cli

@@ -51,7 +51,8 @@ void write_quality_table(std::ostream& os, const std::vector<SummaryColumn>& col
   row(os, "radius ratio  min", columns, [](const S& s) { return quality_text(s.min); });
   row(os, "              mean", columns, [](const S& s) { return quality_text(s.mean); });
   row(os, "              max", columns, [](const S& s) { return quality_text(s.max); });
-  row(os, "min over movable tets", columns, [](const S& s) { return quality_text(s.min_movable); });
+  row(os, "min over movable tets", columns,
+      [](const S& s) { return s.movable_tets > 0 ? quality_text(s.min_movable) : std::string("-"); });
   row(os, "tets with q < 0.1", columns, [](const S& s) { return with_thousands(s.below_0_1); });
   row(os, "inverted tets", columns, [](const S& s) { return with_thousands(s.inverted); });
   row(os, "degenerate tets", columns, [](const S& s) { return with_thousands(s.degenerate); });

@@ -98,7 +98,10 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   std::string why_not_cuda;
   record.device = choose_device(c.device, why_not_cuda);
   check_output_location(c.output);
-  if (!c.report_path.empty()) check_output_location(c.report_path);
+  if (!c.report_path.empty()) {
+    check_report_path(c.report_path, c.input, record.input_format, c.output, record.output_format);
+    check_output_location(c.report_path);
+  }
 
   Clock::time_point t0 = Clock::now();
   TetMesh mesh = read_mesh(c.input, record.input_format);

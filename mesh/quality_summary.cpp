@@ -57,7 +57,10 @@ QualitySummary summarize_quality(const TetMesh& mesh, const std::vector<std::uin
     if (v6 == 0) ++s.degenerate;
     bool touches_movable = movable.empty();
     for (int k = 0; k < 4 && !touches_movable; ++k) touches_movable = movable[mesh.tets[4 * t + k]] != 0;
-    if (touches_movable) s.min_movable = std::min(s.min_movable, q);
+    if (touches_movable) {
+      s.min_movable = std::min(s.min_movable, q);
+      ++s.movable_tets;
+    }
   }
   s.mean = sum / static_cast<double>(s.tets);
   s.mean_ratio_mean = sum_mean_ratio / static_cast<double>(s.tets);

@@ -18,9 +18,11 @@ struct QualitySummary {
   std::size_t below_0_1 = 0;   // tets with q < 0.1, inverted included
   std::size_t inverted = 0;    // signed volume < 0
   std::size_t degenerate = 0;  // signed volume == 0
-  // Minimum q over tets with at least one movable node: the part of the mesh
-  // smoothing can change (1 when no tet has a movable node).
+  // Minimum q over the movable_tets, those with at least one movable node:
+  // the part of the mesh smoothing can change (1 when there are none, which
+  // reports print as no value).
   double min_movable = 1;
+  std::size_t movable_tets = 0;
   double min_dihedral_deg = 0;  // over all tets
   double mean_ratio_mean = 0;   // mean of the mean-ratio metric
 };

@@ -28,6 +28,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
+std::string contents_of(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
 Command parse(std::vector<std::string> args) { return parse_command_line(args); }
 
 template <class T>
@@ -301,6 +306,26 @@ TEST_F(CliFiles, UnwritableOutputExitsWith4AndWritesNothing) {
   EXPECT_EQ(files(), expected);
 }
 
+// A report path that names a mesh of the run, under any spelling, is refused
+// before anything is read or written.
+TEST_F(CliFiles, ReportOverAMeshIsAUsageError) {
+  const std::string in = lattice(2, "in.vtu");
+  const std::string before = contents_of(in);
+  const std::vector<std::vector<std::string>> runs{
+      {"smooth", in, "-o", path("out.vtu"), "--report", path("out.vtu")},
+      {"smooth", in, "-o", path("out.vtu"), "--report", path("in.vtu")},
+      {"smooth", in, "-o", path("out.vtu"), "--report", dir_.string() + "/./sub/../in.vtu"},
+      {"smooth", in, "-o", path("out.ele"), "--report", path("out.node")}};
+  fs::create_directory(path("sub"));
+  for (const auto& args : runs) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, kExitUsage) << args.back() << ": " << r.err;
+    EXPECT_NE(r.err.find("--report"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(contents_of(in), before);
+  EXPECT_EQ(files(), (std::vector<std::string>{"in.vtu", "sub"}));
+}
+
 TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {
   if (cuda_available()) GTEST_SKIP() << "a CUDA device is usable here";
   const std::string in = lattice(2);
@@ -432,6 +457,19 @@ TEST_F(CliFiles, QualityJsonListsTheWorstTetsWorstFirst) {
     EXPECT_LT(t["tet"].get<int>(), 6 * 27);
     for (const auto& n : t["nodes"]) EXPECT_LT(n.get<int>(), 64);
   }
+}
+
+// A mesh whose nodes are all on the boundary has no movable tets, so no
+// minimum over them: no value, not the 1 the minimum starts from.
+TEST_F(CliFiles, NoMovableTetsGiveNoMinimumOverThem) {
+  write_mesh(testing::regular_tet(), path("one.vtu"));
+  const CliRun json = run({"quality", path("one.vtu"), "--json"});
+  ASSERT_EQ(json.code, kExitOk) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_TRUE(j["quality"]["min_movable"].is_null()) << j["quality"];
+  EXPECT_EQ(j["quality"]["movable_tets"], 0);
+  const CliRun text = run({"quality", path("one.vtu")});
+  EXPECT_NE(text.out.find("min over movable tets                  -\n"), std::string::npos) << text.out;
 }
 
 TEST_F(CliFiles, QualityTextStatesIndexBase) {

@@ -190,9 +190,16 @@ TEST(QualitySummary, MinOverMovableIgnoresFrozenTets) {
   std::vector<std::uint8_t> movable(9, 0);
   const QualitySummary none = summarize_quality(m, movable);
   EXPECT_EQ(none.min_movable, 1.0);
+  EXPECT_EQ(none.movable_tets, 0u);
   movable[8] = 1;
   const QualitySummary all = summarize_quality(m, movable);
   EXPECT_DOUBLE_EQ(all.min_movable, all.min);
+  EXPECT_EQ(all.movable_tets, 12u);
+  movable.assign(9, 0);
+  movable[0] = 1;  // a corner: only the tets that touch it
+  const QualitySummary corner = summarize_quality(m, movable);
+  EXPECT_GT(corner.movable_tets, 0u);
+  EXPECT_LT(corner.movable_tets, 12u);
 }
 
 TEST(TetQualities, PerTetMatchesSummary) {

@@ -67,7 +67,11 @@ class FdBuf : public std::streambuf {
 // The path a write to `path` lands on: symbolic links followed to their
 // end, each relative one against its own directory. A cycle or a chain too
 // long ends with the path reached, and the write reports what open() says.
-std::string resolve_links(std::string path) {
+// `held` is set when the chain goes through /proc (/dev/stdout is a link to
+// /proc/self/fd/1): the file is one this process has open, and renaming
+// another over it would cut it off from that descriptor.
+std::string resolve_links(std::string path, bool& held) {
+  held = false;
   for (int hop = 0; hop < 40; ++hop) {
     struct stat st {};
     if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return path;
@@ -77,6 +81,7 @@ std::string resolve_links(std::string path) {
     link.resize(static_cast<std::size_t>(n));
     const std::size_t slash = path.rfind('/');
     path = link[0] == '/' || slash == std::string::npos ? link : path.substr(0, slash + 1) + link;
+    if (path.compare(0, 6, "/proc/") == 0) held = true;
   }
   return path;
 }
@@ -86,12 +91,16 @@ std::string resolve_links(std::string path) {
 // socket, the target itself.
 class TempFile {
  public:
-  explicit TempFile(const std::string& target) : target_(target), dest_(resolve_links(target)) {
+  explicit TempFile(const std::string& target) : target_(target) {
+    bool held = false;
+    dest_ = resolve_links(target_, held);
     struct stat st {};
-    const bool exists = ::stat(dest_.c_str(), &st) == 0;
-    if (exists && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) {
+    const bool exists = ::stat(target_.c_str(), &st) == 0;  // through every link, /proc's too
+    if (exists && ((!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) || held)) {
       direct_ = true;
-      fd_ = ::open(dest_.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+      // A held regular file (stdout sent to a file) is appended to, after
+      // what the process has written there, as through its descriptor.
+      fd_ = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | (S_ISREG(st.st_mode) ? O_APPEND : O_TRUNC));
       if (fd_ < 0) fail(target_, "", errno);
       return;
     }

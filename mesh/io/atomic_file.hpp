@@ -11,8 +11,11 @@
 //  * a symbolic link is followed (to its end, even a dangling one): the file
 //    it names is replaced and the link stays a link;
 //  * an existing regular file keeps its permission bits;
-//  * a device, FIFO or socket (/dev/stdout, a pipe) is written directly, as
-//    there is nothing to rename over it: such a write is not atomic.
+//  * a device, FIFO or socket (a terminal, a pipe), or a file the process
+//    holds open, reached through /proc (/dev/stdout sent to a file), is
+//    written directly (the held file appended to), as there is nothing to
+//    rename over it, or renaming would cut it off from its descriptor: such
+//    a write is not atomic.
 #include <functional>
 #include <ostream>
 #include <string>

@@ -6,6 +6,7 @@
 #include "apps/output_fields.hpp"
 #include "apps/report_text.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "mesh/io/writable_check.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth::cli {
@@ -15,6 +16,7 @@ void run_convert(const ConvertCommand& c, const Console& console) {
   const MeshFormat output_format = format_from_path(c.output, c.output_format);
   check_output_location(c.output);
   const TetMesh mesh = read_mesh(c.input, input_format);
+  check_writable(mesh, c.output, output_format);
   for (const std::string& w : input_warnings(mesh, inspect_input(mesh, c.input), c.input)) console.warn(w);
   write_mesh_with_fields(mesh, c.output, output_format);
   console.note("wrote " + c.output + ": " + with_thousands(mesh.num_nodes()) + " nodes, " +

@@ -13,6 +13,7 @@
 #include "kernels/smoother.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "mesh/io/writable_check.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth::cli {
@@ -107,6 +108,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   TetMesh mesh = read_mesh(c.input, record.input_format);
   record.read_ms = ms_since(t0);
   record.input = inspect_input(mesh, c.input);
+  check_writable(mesh, c.output, record.output_format);
   const char* inverted_note = c.options.method == Method::Adaptive
                                   ? "continuing: adaptive smoothing never makes them worse"
                                   : "continuing, but ordinary smoothing may make them worse";

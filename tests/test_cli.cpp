@@ -326,6 +326,24 @@ TEST_F(CliFiles, ReportOverAMeshIsAUsageError) {
   EXPECT_EQ(files(), (std::vector<std::string>{"in.vtu", "sub"}));
 }
 
+// A hexahedron read from MSH has no place in VTK output: the run says so
+// before it smooths anything, and writes nothing.
+TEST_F(CliFiles, OutputThatCannotHoldTheElementsFailsBeforeSmoothing) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}});
+  write_mesh(mesh, path("hex.msh"));
+  for (const char* out : {"out.vtu", "out.vtk"}) {
+    const CliRun r = run({"smooth", path("hex.msh"), "-o", path(out), "--device", "cpu"});
+    EXPECT_EQ(r.code, kExitOutput) << r.err;
+    EXPECT_NE(r.err.find("hexahedron"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("done:"), std::string::npos) << "smoothed before failing:\n" << r.err;
+  }
+  EXPECT_EQ(run({"convert", path("hex.msh"), path("out.vtu")}).code, kExitOutput);
+  EXPECT_EQ(files(), std::vector<std::string>{"hex.msh"});
+  // Formats that hold it go through.
+  EXPECT_EQ(run({"smooth", path("hex.msh"), "-o", path("out.msh"), "--device", "cpu", "-q"}).code, kExitOk);
+}
+
 TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {
   if (cuda_available()) GTEST_SKIP() << "a CUDA device is usable here";
   const std::string in = lattice(2);

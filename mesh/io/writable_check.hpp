@@ -1,0 +1,19 @@
+#pragma once
+// Whether an output format can hold a mesh, asked before the work that
+// produces it, so that a long smoothing run does not end in "cannot write".
+#include <string>
+
+#include "mesh/io/mesh_io.hpp"
+
+namespace tetsmooth {
+
+// Throws OutputError ("cannot write 'path': ...") when `format` (Auto: from
+// the name) has no place for a kind of element the mesh carries, a
+// hexahedron in VTK output for instance. The writers' own checks decide: they
+// run on a probe that has the mesh's element kinds and tags but only one tet
+// and no other elements, written nowhere, so the check costs microseconds
+// whatever the mesh's size. What depends on the values themselves (a tag too
+// large for MSH field data) is still found only by the real write.
+void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat format = MeshFormat::Auto);
+
+}  // namespace tetsmooth

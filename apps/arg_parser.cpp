@@ -88,6 +88,9 @@ ParsedArgs parse_args(const std::vector<std::string>& args, const std::vector<Op
       shown = token;
     }
     if (!spec) throw UsageError(unknown_option_message(shown.empty() ? token : shown, specs, command));
+    // The last of two values would win unseen (-o a.msh ... -o b.msh).
+    if (spec->takes_value && parsed.values.count(spec->name) != 0)
+      throw UsageError("option " + shown + " is given more than once");
     if (!spec->takes_value) {
       if (has_inline_value) throw UsageError("option " + shown + " takes no value");
       parsed.values[spec->name] = "";

@@ -18,7 +18,7 @@ struct OptionSpec {
 
 struct ParsedArgs {
   std::vector<std::string> positionals;
-  std::map<std::string, std::string> values;  // by long name; flags map to ""; the last repeat wins
+  std::map<std::string, std::string> values;  // by long name; flags map to ""; an option with a value may be given once
 
   bool has(const std::string& name) const { return values.count(name) != 0; }
   const std::string& value(const std::string& name) const { return values.at(name); }

@@ -223,6 +223,16 @@ TEST(CliParse, UsageErrorsNameTheProblem) {
             std::string::npos);
 }
 
+// A second value would silently replace the first.
+TEST(CliParse, AnOptionWithAValueIsGivenOnce) {
+  EXPECT_NE(usage_error_of({"smooth", "in.vtu", "-o", "a.vtu", "-o", "b.vtu"}).find("-o is given more than once"),
+            std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "in.vtu", "-o", "a.vtu", "--output", "b.vtu"}).find("more than once"),
+            std::string::npos);
+  EXPECT_NE(usage_error_of({"smooth", "in.vtu", "-o", "a.vtu", "--tol=1e-3", "--tol", "1e-4"}).find("--tol"),
+            std::string::npos);
+}
+
 TEST(CliParse, NumbersAreCheckedForRange) {
   for (const char* bad : {"0", "-3", "ten", "5x", "", "99999999999"})
     EXPECT_THROW(parse({"smooth", "a.vtu", "-o", "b.vtu", "--max-iter", bad}), UsageError) << bad;
@@ -277,6 +287,15 @@ TEST_F(CliFiles, MissingInputExitsWith3) {
   const CliRun r = run({"quality", path("absent.vtu")});
   EXPECT_EQ(r.code, kExitInput);
   EXPECT_NE(r.err.find("absent.vtu"), std::string::npos) << r.err;
+}
+
+TEST_F(CliFiles, DirectoryAsInputIsNamedAsSuch) {
+  fs::create_directory(path("dir.msh"));
+  const CliRun r = run({"quality", path("dir.msh")});
+  EXPECT_EQ(r.code, kExitInput);
+  EXPECT_NE(r.err.find("dir.msh: is a directory"), std::string::npos) << r.err;
+  fs::create_directory(path("dir.tsm"));
+  EXPECT_NE(run({"convert", path("dir.tsm"), path("x.vtu")}).err.find("is a directory"), std::string::npos);
 }
 
 TEST_F(CliFiles, MalformedInputExitsWith3AndNamesTheLine) {

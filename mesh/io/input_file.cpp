@@ -1,5 +1,7 @@
 #include "mesh/io/input_file.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstring>
 
@@ -8,6 +10,10 @@
 namespace tetsmooth {
 
 std::ifstream open_input(const std::string& path) {
+  // An ifstream opens a directory on Linux and fails only at the first read,
+  // which would be reported as a read error at line 1.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) throw InputError(path, "is a directory, not a mesh file");
   errno = 0;
   std::ifstream in(path, std::ios::binary);  // binary: bytes as they are, offsets exact
   if (!in) throw InputError(path, std::string("cannot open: ") + (errno != 0 ? std::strerror(errno) : "unknown error"));

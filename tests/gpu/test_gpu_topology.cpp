@@ -3,6 +3,7 @@
 // so everything must be exactly equal (integers, no tolerance).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -120,19 +121,25 @@ TEST_F(GpuTopology, NodeIndicesAbove2To22) {
   expect_same_as_cpu(m);
 }
 
-// Every pair of 70 nodes shares a (degenerate, doubled) tet, so the nodes
-// form a clique: 70 colours, past the 64 that one mask of used colours
-// holds. Each tet is listed twice, so no face is single and every node is
-// movable.
+// Every pair of 70 nodes shares tets, so the nodes form a clique: 70
+// colours, past the 64 that one mask of used colours holds. Each pair i, j
+// takes the three tets {i, j, a, b} over two of three pinned hub nodes, so
+// every face has two tets with different fourth nodes: none is single, and
+// the 70 nodes are all movable.
 TEST_F(GpuTopology, CliqueNeedsMoreThan64Colours) {
   constexpr index_t kNodes = 70;
+  const index_t hub[3] = {kNodes, kNodes + 1, kNodes + 2};
   TetMesh m;
-  for (index_t i = 0; i < kNodes; ++i) m.xyz.insert(m.xyz.end(), {double(i), double(i * i % 7), double(i % 5)});
+  for (index_t i = 0; i < kNodes + 3; ++i) m.xyz.insert(m.xyz.end(), {double(i), double(i * i % 7), double(i % 5)});
   for (index_t i = 0; i < kNodes; ++i)
     for (index_t j = i + 1; j < kNodes; ++j)
-      for (int copy = 0; copy < 2; ++copy) m.tets.insert(m.tets.end(), {i, j, i, j});
+      for (int skip = 0; skip < 3; ++skip) m.tets.insert(m.tets.end(), {i, j, hub[(skip + 1) % 3], hub[(skip + 2) % 3]});
+  m.fixed.assign(kNodes + 3, 0);
+  for (index_t h : hub) m.fixed[static_cast<std::size_t>(h)] = 1;
   expect_same_as_cpu(m);
-  EXPECT_EQ(colour_nodes(build_topology(m).neighbours, build_topology(m).movable).num_colours, kNodes);
+  const Topology cpu = build_topology(m);
+  EXPECT_EQ(std::count(cpu.movable.begin(), cpu.movable.end(), 1), kNodes);
+  EXPECT_EQ(colour_nodes(cpu.neighbours, cpu.movable).num_colours, kNodes);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Gmsh MSH 4.1 (ASCII, binary) and 2.2: sparse tags, entities and physical
 // groups, pass-through elements, exact round trips of every flavour, files
-// written by the real Gmsh, and errors that name file:line or file, byte N.
+// written by the real Gmsh, partitioned files, notes on skipped sections, and
+// errors that name file:line or file, byte N.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -145,6 +146,158 @@ TEST(GmshIo, ReadsFilesWrittenByGmsh) {
   EXPECT_EQ(ascii.extras.blocks[0].tags, std::vector<int>(ascii.extras.blocks[0].tags.size(), 3));
   EXPECT_EQ(binary.extras.node_entity_tags, ascii.extras.node_entity_tags);
   EXPECT_EQ(*raw_section(binary, "$PhysicalNames"), *raw_section(ascii, "$PhysicalNames"));
+}
+
+// tests/data/gmsh_partitioned41.msh: the bipyramid as one volume in two
+// partitions. File order of the nodes: D(42) B(20) C(30) A(10) E(57).
+void expect_partitions_merged(const TetMesh& mesh) {
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{42, 20, 30, 10, 57}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{3, 1, 2, 0, 3, 2, 1, 4}));
+  // Both tets are on partitioned volumes of volume 1, physical 7.
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 1}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
+  // Nodes go to the parents: A, between the partitions, into the volume.
+  EXPECT_EQ(mesh.extras.node_entity_dims, (std::vector<int>{0, 2, 2, 3, 2}));
+  EXPECT_EQ(mesh.extras.node_entity_tags, (std::vector<int>{1, 5, 5, 1, 5}));
+  // The line and the triangle on the partition boundary are gone; the
+  // point and the outer triangles keep their physical tags.
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  const PassThroughBlock& point = mesh.extras.blocks[0];
+  EXPECT_EQ(point.kind, "vertex");
+  EXPECT_EQ(point.connectivity, (std::vector<index_t>{0}));
+  EXPECT_EQ(point.entity_tags, (std::vector<int>{1}));
+  EXPECT_EQ(point.tags, (std::vector<int>{9}));
+  const PassThroughBlock& tris = mesh.extras.blocks[1];
+  EXPECT_EQ(tris.kind, "triangle");
+  EXPECT_EQ(tris.connectivity, (std::vector<index_t>{1, 2, 0, 2, 1, 4}));
+  EXPECT_EQ(tris.entity_tags, (std::vector<int>{5, 5}));
+  EXPECT_EQ(tris.tags, (std::vector<int>{3, 3}));
+  // A is pinned by no element of the model, so it may move.
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 1}));
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"the partitions are merged and 2 elements on partition boundaries dropped; "
+                                      "the written file is not partitioned"}));
+}
+
+TEST(GmshIo, ReadsPartitionedFileAsOneMeshOnTheModelEntities) {
+  const TetMesh mesh = read_gmsh_file(testing::data_path("gmsh_partitioned41.msh"));
+  expect_partitions_merged(mesh);
+  // What is written is an ordinary file on the model's own entities.
+  for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V41Binary, MshFlavour::V22Ascii}) {
+    const std::string text = write_text(mesh, flavour);
+    EXPECT_EQ(text.find("Partitioned"), std::string::npos);
+    const TetMesh back = read_text(text);
+    EXPECT_EQ(back.tets, mesh.tets);
+    EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+    EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_entity_tags);
+    EXPECT_EQ(back.fixed, mesh.fixed);
+    expect_same_blocks(back, mesh);
+    EXPECT_TRUE(back.extras.read_notes.empty());
+    if (flavour != MshFlavour::V22Ascii) {
+      EXPECT_EQ(back.extras.node_entity_dims, mesh.extras.node_entity_dims);
+      EXPECT_EQ(back.extras.node_entity_tags, mesh.extras.node_entity_tags);
+      EXPECT_EQ(*raw_section(back, "$Entities"), *raw_section(mesh, "$Entities"));
+    }
+  }
+}
+
+// A partitioned entity that names no parent ("0 0") keeps its elements and
+// its physical tags; the writer makes the entities up.
+TEST(GmshIo, PartitionedEntityWithoutParentKeepsItsPhysicalTags) {
+  const std::string file = slurp(testing::data_path("gmsh_partitioned41.msh"));
+  const std::string text = replaced(file, "\n3 3 1 1 2 ", "\n3 0 0 1 2 ");  // volume 3
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 3}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
+  const TetMesh back = read_text(write_text(mesh, MshFlavour::V41Ascii));
+  EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_entity_tags);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  expect_same_blocks(back, mesh);
+}
+
+// MSH 4.1 binary values in this machine's byte order, and text lines.
+class BinaryMsh {
+ public:
+  BinaryMsh() {
+    text("$MeshFormat\n4.1 1 8");
+    ints({1});
+    text("\n$EndMeshFormat");
+  }
+  void text(const std::string& line) { bytes_ += line + "\n"; }
+  void sizes(std::initializer_list<std::uint64_t> values) {
+    for (std::uint64_t v : values) raw(v);
+  }
+  void ints(std::initializer_list<std::int32_t> values) {
+    for (std::int32_t v : values) raw(v);
+  }
+  void reals(std::initializer_list<double> values) {
+    for (double v : values) raw(v);
+  }
+  const std::string& bytes() const { return bytes_; }
+
+ private:
+  template <class T>
+  void raw(T v) {
+    bytes_.append(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  std::string bytes_;
+};
+
+// gmsh_partitioned41.msh in binary: the same values, the same mesh.
+TEST(GmshIo, ReadsBinaryPartitionedFile) {
+  BinaryMsh f;
+  f.text("$Entities");
+  f.sizes({1, 0, 1, 1});
+  f.ints({1}), f.reals({0, 0, 1}), f.sizes({1}), f.ints({9});
+  f.ints({5}), f.reals({0, 0, -1, 1, 1, 1}), f.sizes({1}), f.ints({3}), f.sizes({0});
+  f.ints({1}), f.reals({0, 0, -1, 1, 1, 1}), f.sizes({1}), f.ints({7}), f.sizes({1}), f.ints({5});
+  f.text("\n$EndEntities\n$PartitionedEntities");
+  f.sizes({2, 1}), f.ints({4, 1});
+  f.sizes({1, 1, 3, 2});
+  // tag, parent dim and tag, partitions, box, physicals, bounding entities
+  f.ints({2, 0, 1}), f.sizes({1}), f.ints({1}), f.reals({0, 0, 1}), f.sizes({1}), f.ints({9});
+  f.ints({9, 2, 5}), f.sizes({2}), f.ints({1, 2}), f.reals({0, 0, 0, 1, 1, 0}), f.sizes({1}), f.ints({3}), f.sizes({0});
+  f.ints({6, 2, 5}), f.sizes({1}), f.ints({1}), f.reals({0, 0, 0, 1, 1, 1}), f.sizes({1}), f.ints({3}), f.sizes({1}),
+      f.ints({9});
+  f.ints({7, 2, 5}), f.sizes({1}), f.ints({2}), f.reals({0, 0, -1, 1, 1, 0}), f.sizes({1}), f.ints({3}), f.sizes({1}),
+      f.ints({-9});
+  f.ints({8, 3, 1}), f.sizes({2}), f.ints({1, 2}), f.reals({0, 0, 0, 1, 1, 0}), f.sizes({1}), f.ints({7}), f.sizes({1}),
+      f.ints({9});
+  f.ints({2, 3, 1}), f.sizes({1}), f.ints({1}), f.reals({0, 0, 0, 1, 1, 1}), f.sizes({1}), f.ints({7}), f.sizes({2}),
+      f.ints({6, 8});
+  f.ints({3, 3, 1}), f.sizes({1}), f.ints({2}), f.reals({0, 0, -1, 1, 1, 0}), f.sizes({1}), f.ints({7}), f.sizes({2}),
+      f.ints({7, -8});
+  f.text("\n$EndPartitionedEntities\n$Nodes");
+  f.sizes({4, 5, 10, 57});
+  f.ints({0, 2, 0}), f.sizes({1, 42}), f.reals({0, 0, 1});
+  f.ints({1, 9, 0}), f.sizes({2, 20, 30}), f.reals({1, 0, 0, 0, 1, 0});
+  f.ints({2, 8, 0}), f.sizes({1, 10}), f.reals({0, 0, 0});
+  f.ints({2, 7, 0}), f.sizes({1, 57}), f.reals({0.3, 0.3, -1});
+  f.text("\n$EndNodes\n$Elements");
+  f.sizes({7, 7, 100, 120});
+  f.ints({0, 2, 15}), f.sizes({1, 100, 42});
+  f.ints({1, 9, 1}), f.sizes({1, 105, 20, 30});
+  f.ints({2, 6, 2}), f.sizes({1, 101, 20, 30, 42});
+  f.ints({2, 7, 2}), f.sizes({1, 102, 30, 20, 57});
+  f.ints({2, 8, 2}), f.sizes({1, 103, 10, 20, 30});
+  f.ints({3, 2, 4}), f.sizes({1, 110, 10, 20, 30, 42});
+  f.ints({3, 3, 4}), f.sizes({1, 120, 10, 30, 20, 57});
+  f.text("\n$EndElements");
+  const TetMesh mesh = read_text(f.bytes());
+  expect_partitions_merged(mesh);
+  EXPECT_EQ(mesh.xyz, read_gmsh_file(testing::data_path("gmsh_partitioned41.msh")).xyz);
+}
+
+// Sections the reader skips are named once per kind; $Comments is not.
+TEST(GmshIo, SkippedSectionsAreNoted) {
+  const std::string data = "$NodeData\n1\n\"p\"\n1\n0\n3\n0\n1\n1\n1 0.5\n$EndNodeData\n";
+  const std::string text = std::string(kMinimal) + "$Comments\nhello\n$EndComments\n" +
+                           "$Periodic\n1\n0 1 2\n0\n0\n$EndPeriodic\n" + data + data;
+  EXPECT_EQ(read_text(text).extras.read_notes,
+            (std::vector<std::string>{"$Periodic section skipped; it will not be in the written file",
+                                      "$NodeData section skipped; it will not be in the written file"}));
+  EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
+  EXPECT_TRUE(read_gmsh_file(testing::data_path("gmsh_sparse41.msh")).extras.read_notes.empty());
 }
 
 class GmshRoundTrip : public ::testing::TestWithParam<MshFlavour> {};
@@ -304,6 +457,23 @@ TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
   const std::string swapped = read_error(std::string(kMinimal).substr(std::string(kMinimal).find("$Elements")) +
                                          std::string(kMinimal).substr(0, std::string(kMinimal).find("$Elements")));
   EXPECT_NE(swapped.find("not a Gmsh MSH file"), std::string::npos) << swapped;
+}
+
+TEST(GmshIo, BadPartitionedEntitiesNameFileAndLine) {
+  const std::string good = slurp(testing::data_path("gmsh_partitioned41.msh"));
+  const BadText cases[] = {
+      {"6 2 5 1 1 ", "6 1 5 1 1 ", "t.msh:31:",
+       "partitioned entity of dimension 2 with tag 6 has a parent of dimension 1 (expected 2 to 3)"},
+      {"2 3 1 1 1 ", "1 3 1 1 1 ", "t.msh:",
+       "entity of dimension 3 with tag 1 is declared in both $Entities and $PartitionedEntities"},
+      {"7 2 5 1 2 ", "6 2 5 1 2 ", "t.msh:32:", "partitioned entity of dimension 2 with tag 6 is declared twice"},
+  };
+  for (const BadText& c : cases) {
+    const std::string text = replaced(good, c.from, c.to);
+    const std::string message = testing::input_error_message([&] { read_text(text); }, text);
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
 }
 
 // The byte offset in "t.msh, byte N: ...", or npos.

@@ -30,12 +30,18 @@ std::string unsupported_element_type(int id);
 // A model entity. Points (dim 0) carry their coordinates in box[0..2]; the
 // others a bounding box min x,y,z then max x,y,z. `bounding` lists the tags
 // of the entities of dimension dim-1 on its boundary, signed by orientation.
+// An entity of $PartitionedEntities is the part of a model entity, its
+// parent, in some partitions; the parent's dimension is dim or higher (a
+// surface between two partitions of a volume has the volume as parent).
+// parent_tag is 0 for the other entities and where the file names no parent.
 struct Entity {
   int dim = 0;
   int tag = 0;
   double box[6] = {0, 0, 0, 0, 0, 0};
   std::vector<int> physicals;
   std::vector<int> bounding;
+  int parent_dim = 0;
+  int parent_tag = 0;
 };
 
 // The entities of a file, in file order (points, curves, surfaces, volumes).

@@ -30,8 +30,29 @@ int first_physical(const Entities& entities, int dim, int tag) {
   return e == nullptr || e->physicals.empty() ? 0 : e->physicals.front();
 }
 
+namespace {
+
+// Reads the tag of a partitioned entity's parent and the partitions it is
+// in (not kept: the reader merges the partitions).
 template <class Source>
-Entities read_entities(Source& src) {
+void read_parent(Source& src, Entity& e) {
+  e.parent_dim = src.int_value("parent entity dimension");
+  e.parent_tag = src.int_value("parent entity tag");
+  // Gmsh writes "0 0" for an entity without a parent.
+  if (e.parent_tag != 0 && (e.parent_dim < e.dim || e.parent_dim > 3))
+    src.fail("partitioned entity of dimension " + std::to_string(e.dim) + " with tag " + std::to_string(e.tag) +
+             " has a parent of dimension " + std::to_string(e.parent_dim) + " (expected " + std::to_string(e.dim) +
+             " to 3)");
+  const std::uint64_t partitions = src.size_value("number of partitions");
+  src.reservable(partitions, 4);
+  for (std::uint64_t k = 0; k < partitions; ++k) src.int_value("partition tag");
+}
+
+// The four counts and the entity records of $Entities or, `partitioned`,
+// of $PartitionedEntities, whose records add the parent and the partitions
+// after the tag.
+template <class Source>
+Entities read_entity_records(Source& src, bool partitioned) {
   static const char* const kCountNames[4] = {"number of points", "number of curves", "number of surfaces",
                                              "number of volumes"};
   std::uint64_t counts[4];
@@ -39,12 +60,14 @@ Entities read_entities(Source& src) {
   Entities entities;
   for (int dim = 0; dim < 4; ++dim) {
     // Smallest binary record: tag, coordinates, and an empty physical list
-    // (plus an empty boundary list above dimension 0).
-    src.reservable(counts[dim], dim == 0 ? 4 + 24 + 8 : 4 + 48 + 16);
+    // (plus an empty boundary list above dimension 0, and the parent and an
+    // empty partition list when partitioned).
+    src.reservable(counts[dim], (dim == 0 ? 4 + 24 + 8 : 4 + 48 + 16) + (partitioned ? 16 : 0));
     for (std::uint64_t i = 0; i < counts[dim]; ++i) {
       Entity e;
       e.dim = dim;
       e.tag = src.int_value("entity tag");
+      if (partitioned) read_parent(src, e);
       if (dim == 0) {
         for (int k = 0; k < 3; ++k) e.box[k] = e.box[k + 3] = src.real_value("point coordinate");
       } else {
@@ -60,15 +83,36 @@ Entities read_entities(Source& src) {
       }
       const int tag = e.tag;
       if (!entities.add(std::move(e)))
-        src.fail("entity of dimension " + std::to_string(dim) + " with tag " + std::to_string(tag) +
-                 " is declared twice");
+        src.fail(std::string(partitioned ? "partitioned " : "") + "entity of dimension " + std::to_string(dim) +
+                 " with tag " + std::to_string(tag) + " is declared twice");
     }
   }
   return entities;
 }
 
+}  // namespace
+
+template <class Source>
+Entities read_entities(Source& src) {
+  return read_entity_records(src, false);
+}
+
+template <class Source>
+Entities read_partitioned_entities(Source& src) {
+  src.size_value("number of partitions");
+  const std::uint64_t ghosts = src.size_value("number of ghost entities");
+  src.reservable(ghosts, 8);
+  for (std::uint64_t i = 0; i < ghosts; ++i) {
+    src.int_value("ghost entity tag");
+    src.int_value("ghost entity partition");
+  }
+  return read_entity_records(src, true);
+}
+
 template Entities read_entities<AsciiSource>(AsciiSource&);
 template Entities read_entities<BinarySource>(BinarySource&);
+template Entities read_partitioned_entities<AsciiSource>(AsciiSource&);
+template Entities read_partitioned_entities<BinarySource>(BinarySource&);
 
 Entities parse_entities_text(const std::string& body, const std::string& source) {
   std::istringstream in(body);

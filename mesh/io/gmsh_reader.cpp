@@ -1,7 +1,10 @@
 // Gmsh MSH reading: the $MeshFormat header decides the version and encoding,
-// then one loop over the sections serves every flavour.
+// then one loop over the sections serves every flavour. Partitioned MSH 4.1
+// files are read as one mesh (see "partitioned files" below).
+#include <algorithm>
 #include <cstring>
 #include <istream>
+#include <optional>
 #include <sstream>
 
 #include "mesh/errors.hpp"
@@ -59,6 +62,27 @@ void read_entities_section(Source& src, ReadState& state) {
   state.mesh.extras.raw_sections.emplace_back("$Entities", std::move(text));
 }
 
+// Gmsh keeps model and partitioned entities in one model, so their tags
+// differ; an element on a tag declared in both could be on either.
+template <class Source>
+void check_partition_tags(Source& src, const ReadState& state) {
+  if (!state.has_entities || !state.has_partitions) return;
+  for (const gmsh::Entity& e : state.partitions.list())
+    if (state.entities.find(e.dim, e.tag) != nullptr)
+      src.fail("entity of dimension " + std::to_string(e.dim) + " with tag " + std::to_string(e.tag) +
+               " is declared in both $Entities and $PartitionedEntities");
+}
+
+// The format asks readers to ignore the sections they do not know ($Periodic,
+// $GhostElements, post-processing data, ...); the user hears of each kind
+// once. $Comments holds nothing a mesh would miss.
+void note_skipped(const std::string& section, FileExtras& extras) {
+  if (section == "$Comments") return;
+  std::string note = section + " section skipped; it will not be in the written file";
+  if (std::find(extras.read_notes.begin(), extras.read_notes.end(), note) == extras.read_notes.end())
+    extras.read_notes.push_back(std::move(note));
+}
+
 template <class Source>
 void read_sections(Source& src, ReadState& state) {
   for (;;) {
@@ -81,6 +105,11 @@ void read_sections(Source& src, ReadState& state) {
     } else if (section == "$Entities" && state.major == 4) {
       once(state.has_entities);
       read_entities_section(src, state);
+      check_partition_tags(src, state);
+    } else if (section == "$PartitionedEntities" && state.major == 4) {
+      once(state.has_partitions);
+      state.partitions = gmsh::read_partitioned_entities(src);
+      check_partition_tags(src, state);
     } else if (section == "$PhysicalNames") {
       for (const auto& [name, body] : state.mesh.extras.raw_sections)
         if (name == section) src.fail("a second $PhysicalNames section");
@@ -88,29 +117,118 @@ void read_sections(Source& src, ReadState& state) {
     } else if (section == "$MeshFormat") {
       src.fail("a second $MeshFormat section");
     } else {
-      // The format asks readers to ignore sections they do not know
-      // ($Comments, $Periodic, post-processing data, ...).
       src.skip_section(end);
+      note_skipped(section, state.mesh.extras);
       continue;
     }
     src.expect_end(end);
   }
 }
 
+// The first physical tag of entity (dim, tag), a model or a partitioned
+// one; 0 when it has none or is unknown.
+int physical_of(const ReadState& state, int dim, int tag) {
+  const gmsh::Entities& declared = state.entities.find(dim, tag) != nullptr ? state.entities : state.partitions;
+  return gmsh::first_physical(declared, dim, tag);
+}
+
 // MSH 4 elements carry only their entity; the physical tag is the entity's
 // (its first, when it belongs to several groups).
 void map_physicals(ReadState& state) {
   bool any = false;
-  for (const gmsh::Entity& e : state.entities.list()) any = any || !e.physicals.empty();
+  for (const gmsh::Entities* entities : {&state.entities, &state.partitions})
+    for (const gmsh::Entity& e : entities->list()) any = any || !e.physicals.empty();
   if (!any) return;
   FileExtras& extras = state.mesh.extras;
   extras.tet_tags.clear();
-  for (int entity : extras.tet_entity_tags) extras.tet_tags.push_back(gmsh::first_physical(state.entities, 3, entity));
+  for (int entity : extras.tet_entity_tags) extras.tet_tags.push_back(physical_of(state, 3, entity));
   for (PassThroughBlock& block : extras.blocks) {
     const int dim = gmsh::element_type_of_kind(block.kind)->dim;
     block.tags.clear();
-    for (int entity : block.entity_tags) block.tags.push_back(gmsh::first_physical(state.entities, dim, entity));
+    for (int entity : block.entity_tags) block.tags.push_back(physical_of(state, dim, entity));
   }
+}
+
+// ---- partitioned files ------------------------------------------------------
+//
+// A partitioned file (Gmsh's mesh.partition) puts every element and node on
+// a partitioned entity: the part of a model entity, its parent, in some
+// partitions. The reader merges the partitions back into one mesh: elements
+// and nodes go to the parent entities, which $Entities declares with the
+// physical tags that Gmsh copies onto their parts. The writer then writes an
+// ordinary file from the file's own $Entities, which Gmsh and meshio read
+// with the same physical groups. (Writing the partitions back instead would
+// mean keeping $PartitionedEntities, ghost elements and partition
+// boundaries consistent, and meshio reads no partitioned file.)
+//
+// Gmsh also puts elements on the boundaries between partitions: triangles
+// on a surface whose parent is the volume, lines whose parent is a surface
+// or a volume, points. They are no part of the model, they carry the
+// parent's physical tags on an entity of lower dimension, and as
+// pass-through elements they would pin the nodes of those boundaries: they
+// are dropped.
+
+// The entity an element of dimension `dim` on entity `tag` belongs to once
+// the partitions are merged: the parent of a partitioned entity, otherwise
+// `tag` itself; nullopt for an element on a partition boundary.
+std::optional<int> merged_entity(const gmsh::Entities& partitions, int dim, int tag) {
+  const gmsh::Entity* part = partitions.find(dim, tag);
+  if (part == nullptr || part->parent_tag == 0) return tag;
+  if (part->parent_dim != dim) return std::nullopt;
+  return part->parent_tag;
+}
+
+// Moves the elements of `block` to their merged entities and drops those on
+// partition boundaries; returns how many it dropped.
+std::size_t merge_block(const gmsh::Entities& partitions, PassThroughBlock& block) {
+  const int dim = gmsh::element_type_of_kind(block.kind)->dim;
+  const auto nodes = static_cast<std::size_t>(block.nodes_per_element);
+  const std::size_t count = block.entity_tags.size();
+  std::size_t kept = 0;
+  for (std::size_t e = 0; e < count; ++e) {
+    const std::optional<int> entity = merged_entity(partitions, dim, block.entity_tags[e]);
+    if (!entity) continue;
+    for (std::size_t k = 0; k < nodes; ++k) block.connectivity[kept * nodes + k] = block.connectivity[e * nodes + k];
+    block.entity_tags[kept] = *entity;
+    if (!block.tags.empty()) block.tags[kept] = block.tags[e];
+    ++kept;
+  }
+  block.connectivity.resize(kept * nodes);
+  block.entity_tags.resize(kept);
+  if (!block.tags.empty()) block.tags.resize(kept);
+  return count - kept;
+}
+
+// Nodes on a partitioned entity go to its parent, whatever its dimension:
+// a node between two partitions of a volume is inside the volume.
+void merge_node_entities(const gmsh::Entities& partitions, FileExtras& extras) {
+  for (std::size_t i = 0; i < extras.node_entity_tags.size(); ++i) {
+    const gmsh::Entity* part = partitions.find(extras.node_entity_dims[i], extras.node_entity_tags[i]);
+    if (part == nullptr || part->parent_tag == 0) continue;
+    extras.node_entity_dims[i] = part->parent_dim;
+    extras.node_entity_tags[i] = part->parent_tag;
+  }
+}
+
+// After map_physicals, so that every element keeps the physical tag of the
+// partitioned entity it was read on: the parent's in files Gmsh writes, and
+// still there when $Entities does not declare the parent (the writer then
+// makes entities up from the elements' tags).
+void merge_partitions(ReadState& state) {
+  FileExtras& extras = state.mesh.extras;
+  // The parent of a partitioned volume is a volume (read_partitioned_entities
+  // checks), so no tet is dropped.
+  for (int& tag : extras.tet_entity_tags) tag = merged_entity(state.partitions, 3, tag).value_or(tag);
+  std::size_t dropped = 0;
+  for (PassThroughBlock& block : extras.blocks) dropped += merge_block(state.partitions, block);
+  extras.blocks.erase(std::remove_if(extras.blocks.begin(), extras.blocks.end(),
+                                     [](const PassThroughBlock& block) { return block.connectivity.empty(); }),
+                      extras.blocks.end());
+  merge_node_entities(state.partitions, extras);
+  extras.read_notes.push_back(
+      "the partitions are merged" +
+      (dropped > 0 ? " and " + std::to_string(dropped) + " elements on partition boundaries dropped" : std::string()) +
+      "; the written file is not partitioned");
 }
 
 template <class Source>
@@ -119,7 +237,8 @@ TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   if (!state.has_nodes) src.fail("no $Nodes section");
   if (!state.has_elements) src.fail("no $Elements section");
   if (state.mesh.tets.empty()) src.fail("no tetrahedra (element type 4): a volume mesh is needed");
-  if (state.major == 4 && state.has_entities) map_physicals(state);
+  if (state.major == 4 && (state.has_entities || state.has_partitions)) map_physicals(state);
+  if (state.has_partitions) merge_partitions(state);
 
   TetMesh& mesh = state.mesh;
   // `fixed` stays empty when no pass-through element pins a node.

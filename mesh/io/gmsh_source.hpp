@@ -112,6 +112,13 @@ class BinarySource {
 template <class Source>
 Entities read_entities(Source& src);
 
+// The body of a $PartitionedEntities section (MSH 4.1), either encoding:
+// the entities of the partitions, each naming its parent model entity. The
+// ghost entities it lists are left out (their elements are in
+// $GhostElements, which is skipped).
+template <class Source>
+Entities read_partitioned_entities(Source& src);
+
 // Node tag -> 0-based index, for tags dense or sparse.
 class NodeLookup {
  public:
@@ -132,7 +139,9 @@ struct ReadState {
   bool has_nodes = false;
   bool has_elements = false;
   bool has_entities = false;
+  bool has_partitions = false;
   Entities entities;
+  Entities partitions;  // of $PartitionedEntities: tags distinct from those of `entities`
   std::vector<std::pair<int, std::size_t>> block_of_type;  // element type id -> index in mesh.extras.blocks
 
   PassThroughBlock& block_for(const ElementType& type);

@@ -5,7 +5,9 @@
 //
 // A mesh read from MSH 4.1 keeps its $Entities (verbatim) and its node and
 // element classification, as long as every entity an element or node refers
-// to is still declared. Any other mesh gets entities made up from what it
+// to is still declared. (A partitioned file qualifies: the reader moves its
+// elements and nodes to the model entities of $Entities, so what is written
+// is not partitioned.) Any other mesh gets entities made up from what it
 // carries: each element's entity tag, else its physical tag (region
 // attribute, Medit reference), else 1; each entity lists the positive
 // physical tags of its elements. Nodes are then classified on the

@@ -1,12 +1,15 @@
 // VTU (XML) and legacy VTK: round trips that keep tets, pass-through blocks,
 // tags and fixed nodes; every VTU data encoding the reader claims; fields on
-// write; and errors naming file:line or the byte offset.
+// write; region tags under other tools' array names and the notes on arrays
+// not carried over; and errors naming file:line or the byte offset.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 
@@ -305,6 +308,231 @@ TEST(LegacyVtkErrors, InconsistentCells) {
   EXPECT_NE(vtk_error(replaced(replaced(v42, "CELLS 1 6", "CELLS 1 5"), "CELL_TYPES 1\n10", "CELL_TYPES 1\n5"))
                 .find("mesh.vtk:9: cell 0: triangle with 4 nodes"),
             std::string::npos);
+}
+
+// Region tags under other names, and notes on the arrays not carried over -----
+
+TetMesh vtu_from_text(const std::string& text) {
+  std::istringstream in(text);
+  return read_vtu(in, "mesh.vtu");
+}
+
+TetMesh vtk_from_text(const std::string& text) {
+  std::istringstream in(text);
+  return read_vtk(in, "mesh.vtk");
+}
+
+// "<source>:<line>:", the start of an error message naming the line of
+// `text` where `needle` is.
+std::string line_of(const std::string& text, const std::string& needle, const std::string& source) {
+  const std::size_t at = text.find(needle);
+  EXPECT_NE(at, std::string::npos) << needle;
+  return source + ":" + std::to_string(1 + std::count(text.begin(), text.begin() + at, '\n')) + ":";
+}
+
+// A CellData array for vtu_ascii.vtu's four cells (two tets, a triangle, a line).
+std::string vtu_cell_array(const std::string& name, const std::string& values, const char* type = "Int32") {
+  return std::string("<DataArray type=\"") + type + "\" Name=\"" + name + "\" format=\"ascii\">" + values +
+         "</DataArray>\n";
+}
+
+// vtu_ascii.vtu with its CellData replaced by `arrays`.
+std::string vtu_with_cell_data(const std::string& arrays) {
+  const std::string text = file_text("vtu_ascii.vtu");
+  const std::size_t begin = text.find("<CellData>") + std::strlen("<CellData>\n");
+  const std::size_t end = text.find("</CellData>");
+  return text.substr(0, begin) + arrays + text.substr(end);
+}
+
+// The tags of vtu_ascii.vtu's cells, and of vtk_v51.vtk's below, wherever
+// a test has put them.
+void expect_vtu_fixture_tags(const TetMesh& mesh) {
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, -3}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{2}));  // the triangle
+  EXPECT_EQ(mesh.extras.blocks[1].tags, (std::vector<int>{0}));  // the line
+}
+
+void expect_vtk_fixture_tags(const TetMesh& mesh) {
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{5, 6}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{0}));  // the vertex
+}
+
+// The names of region tag arrays, in the order of preference documented in
+// vtk_arrays.hpp and README.md.
+const char* const kTagNames[] = {"tetsmooth:tag", "gmsh:physical", "medit:ref", "CellEntityIds"};
+
+const std::string kTemperatureNote = "point data array 'temperature' is ignored and not written back";
+
+TEST(VtkTagArrays, VtuTakesTagsUnderEveryKnownName) {
+  for (const char* name : kTagNames) {
+    SCOPED_TRACE(name);
+    const TetMesh mesh = vtu_from_text(vtu_with_cell_data(vtu_cell_array(name, "7 -3 2 0")));
+    expect_vtu_fixture_tags(mesh);
+    EXPECT_EQ(mesh.extras.read_notes, std::vector<std::string>{kTemperatureNote});
+  }
+}
+
+TEST(VtkTagArrays, LegacyVtkTakesTagsUnderEveryKnownName) {
+  for (const char* name : kTagNames) {
+    SCOPED_TRACE(name);
+    const std::string text =
+        replaced(file_text("vtk_v51.vtk"), "SCALARS tetsmooth:tag", std::string("SCALARS ") + name);
+    expect_vtk_fixture_tags(vtk_from_text(text));
+  }
+}
+
+TEST(VtkTagArrays, VtuFromMeshioKeepsGmshPhysicalGroupsOfTetsAndTriangles) {
+  // As meshio writes a Gmsh mesh: gmsh:physical and gmsh:geometrical, Int32.
+  const std::string arrays =
+      vtu_cell_array("gmsh:physical", "7 -3 2 0") + vtu_cell_array("gmsh:geometrical", "1 1 4 9");
+  const TetMesh mesh = vtu_from_text(vtu_with_cell_data(arrays));
+  expect_vtu_fixture_tags(mesh);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{kTemperatureNote,
+                                      "cell data array 'gmsh:geometrical' is ignored and not written back"}));
+}
+
+// Two tets and a triangle with their Gmsh tags as meshio writes them: cell
+// data as FIELD arrays of CELL_DATA, not SCALARS.
+const std::string kMeshioVtk =
+    "# vtk DataFile Version 4.2\nmeshio\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+    "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nCELLS 3 14\n4 0 1 2 3\n4 1 2 3 4\n3 0 1 2\nCELL_TYPES 3\n10\n10\n5\n"
+    "POINT_DATA 5\nFIELD FieldData 1\ngmsh:dim_tags 3 5 vtktypeint64\n0 1 0 0 2 0 0 3 0 0 4 0 3 1 0\n"
+    "CELL_DATA 3\nFIELD FieldData 2\ngmsh:physical 1 3 vtktypeint64\n7 8 3\n"
+    "gmsh:geometrical 1 3 vtktypeint64\n1 1 6\n";
+
+TEST(VtkTagArrays, LegacyVtkFromMeshioKeepsGmshPhysicalGroupsFromFieldData) {
+  const std::string& text = kMeshioVtk;
+  const TetMesh mesh = vtk_from_text(text);
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 8}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{3}));
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"point data array 'gmsh:dim_tags' is ignored and not written back",
+                                      "cell data array 'gmsh:geometrical' is ignored and not written back"}));
+}
+
+TEST(VtkTagArrays, VtuPrefersTheEarlierNameWhereverItStands) {
+  for (std::size_t preferred = 0; preferred < std::size(kTagNames); ++preferred) {
+    for (std::size_t other = preferred + 1; other < std::size(kTagNames); ++other) {
+      SCOPED_TRACE(std::string(kTagNames[preferred]) + " over " + kTagNames[other]);
+      // The less preferred array comes first in the file.
+      const std::string arrays =
+          vtu_cell_array(kTagNames[other], "1 1 1 1") + vtu_cell_array(kTagNames[preferred], "7 -3 2 0");
+      const TetMesh mesh = vtu_from_text(vtu_with_cell_data(arrays));
+      expect_vtu_fixture_tags(mesh);
+      EXPECT_EQ(mesh.extras.read_notes.back(),
+                "cell data array '" + std::string(kTagNames[other]) + "' is ignored and not written back");
+    }
+  }
+}
+
+TEST(VtkTagArrays, LegacyVtkPrefersTheEarlierNameWhereverItStands) {
+  const std::string v51 = file_text("vtk_v51.vtk");
+  // CellEntityIds before tetsmooth:tag, as a FIELD array after it, and
+  // gmsh:physical before medit:ref.
+  const std::string before = replaced(v51, "CELL_DATA 3\n", "CELL_DATA 3\nSCALARS CellEntityIds int\n1 1 1\n");
+  expect_vtk_fixture_tags(vtk_from_text(before));
+  const std::string after = replaced(v51, "VECTORS flow", "FIELD f 1\ngmsh:physical 1 3 int\n1 1 1\nVECTORS flow");
+  expect_vtk_fixture_tags(vtk_from_text(after));
+  const std::string neither = replaced(replaced(v51, "SCALARS tetsmooth:tag", "SCALARS gmsh:physical"), "VECTORS flow",
+                                       "SCALARS medit:ref int\n1 1 1\nVECTORS flow");
+  const TetMesh mesh = vtk_from_text(neither);
+  expect_vtk_fixture_tags(mesh);
+  ASSERT_EQ(mesh.extras.read_notes.size(), 2u);
+  EXPECT_EQ(mesh.extras.read_notes[1], "cell data arrays 'medit:ref', 'flow' are ignored and not written back");
+}
+
+TEST(VtkTagArrays, WholeNumbersOfAFloatingPointTypeAreTags) {
+  const TetMesh vtu = vtu_from_text(vtu_with_cell_data(vtu_cell_array("CellEntityIds", "7.0 -3 2e0 0", "Float64")));
+  expect_vtu_fixture_tags(vtu);
+  const std::string v51 = file_text("vtk_v51.vtk");
+  expect_vtk_fixture_tags(
+      vtk_from_text(replaced(replaced(v51, "tetsmooth:tag int", "gmsh:physical double"), "5 6 0", "5.0 6 0")));
+}
+
+TEST(VtkTagArraysErrors, NonIntegerTagsNameTheFileTheArrayAndTheCell) {
+  const std::string vtu = vtu_with_cell_data(vtu_cell_array("gmsh:physical", "7 -3.5 2 0", "Float32"));
+  std::string msg = vtu_error(vtu);
+  EXPECT_EQ(msg.rfind(line_of(vtu, "Name=\"gmsh:physical\"", "mesh.vtu"), 0), 0u) << msg;
+  EXPECT_NE(msg.find("cell 1: gmsh:physical value -3.5 is not an integer"), std::string::npos) << msg;
+
+  // In an integer-typed ascii array too, and NaN.
+  msg = vtu_error(vtu_with_cell_data(vtu_cell_array("CellEntityIds", "7 -3 nan 0")));
+  EXPECT_NE(msg.find("cell 2: CellEntityIds value nan is not an integer"), std::string::npos) << msg;
+
+  const std::string vtk =
+      replaced(replaced(file_text("vtk_v51.vtk"), "tetsmooth:tag int", "medit:ref float"), "5 6 0", "5 6 0.25");
+  msg = vtk_error(vtk);
+  EXPECT_EQ(msg.rfind(line_of(vtk, "SCALARS medit:ref", "mesh.vtk"), 0), 0u) << msg;
+  EXPECT_NE(msg.find("cell 2: medit:ref value 0.25 is not an integer"), std::string::npos) << msg;
+}
+
+TEST(VtkTagArraysErrors, TagsOutsideTheRangeOfIntOrOfTheWrongCount) {
+  std::string msg = vtu_error(vtu_with_cell_data(vtu_cell_array("CellEntityIds", "7 -3 4294967296 0", "Int64")));
+  EXPECT_NE(msg.find("cell 2: CellEntityIds value 4294967296 is out of range"), std::string::npos) << msg;
+  const std::string vtk = replaced(kMeshioVtk, "gmsh:physical 1 3 vtktypeint64\n7 8 3", "gmsh:physical 1 2 int\n7 8");
+  msg = vtk_error(vtk);
+  EXPECT_EQ(msg.rfind(line_of(vtk, "gmsh:physical", "mesh.vtk"), 0), 0u) << msg;
+  EXPECT_NE(msg.find("gmsh:physical has 2 values for 3 cells"), std::string::npos) << msg;
+}
+
+TEST(VtkTagArrays, EveryArrayNotCarriedOverIsNotedOncePerKind) {
+  // vtk_v51.vtk: a cell VECTORS array, and point SCALARS, NORMALS and FIELD
+  // arrays; the dataset's own FIELD (TIME) is not point or cell data.
+  const TetMesh vtk = read_vtk_file(testing::data_path("vtk_v51.vtk"));
+  EXPECT_EQ(
+      vtk.extras.read_notes,
+      (std::vector<std::string>{"point data arrays 'pressure head', 'n', 'a', 'b' are ignored and not written back",
+                                "cell data array 'flow' is ignored and not written back"}));
+  // A tag or fixed-node array of the wrong kind or shape is an ordinary one.
+  const std::string arrays = vtu_cell_array("tetsmooth:tag", "7 -3 2 0") +
+                             vtu_cell_array("tetsmooth:fixed", "0 0 0 0") +
+                             "<DataArray type=\"Int32\" Name=\"gmsh:physical\" NumberOfComponents=\"2\" "
+                             "format=\"ascii\">1 1 1 1 1 1 1 1</DataArray>\n";
+  const TetMesh vtu = vtu_from_text(vtu_with_cell_data(arrays));
+  expect_vtu_fixture_tags(vtu);
+  EXPECT_EQ(
+      vtu.extras.read_notes,
+      (std::vector<std::string>{
+          kTemperatureNote, "cell data arrays 'tetsmooth:fixed', 'gmsh:physical' are ignored and not written back"}));
+}
+
+TEST(VtkTagArrays, BothReadersNoteTheSameArraysOfTheSameMesh) {
+  const TetMesh mesh = decorated_mesh();
+  MeshFields fields;
+  fields.node_scalars.emplace_back("node value", std::vector<double>(mesh.num_nodes(), 1.0));
+  fields.tet_scalars.emplace_back("stress", std::vector<double>(mesh.num_tets(), 2.0));
+  fields.tet_scalars.emplace_back("strain", std::vector<double>(mesh.num_tets(), 3.0));
+  const std::vector<std::string> notes{"point data array 'node value' is ignored and not written back",
+                                       "cell data arrays 'stress', 'strain' are ignored and not written back"};
+  std::ostringstream vtu, vtk;
+  write_vtu(mesh, vtu, fields);
+  write_vtk(mesh, vtk, fields);
+  const TetMesh from_vtu = vtu_from_text(vtu.str());
+  const TetMesh from_vtk = vtk_from_text(vtk.str());
+  EXPECT_EQ(from_vtu.extras.read_notes, notes);
+  EXPECT_EQ(from_vtk.extras.read_notes, notes);
+  expect_same_mesh(from_vtu, mesh);
+  expect_same_mesh(from_vtk, mesh);
+}
+
+TEST(VtkTagArrays, TheFieldsTetsmoothWritesAreNotNoted) {
+  // The command line writes per-tet "quality" and per-node "boundary" with
+  // every VTU/VTK file and computes them afresh on each write.
+  const TetMesh mesh = decorated_mesh();
+  MeshFields fields;
+  fields.node_scalars.emplace_back("boundary", std::vector<double>(mesh.num_nodes(), 1.0));
+  fields.tet_scalars.emplace_back("quality", std::vector<double>(mesh.num_tets(), 0.5));
+  std::ostringstream vtu, vtk;
+  write_vtu(mesh, vtu, fields);
+  write_vtk(mesh, vtk, fields);
+  EXPECT_TRUE(vtu_from_text(vtu.str()).extras.read_notes.empty());
+  EXPECT_TRUE(vtk_from_text(vtk.str()).extras.read_notes.empty());
 }
 
 }  // namespace

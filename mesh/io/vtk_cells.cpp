@@ -1,7 +1,6 @@
 #include "mesh/io/vtk_cells.hpp"
 
 #include <algorithm>
-#include <limits>
 
 #include "mesh/errors.hpp"
 
@@ -27,12 +26,6 @@ const PassThroughType* by_kind(const std::string& kind, int nodes) {
   for (const auto& p : kPassThrough)
     if (kind == p.kind && nodes == p.nodes) return &p;
   return nullptr;
-}
-
-int to_int(long long v, const std::string& where, std::size_t cell) {
-  if (v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max())
-    throw InputError(where, "cell " + std::to_string(cell) + ": tag " + std::to_string(v) + " out of range");
-  return static_cast<int>(v);
 }
 
 }  // namespace
@@ -128,7 +121,7 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
 
 void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
                          const std::vector<long long>& offsets, const std::vector<long long>& types,
-                         const std::vector<long long>& tags, const std::string& where) {
+                         const std::vector<int>& tags, const std::string& where) {
   const std::size_t count = types.size();
   const auto fail = [&](std::size_t cell, const std::string& what) {
     throw InputError(where, "cell " + std::to_string(cell) + ": " + what);
@@ -136,8 +129,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
   if (offsets.size() != count + 1 || offsets.front() != 0)
     throw InputError(where, "cell offsets do not match the " + std::to_string(count) + " cell types");
   if (!tags.empty() && tags.size() != count)
-    throw InputError(where, std::string(kVtkTagArray) + " has " + std::to_string(tags.size()) + " values for " +
-                                std::to_string(count) + " cells");
+    throw InputError(where, std::to_string(tags.size()) + " region tags for " + std::to_string(count) + " cells");
   const long long num_nodes = static_cast<long long>(mesh.num_nodes());
   std::vector<std::size_t> block_of_type(256, SIZE_MAX);
   mesh.tets.clear();
@@ -163,7 +155,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
                   std::to_string(expected));
     if (type == kVtkTetra) {
       for (long long k = begin; k < end; ++k) mesh.tets.push_back(static_cast<index_t>(connectivity[k]));
-      if (!tags.empty()) mesh.extras.tet_tags.push_back(to_int(tags[c], where, c));
+      if (!tags.empty()) mesh.extras.tet_tags.push_back(tags[c]);
       continue;
     }
     std::size_t& slot = block_of_type[static_cast<std::size_t>(type)];
@@ -173,7 +165,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     }
     PassThroughBlock& block = mesh.extras.blocks[slot];
     for (long long k = begin; k < end; ++k) block.connectivity.push_back(static_cast<index_t>(connectivity[k]));
-    if (!tags.empty()) block.tags.push_back(to_int(tags[c], where, c));
+    if (!tags.empty()) block.tags.push_back(tags[c]);
   }
   if (mesh.extras.blocks.empty()) return;
   mesh.fixed.resize(mesh.num_nodes(), 0);

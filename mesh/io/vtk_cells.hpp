@@ -3,7 +3,8 @@
 // readers and writers: tets (VTK_TETRA = 10) first, then the pass-through
 // blocks in order, as vertices (1), lines (3), triangles (5) or quads (9).
 // Tags travel in a per-cell integer array named kVtkTagArray and fixed nodes
-// in a per-point 0/1 array named kVtkFixedArray.
+// in a per-point 0/1 array named kVtkFixedArray; readers also take tags
+// under other names (vtk_arrays.hpp).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -36,10 +37,10 @@ VtkCells vtk_cells_of(const TetMesh& mesh);
 // Splits cells read from a file into mesh.tets and mesh.extras.blocks (one
 // block per cell type, in order of first appearance) and fixes the nodes of
 // the blocks. mesh.xyz must be filled; offsets has #cells + 1 entries from 0;
-// tags is one per cell or empty. Errors are InputErrors at `where`, naming
-// the cell.
+// tags is one per cell (from vtk_region_tags) or empty. Errors are
+// InputErrors at `where`, naming the cell.
 void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
                          const std::vector<long long>& offsets, const std::vector<long long>& types,
-                         const std::vector<long long>& tags, const std::string& where);
+                         const std::vector<int>& tags, const std::string& where);
 
 }  // namespace tetsmooth

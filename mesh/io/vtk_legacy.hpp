@@ -10,8 +10,12 @@
 //
 // Reading: versions up to 5.1, including 5.1's OFFSETS/CONNECTIVITY cells;
 // FIELD, SCALARS, VECTORS, NORMALS, TENSORS, TEXTURE_COORDINATES,
-// COLOR_SCALARS, LOOKUP_TABLE and METADATA sections are skipped, except the
-// two tetsmooth arrays. BINARY files are rejected (use .vtu).
+// COLOR_SCALARS, LOOKUP_TABLE and METADATA sections are understood. As for
+// .vtu, region tags come from one cell-data array (tetsmooth:tag, or another
+// tool's name for them: vtk_arrays.hpp) and fixed nodes from tetsmooth:fixed,
+// as SCALARS or FIELD arrays; every other point and cell data array is
+// dropped with a note in FileExtras::read_notes. BINARY files are rejected
+// (use .vtu).
 #include <istream>
 #include <ostream>
 #include <string>

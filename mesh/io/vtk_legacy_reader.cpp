@@ -5,6 +5,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/input_file.hpp"
 #include "mesh/io/text_lines.hpp"
+#include "mesh/io/vtk_arrays.hpp"
 #include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/validate.hpp"
@@ -43,17 +44,26 @@ class LegacyReader {
     if (!have_points_) lines_.fail("no POINTS section");
     if (!have_cells_) lines_.fail("no CELLS section");
     if (!have_types_) lines_.fail("no CELL_TYPES section");
-    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, tags_, types_where_);
-    if (!fixed_.empty()) {
-      mesh_.fixed.resize(mesh_.num_nodes(), 0);
-      for (std::size_t i = 0; i < fixed_.size(); ++i) mesh_.fixed[i] = mesh_.fixed[i] || fixed_[i] != 0;
-    }
+    const VtkArrayPick pick = pick_vtk_arrays(arrays_, mesh_.extras.read_notes);
+    std::vector<int> tags;
+    if (pick.tags != kNoVtkArray)
+      tags = vtk_region_tags(kept_[pick.tags].values, types_.size(), arrays_[pick.tags].name, kept_[pick.tags].where);
+    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, tags, types_where_);
+    if (pick.fixed != kNoVtkArray)
+      fix_vtk_nodes(mesh_, kept_[pick.fixed].values, arrays_[pick.fixed].name, kept_[pick.fixed].where);
     validate_mesh(mesh_, lines_.source());
     return std::move(mesh_);
   }
 
  private:
   enum class Attach { None, Points, Cells };
+
+  // What is kept of a point or cell data array: the values of those that
+  // may be carried over (vtk_array_wanted), and where it starts.
+  struct Kept {
+    std::string where;
+    std::vector<double> values;
+  };
 
   void header() {
     lines_.require_line("the header \"# vtk DataFile Version x.y\"");
@@ -118,14 +128,32 @@ class LegacyReader {
     const bool known = kw == "VECTORS" || kw == "NORMALS" || kw == "TENSORS" || kw == "TENSORS6" ||
                        kw == "TEXTURE_COORDINATES" || kw == "COLOR_SCALARS";
     if (!known) lines_.fail("unknown keyword '" + kw + "'");
-    lines_.next_token("array name");
+    const std::string name = decode_name(lines_.next_token("array name"));
+    const std::string where = lines_.where();
     const std::size_t per_tuple = kw == "VECTORS" || kw == "NORMALS" ? 3
                                   : kw == "TENSORS"                  ? 9
                                   : kw == "TENSORS6"                 ? 6
                                   : kw == "TEXTURE_COORDINATES"      ? count("dimension")
                                                                      : count("component count");
     if (kw != "COLOR_SCALARS") lines_.next_token("type");
-    skip_values(per_tuple * tuples_, "value");
+    data_array(name, per_tuple, tuples_, where);
+  }
+
+  // The values of a point or cell data array: kept when it may be carried
+  // over, skipped otherwise. Reals, so that a tag array of a floating-point
+  // type is accepted when its values are whole numbers, and rejected naming
+  // the cell if not (vtk_region_tags).
+  void data_array(const std::string& name, std::size_t components, std::size_t tuples, const std::string& where) {
+    arrays_.push_back(VtkArrayDecl{attach_ == Attach::Cells, name, components});
+    Kept& kept = kept_.emplace_back(Kept{where, {}});
+    if (!vtk_array_wanted(arrays_.back())) return skip_values(components * tuples, "value");
+    kept.values.reserve(std::min<std::size_t>(tuples, 1 << 20));
+    for (std::size_t i = 0; i < tuples; ++i) {
+      const std::string_view token = lines_.next_token("value");
+      double v = 0;
+      if (!parse_real(token, v)) lines_.fail(name + ": bad value '" + std::string(token.substr(0, 40)) + "'");
+      kept.values.push_back(v);
+    }
   }
 
   void points() {
@@ -170,31 +198,33 @@ class LegacyReader {
 
   void scalars() {
     const std::string name = decode_name(lines_.next_token("array name"));
+    const std::string where = lines_.where();
     lines_.next_token("type");
     const std::size_t components = lines_.line_has_more() ? count("component count") : 1;
     if (upper(lines_.peek_token()) == "LOOKUP_TABLE") {
       lines_.next_token("LOOKUP_TABLE");
       lines_.next_token("table name");
     }
-    const bool tags = attach_ == Attach::Cells && name == kVtkTagArray;
-    const bool fixed = attach_ == Attach::Points && name == kVtkFixedArray;
-    if ((tags || fixed) && components == 1) {
-      if (fixed && tuples_ != mesh_.num_nodes()) lines_.fail("POINT_DATA count differs from the number of points");
-      (tags ? tags_ : fixed_) = integers(tuples_, name.c_str());
-      return;
-    }
-    skip_values(components * tuples_, "value");
+    data_array(name, components, tuples_, where);
   }
 
+  // FIELD data: in POINT_DATA or CELL_DATA, each array is a point or cell
+  // data array (meshio and VTK write their arrays so); before them, data of
+  // the whole dataset (TIME, ...), which is skipped.
   void field() {
     lines_.next_token("field name");
     const std::size_t arrays = count("array count");
     for (std::size_t a = 0; a < arrays; ++a) {
-      if (upper(lines_.next_token("array name")) == "NULL_ARRAY") continue;
+      const std::string name = decode_name(lines_.next_token("array name"));
+      if (upper(name) == "NULL_ARRAY") continue;
+      const std::string where = lines_.where();
       const std::size_t components = count("component count");
       const std::size_t tuples = count("tuple count");
       lines_.next_token("type");
-      skip_values(components * tuples, "value");
+      if (attach_ == Attach::None)
+        skip_values(components * tuples, "value");
+      else
+        data_array(name, components, tuples, where);
       if (upper(lines_.peek_token()) == "METADATA") {
         lines_.next_token("METADATA");
         lines_.skip_past_blank_line();
@@ -205,7 +235,9 @@ class LegacyReader {
   TextLines lines_;
   long long major_ = 0;
   TetMesh mesh_;
-  std::vector<long long> connectivity_, offsets_, types_, tags_, fixed_;
+  std::vector<long long> connectivity_, offsets_, types_;
+  std::vector<VtkArrayDecl> arrays_;  // every point and cell data array, in file order
+  std::vector<Kept> kept_;            // one per array
   bool have_points_ = false, have_cells_ = false, have_types_ = false;
   std::string types_where_;
   Attach attach_ = Attach::None;

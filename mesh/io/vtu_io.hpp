@@ -14,8 +14,10 @@
 // (raw or base64) form, header_type UInt32 or UInt64, either byte order,
 // any numeric type. Compressed files are rejected with a message saying
 // so. Cells must be tetra, or vertex/line/triangle/quad, which are passed
-// through with their nodes fixed. Other arrays are ignored, except the two
-// tetsmooth arrays above, which restore tags and fixed nodes.
+// through with their nodes fixed. Region tags come from one cell-data array
+// (tetsmooth:tag, or another tool's name for them: vtk_arrays.hpp) and fixed
+// nodes from tetsmooth:fixed; every other PointData and CellData array is
+// dropped with a note in FileExtras::read_notes.
 #include <istream>
 #include <ostream>
 #include <string>

@@ -3,6 +3,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/input_file.hpp"
 #include "mesh/io/text_lines.hpp"
+#include "mesh/io/vtk_arrays.hpp"
 #include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtu_data_array.hpp"
 #include "mesh/io/vtu_io.hpp"
@@ -20,8 +21,9 @@ struct VtuLayout {
   const VtuDataArray* connectivity = nullptr;
   const VtuDataArray* offsets = nullptr;
   const VtuDataArray* types = nullptr;
-  const VtuDataArray* tags = nullptr;
-  const VtuDataArray* fixed = nullptr;
+  // The PointData and CellData arrays, in file order.
+  std::vector<const VtuDataArray*> data;
+  std::vector<VtkArrayDecl> data_decls;
   std::vector<VtuDataArray> arrays;  // stable once scanning is done
 };
 
@@ -69,6 +71,15 @@ VtuDataArray read_data_array(XmlScanner& xml, const XmlTag& open) {
     a.content_begin = tag.end;
   }
   xml.fail(open.begin, "unterminated <DataArray>");
+}
+
+// NumberOfComponents, 1 when absent; 0 when unreadable, which no array the
+// reader carries over has.
+std::size_t components(const XmlTag& tag) {
+  const std::string* v = tag.attribute("NumberOfComponents");
+  long long n = 1;
+  if (v && (!parse_integer(*v, n) || n < 0)) n = 0;
+  return static_cast<std::size_t>(n);
 }
 
 VtuLayout scan(std::string_view text, XmlScanner& xml) {
@@ -121,8 +132,10 @@ VtuLayout scan(std::string_view text, XmlScanner& xml) {
     if (parent == "Cells" && name == "connectivity") layout.connectivity = a;
     if (parent == "Cells" && name == "offsets") layout.offsets = a;
     if (parent == "Cells" && name == "types") layout.types = a;
-    if (parent == "CellData" && name == kVtkTagArray) layout.tags = a;
-    if (parent == "PointData" && name == kVtkFixedArray) layout.fixed = a;
+    if (parent == "PointData" || parent == "CellData") {
+      layout.data.push_back(a);
+      layout.data_decls.push_back(VtkArrayDecl{parent == "CellData", name, components(a->tag)});
+    }
   }
   const auto require = [&](const VtuDataArray* a, const char* what) {
     if (!a) xml.fail(layout.piece_at, std::string("the piece has no ") + what + " array");
@@ -153,14 +166,20 @@ TetMesh read_vtu(std::istream& in, const std::string& source) {
   const std::vector<long long> connectivity =
       decode.integers(*layout.connectivity, static_cast<std::size_t>(conn_size), "connectivity");
   const std::vector<long long> types = decode.integers(*layout.types, cells, "types");
-  const std::vector<long long> tags =
-      layout.tags ? decode.integers(*layout.tags, cells, kVtkTagArray) : std::vector<long long>{};
+  const VtkArrayPick pick = pick_vtk_arrays(layout.data_decls, mesh.extras.read_notes);
+  // Read as reals, so that a tag array of a floating-point type is accepted
+  // when its values are whole numbers, and rejected naming the cell if not.
+  const auto values = [&](std::size_t i, std::size_t count) {
+    const std::string& name = layout.data_decls[i].name;
+    return decode.reals(*layout.data[i], count, 1, name.c_str());
+  };
+  const auto where = [&](std::size_t i) { return xml.where(layout.data[i]->tag.begin); };
+  std::vector<int> tags;
+  if (pick.tags != kNoVtkArray)
+    tags = vtk_region_tags(values(pick.tags, cells), cells, layout.data_decls[pick.tags].name, where(pick.tags));
   mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, xml.where(layout.types->tag.begin));
-  if (layout.fixed) {
-    const std::vector<long long> fixed = decode.integers(*layout.fixed, points, kVtkFixedArray);
-    mesh.fixed.resize(points, 0);
-    for (std::size_t i = 0; i < points; ++i) mesh.fixed[i] = mesh.fixed[i] || fixed[i] != 0;
-  }
+  if (pick.fixed != kNoVtkArray)
+    fix_vtk_nodes(mesh, values(pick.fixed, points), layout.data_decls[pick.fixed].name, where(pick.fixed));
   validate_mesh(mesh, source);
   return mesh;
 }

@@ -1,0 +1,62 @@
+#pragma once
+// What the VTK readers (VTU and legacy VTK) take from a file's point and cell
+// data arrays: the region tags, the fixed nodes, and a note on the other
+// arrays, which are not carried over to the output. One place, so that both
+// readers accept the same arrays and say the same about the rest.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesh/io/vtk_cells.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+// Cell-data arrays read as region tags, in order of preference: tetsmooth's
+// own, then the names that meshio (Gmsh physical groups, Medit references)
+// and VTK/ParaView (CellEntityIds) give them. Only one is used: the most
+// preferred one present, the first of that name if several are; the others
+// are noted like any other array. It must hold one whole number per cell.
+inline constexpr const char* kVtkTagArrays[] = {kVtkTagArray, "gmsh:physical", "medit:ref", "CellEntityIds"};
+
+// One point or cell data array as a file declares it.
+struct VtkArrayDecl {
+  bool on_cells = false;  // cell data, else point data
+  std::string name;
+  std::size_t components = 1;
+};
+
+inline constexpr std::size_t kNoVtkArray = SIZE_MAX;
+
+// The arrays a reader carries over, as indices into the list it gave.
+struct VtkArrayPick {
+  std::size_t tags = kNoVtkArray;
+  std::size_t fixed = kNoVtkArray;
+};
+
+// Whether the reader may need the values of `a` (a one-component array of a
+// tag name on cells, or kVtkFixedArray on points): a streaming reader keeps
+// those until it has seen every array.
+bool vtk_array_wanted(const VtkArrayDecl& a);
+
+// Picks the tag and fixed-node arrays from every point and cell data array
+// of a file, in file order, and adds to `notes` one sentence per kind (point
+// data, cell data) naming the arrays that are not carried over, leaving out
+// the "quality" and "boundary" fields that tetsmooth itself writes (the
+// command line computes them afresh on every write).
+VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vector<std::string>& notes);
+
+// The values of the region tag array `name`, one per cell, as ints.
+// InputError at `where` (the file and the array's line) for a count other
+// than `cells`, or naming the cell whose value is not a whole number in the
+// range of int.
+std::vector<int> vtk_region_tags(const std::vector<double>& values, std::size_t cells, const std::string& name,
+                                 const std::string& where);
+
+// Fixes the nodes whose value in the fixed-node array `name` is not 0, on
+// top of those the reader fixed already. InputError at `where` for a count
+// other than mesh.num_nodes() or a value that is not a whole number.
+void fix_vtk_nodes(TetMesh& mesh, const std::vector<double>& values, const std::string& name, const std::string& where);
+
+}  // namespace tetsmooth

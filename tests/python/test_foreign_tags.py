@@ -1,0 +1,109 @@
+"""Region tags written by other programs reach tetsmooth's output: a Gmsh mesh
+with physical groups, converted by meshio to VTU (and legacy VTK), where the
+tags are the cell-data array "gmsh:physical", is converted by
+`tetsmooth convert` back to MSH and read with the Gmsh API, which must find
+the same physical groups with the same element counts as in the original.
+
+Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
+import os
+import shutil
+import tempfile
+import unittest
+
+import meshio
+
+from test_cli import BIN, run
+from test_independent_readers import gmsh_module
+
+
+def start_gmsh(gmsh):
+    # As in test_independent_readers: no options from ~/.gmshrc or the
+    # environment (-noenv exists from Gmsh 4.9).
+    major, minor = (int(x) for x in gmsh.__version__.split(".")[:2])
+    gmsh.initialize(["", "-noenv"] if (major, minor) >= (4, 9) else [""], readConfigFiles=False)
+    gmsh.option.setNumber("General.Terminal", 0)
+
+
+def physical_group_sizes(gmsh, path):
+    """{(dim, physical tag): number of elements} of the mesh file at path."""
+    start_gmsh(gmsh)
+    try:
+        gmsh.open(path)
+        sizes = {}
+        for dim, tag in gmsh.model.getPhysicalGroups():
+            count = 0
+            for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
+                _, element_tags, _ = gmsh.model.mesh.getElements(dim, entity)
+                count += sum(len(t) for t in element_tags)
+            sizes[(dim, tag)] = count
+        return sizes
+    finally:
+        gmsh.finalize()
+
+
+def write_box_with_groups(gmsh, path, version):
+    """A coarse box, the volume in physical group 7, two faces in 3, an edge
+    in 5 and a corner in 9: tets, triangles, lines and a vertex, each kind
+    tagged (Gmsh saves only the elements of physical groups)."""
+    start_gmsh(gmsh)
+    try:
+        gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
+        gmsh.model.occ.synchronize()
+        gmsh.model.addPhysicalGroup(3, [1], 7)
+        gmsh.model.addPhysicalGroup(2, [1, 2], 3)
+        gmsh.model.addPhysicalGroup(1, [1], 5)
+        gmsh.model.addPhysicalGroup(0, [1], 9)
+        gmsh.option.setNumber("Mesh.MeshSizeMax", 0.6)
+        gmsh.model.mesh.generate(3)
+        gmsh.option.setNumber("Mesh.MshFileVersion", version)
+        gmsh.write(path)
+    finally:
+        gmsh.finalize()
+
+
+class ForeignTags(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        if not os.access(BIN, os.X_OK):
+            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
+        cls.gmsh, why = gmsh_module()
+        if cls.gmsh is None:
+            raise unittest.SkipTest(why)
+        cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_tags_")
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    def path(self, name):
+        return os.path.join(self.tmp, name)
+
+    # meshio's VTU (binary uncompressed and ASCII) and legacy VTK, whose cell
+    # data are FIELD arrays.
+    VIA = [("vtu", dict(binary=True, compression=None)), ("ascii.vtu", dict(binary=False)),
+           ("vtk", dict(binary=False))]
+
+    def test_gmsh_physical_groups_survive_meshio_and_tetsmooth(self):
+        for version in (2.2, 4.1):
+            original = self.path(f"box{version}.msh")
+            write_box_with_groups(self.gmsh, original, version)
+            expected = physical_group_sizes(self.gmsh, original)
+            self.assertEqual(set(expected), {(3, 7), (2, 3), (1, 5), (0, 9)})
+            mesh = meshio.read(original)
+            self.assertIn("gmsh:physical", mesh.cell_data)
+            for suffix, kwargs in self.VIA:
+                with self.subTest(msh=version, via=suffix):
+                    middle = self.path(f"box{version}.{suffix}")
+                    meshio.write(middle, mesh, **kwargs)
+                    out = middle + ".msh"
+                    proc = run("convert", middle, out)
+                    self.assertEqual(physical_group_sizes(self.gmsh, out), expected)
+                    # The arrays not carried over are named; the tags are not
+                    # among them.
+                    self.assertIn(f"warning: {middle}: cell data array", proc.stderr)
+                    self.assertIn("'gmsh:geometrical'", proc.stderr)
+                    self.assertNotIn("'gmsh:physical'", proc.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -453,7 +453,9 @@ TEST_F(CliFiles, RepeatedTetsAreNamedAndKeepTheBoundary) {
   std::size_t moved = 0;
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
     for (int c = 0; c < 3; ++c) {
-      if (boundary[i]) EXPECT_EQ(out.xyz[3 * i + c], mesh.xyz[3 * i + c]) << "boundary node " << i;
+      if (boundary[i]) {
+        EXPECT_EQ(out.xyz[3 * i + c], mesh.xyz[3 * i + c]) << "boundary node " << i;
+      }
       moved += out.xyz[3 * i + c] != mesh.xyz[3 * i + c];
     }
   EXPECT_GT(moved, 0u);

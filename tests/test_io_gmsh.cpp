@@ -14,6 +14,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/gmsh_io.hpp"
+#include "mesh/io/mesh_io.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
 
@@ -298,6 +299,30 @@ TEST(GmshIo, SkippedSectionsAreNoted) {
                                       "$NodeData section skipped; it will not be in the written file"}));
   EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
   EXPECT_TRUE(read_gmsh_file(testing::data_path("gmsh_sparse41.msh")).extras.read_notes.empty());
+}
+
+// The quality and boundary fields tetsmooth writes are recomputed on every
+// write, so a file it wrote reads back without notes; a user's own field of
+// another name, or under the other section, is still noted.
+TEST(GmshIo, OwnFieldsAreNotNoted) {
+  const auto data = [](const char* section, const char* name) {
+    return std::string("$") + section + "\n1\n\"" + name + "\"\n1\n0\n3\n0\n1\n1\n1 0.5\n$End" + section + "\n";
+  };
+  EXPECT_TRUE(read_text(std::string(kMinimal) + data("ElementData", "quality") + data("NodeData", "boundary"))
+                  .extras.read_notes.empty());
+  EXPECT_EQ(read_text(std::string(kMinimal) + data("NodeData", "quality")).extras.read_notes.size(), 1u);
+  EXPECT_EQ(read_text(std::string(kMinimal) + data("ElementData", "stress")).extras.read_notes.size(), 1u);
+  // tetsmooth's own output, in every MSH flavour, with its fields.
+  for (const MeshFormat f : {MeshFormat::Msh41, MeshFormat::Msh41Binary, MeshFormat::Msh22}) {
+    const std::string path = (std::filesystem::temp_directory_path() / "tetsmooth_own_fields.msh").string();
+    MeshFields fields;
+    const TetMesh mesh = testing::cube_with_centre();
+    fields.tet_scalars.emplace_back("quality", std::vector<double>(mesh.num_tets(), 0.5));
+    fields.node_scalars.emplace_back("boundary", std::vector<double>(mesh.num_nodes(), 1.0));
+    write_mesh(mesh, path, f, fields);
+    EXPECT_TRUE(read_mesh(path).extras.read_notes.empty()) << format_name(f);
+    std::filesystem::remove(path);
+  }
 }
 
 class GmshRoundTrip : public ::testing::TestWithParam<MshFlavour> {};

@@ -2,6 +2,7 @@
 // then one loop over the sections serves every flavour. Partitioned MSH 4.1
 // files are read as one mesh (see "partitioned files" below).
 #include <algorithm>
+#include <charconv>
 #include <cstring>
 #include <istream>
 #include <optional>
@@ -83,6 +84,34 @@ void note_skipped(const std::string& section, FileExtras& extras) {
     extras.read_notes.push_back(std::move(note));
 }
 
+// Skips a $NodeData or $ElementData section and returns its view name (the
+// first string tag, unquoted), or "" when it has none. Its first lines are
+// text in binary files too.
+template <class Source>
+std::string skip_data_section(Source& src, const std::string& end) {
+  const std::string_view count = src.line("the number of string tags");
+  if (count == end) return "";
+  int tags = 0;
+  std::from_chars(count.data(), count.data() + count.size(), tags);
+  if (tags < 1) {
+    src.skip_section(end);
+    return "";
+  }
+  std::string name(src.line("the view name"));
+  if (name == end) return "";
+  if (name.size() >= 2 && name.front() == '"' && name.back() == '"') name = name.substr(1, name.size() - 2);
+  src.skip_section(end);
+  return name;
+}
+
+// The fields the command line writes into every MSH file (per-tet
+// "quality", per-node "boundary"; apps/output_fields.cpp) are computed afresh
+// on each write, so reading them loses nothing, and a note on them would
+// warn about every file tetsmooth wrote (the VTK readers do the same).
+bool is_recomputed_field(const std::string& section, const std::string& view) {
+  return (section == "$ElementData" && view == "quality") || (section == "$NodeData" && view == "boundary");
+}
+
 template <class Source>
 void read_sections(Source& src, ReadState& state) {
   for (;;) {
@@ -116,6 +145,9 @@ void read_sections(Source& src, ReadState& state) {
       read_physical_names(src, state);
     } else if (section == "$MeshFormat") {
       src.fail("a second $MeshFormat section");
+    } else if (section == "$NodeData" || section == "$ElementData") {
+      if (!is_recomputed_field(section, skip_data_section(src, end))) note_skipped(section, state.mesh.extras);
+      continue;
     } else {
       src.skip_section(end);
       note_skipped(section, state.mesh.extras);

@@ -15,8 +15,14 @@ std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationRep
                                         const std::string& inverted_note) {
   std::vector<std::string> warnings;
   for (const std::string& note : mesh.extras.read_notes) warnings.push_back(source + ": " + note);
+  // Every tet inverted is a mesh in the other orientation rather than a
+  // tangled one: worth saying, since no smoothing can help it.
+  const bool all_inverted = report.inverted > 0 && report.inverted == report.tets;
   if (report.inverted > 0)
     warnings.push_back(source + ": " + with_thousands(report.inverted) + " inverted tets (negative volume)" +
+                       (all_inverted ? ", all of them: the file probably lists each tet's nodes in the opposite "
+                                       "order (tetsmooth expects (b-a).((c-a)x(d-a)) > 0)"
+                                     : "") +
                        (inverted_note.empty() ? "" : "; " + inverted_note));
   if (report.degenerate > 0)
     warnings.push_back(source + ": " + with_thousands(report.degenerate) +

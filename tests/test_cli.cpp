@@ -461,6 +461,24 @@ TEST_F(CliFiles, RepeatedTetsAreNamedAndKeepTheBoundary) {
   EXPECT_GT(moved, 0u);
 }
 
+// Every tet inverted: the warning points at the file's orientation.
+TEST_F(CliFiles, AllTetsInvertedSuggestsTheOppositeOrientation) {
+  TetMesh mesh = testing::cube_with_centre();
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) std::swap(mesh.tets[4 * t], mesh.tets[4 * t + 1]);
+  write_mesh(mesh, path("flipped.vtu"));
+  const CliRun r = run({"quality", path("flipped.vtu")});
+  EXPECT_EQ(r.code, kExitOk);
+  EXPECT_NE(r.err.find("12 inverted tets (negative volume), all of them: the file probably lists each tet's nodes in "
+                       "the opposite order"),
+            std::string::npos)
+      << r.err;
+  std::swap(mesh.tets[0], mesh.tets[1]);  // one tet right again: a tangle, not a convention
+  write_mesh(mesh, path("tangled.vtu"));
+  const CliRun tangled = run({"quality", path("tangled.vtu")});
+  EXPECT_NE(tangled.err.find("11 inverted tets"), std::string::npos) << tangled.err;
+  EXPECT_EQ(tangled.err.find("opposite order"), std::string::npos) << tangled.err;
+}
+
 TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {
   const std::string in = lattice(3);
   const CliRun r = run({"smooth", in, "-o", path("out.mesh"), "--device", "cpu", "-q"});

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Builds the GPU bundle on this machine (which has nvcc but no GPU): sm_90
 # binaries in gpu-bundle/ with the shared libraries the GPU machine lacks
-# (Google Benchmark as Debian names it, TetGen, the CUDA runtime, OpenMP) beside them, found
-# through RPATH $ORIGIN. Then hand gpu-bundle/ to the device tool's `carry`
-# and run scripts/device_run.sh there.
+# (Google Benchmark as Debian names it, TetGen, the CUDA runtime, OpenMP;
+# zlib and liblzma too, to be safe, though every Linux has them) beside
+# them, found through RPATH $ORIGIN. Then hand gpu-bundle/ to the device
+# tool's `carry` and run scripts/device_run.sh there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${BUILD_DIR:-build-gpu}
@@ -14,7 +15,7 @@ cmake --build "$build" -j"$(nproc)" --target bench_smooth test_gpu_smoother test
 rm -rf "$bundle"
 mkdir -p "$bundle"
 cp "$build"/bench/bench_smooth "$build"/tests/test_gpu_smoother "$build"/tests/test_gpu_topology "$bundle"/
-for lib in libbenchmark.so.1debian libtet.so.1.5 libcudart.so.13 libgomp.so.1; do
+for lib in libbenchmark.so.1debian libtet.so.1.5 libcudart.so.13 libgomp.so.1 libz.so.1 liblzma.so.5; do
   path=$(ldd "$bundle"/bench_smooth | awk -v l="$lib" '$1 == l {print $3}')
   [ -n "$path" ] || path=$(ldconfig -p | awk -v l="$lib" '$1 == l {print $NF; exit}')
   [ -n "$path" ] || { echo "gpu_bundle: $lib not found" >&2; exit 1; }

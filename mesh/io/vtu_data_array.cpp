@@ -75,6 +75,19 @@ std::string VtuArrayDecoder::byte_where(std::size_t offset) const {
   return source_ + ", byte " + std::to_string(offset);
 }
 
+void VtuArrayDecoder::fail(const std::string& where, const char* what, const std::string& message) {
+  throw InputError(where, std::string(what) + ": " + message);
+}
+
+std::size_t VtuArrayDecoder::max_tuples() const {
+  // Every value takes at least one byte of the file, or 1/kVtuMaxExpansion
+  // of one when compressed; the bound also keeps the byte counts of decode()
+  // from overflowing for a lying NumberOfPoints.
+  if (enc_.compressor == VtuCompressor::None) return text_.size();
+  constexpr std::size_t kMostBytes = std::numeric_limits<std::size_t>::max() / 64 / kVtuMaxExpansion;
+  return std::min(text_.size(), kMostBytes) * kVtuMaxExpansion;
+}
+
 template <class Out>
 void VtuArrayDecoder::parse_ascii(const VtuDataArray& a, std::size_t expected, const char* what,
                                   std::vector<Out>& out) const {
@@ -108,22 +121,19 @@ template <class Out>
 std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tuples, int components,
                                          const char* what) const {
   const std::string at_tag = xml_.where(a.tag.begin);
-  const auto fail = [&](const std::string& where, const std::string& message) {
-    throw InputError(where, std::string(what) + ": " + message);
-  };
   const std::string* type_name = a.tag.attribute("type");
   const ScalarInfo* info = nullptr;
   for (const ScalarInfo& s : kScalars)
     if (type_name && *type_name == s.name) info = &s;
-  if (!info) fail(at_tag, "unsupported DataArray type '" + (type_name ? *type_name : std::string()) + "'");
+  if (!info) fail(at_tag, what, "unsupported DataArray type '" + (type_name ? *type_name : std::string()) + "'");
   if (std::is_integral_v<Out> && info->is_float)
-    fail(at_tag, std::string("needs an integer type, found ") + info->name);
+    fail(at_tag, what, std::string("needs an integer type, found ") + info->name);
   const std::string* comps = a.tag.attribute("NumberOfComponents");
   if (std::to_string(components) != (comps ? *comps : std::string("1")))
-    fail(at_tag, "has " + (comps ? *comps : std::string("1")) + " components, expected " + std::to_string(components));
-  // Every value takes at least one byte of the file, which also keeps the
-  // byte counts below from overflowing for a lying NumberOfPoints.
-  if (tuples > text_.size()) fail(at_tag, "expects " + std::to_string(tuples) + " tuples, more than the file can hold");
+    fail(at_tag, what,
+         "has " + (comps ? *comps : std::string("1")) + " components, expected " + std::to_string(components));
+  if (tuples > max_tuples())
+    fail(at_tag, what, "expects " + std::to_string(tuples) + " tuples, more than the file can hold");
   const std::size_t expected = tuples * static_cast<std::size_t>(components);
 
   std::vector<Out> out;
@@ -133,60 +143,76 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
     parse_ascii(a, expected, what, out);
     return out;
   }
-
-  // The block (byte count, then data): decoded into `decoded` for base64,
-  // read in place for raw appended data.
-  std::vector<unsigned char> decoded;
-  const unsigned char* block = nullptr;
-  std::size_t block_size = 0;
-  std::size_t header_at = 0;  // where the block begins, for messages
-  std::size_t bad_at = 0;
-  if (format && *format == "binary") {
-    header_at = a.content_begin;
-    if (!base64_decode(text_.substr(a.content_begin, a.content_end - a.content_begin), decoded, bad_at))
-      fail(xml_.where(a.content_begin + bad_at), "invalid base64 data");
-  } else if (format && *format == "appended") {
-    if (!enc_.has_appended) fail(at_tag, "format=\"appended\" but the file has no AppendedData section");
-    const std::string* off = a.tag.attribute("offset");
-    long long offset = -1;
-    if (!off || !parse_integer(*off, offset) || offset < 0) fail(at_tag, "missing or bad offset attribute");
-    header_at = enc_.appended_begin + static_cast<std::size_t>(offset);
-    if (header_at > text_.size())
-      fail(byte_where(header_at),
-           "truncated: the block at appended offset " + *off + " lies beyond the end of the file");
-    if (enc_.appended_base64) {
-      // The byte count and the data are encoded separately, each padded.
-      const std::size_t hchars = base64_length(enc_.header_bytes);
-      if (!base64_decode(text_.substr(header_at, hchars), decoded, bad_at) || decoded.size() < enc_.header_bytes)
-        fail(byte_where(header_at), "invalid base64 block header");
-      const std::uint64_t n = enc_.header_bytes == 8 ? load_le<std::uint64_t>(decoded.data(), enc_.big_endian)
-                                                     : load_le<std::uint32_t>(decoded.data(), enc_.big_endian);
-      if (n > text_.size()) fail(byte_where(header_at), "block size " + std::to_string(n) + " exceeds the file");
-      if (!base64_decode(text_.substr(header_at + hchars, base64_length(n)), decoded, bad_at))
-        fail(byte_where(header_at + hchars + bad_at), "invalid base64 data");
-    } else {
-      block = reinterpret_cast<const unsigned char*>(text_.data()) + header_at;
-      block_size = text_.size() - header_at;
-    }
-  } else {
-    fail(at_tag, "unknown format '" + (format ? *format : std::string()) + "'");
-  }
-  if (!block) {
-    block = decoded.data();
-    block_size = decoded.size();
-  }
-  if (block_size < enc_.header_bytes) fail(byte_where(header_at), "truncated block header");
-  const std::uint64_t bytes = enc_.header_bytes == 8 ? load_le<std::uint64_t>(block, enc_.big_endian)
-                                                     : load_le<std::uint32_t>(block, enc_.big_endian);
-  if (bytes != expected * info->size)
-    fail(byte_where(header_at), "block holds " + std::to_string(bytes) + " bytes, expected " +
-                                    std::to_string(expected * info->size) + " for " + std::to_string(expected) + " " +
-                                    info->name + " values");
-  if (block_size - enc_.header_bytes < bytes)
-    fail(byte_where(header_at), "truncated: the file ends inside the block of " + std::to_string(bytes) + " bytes");
-  if (!convert(info->scalar, block + enc_.header_bytes, expected, enc_.big_endian, out))
-    fail(byte_where(header_at), "value out of range");
+  std::vector<unsigned char> storage, inflated;
+  const Framed f = framed(a, what, storage);
+  const std::string where = byte_where(f.at);
+  const VtuBlocks blocks(enc_, where, what);
+  const unsigned char* values = blocks.values(f.data, f.size, expected * info->size,
+                                              std::to_string(expected) + " " + info->name + " values", inflated);
+  if (!convert(info->scalar, values, expected, enc_.big_endian, out)) fail(where, what, "value out of range");
   return out;
+}
+
+VtuArrayDecoder::Framed VtuArrayDecoder::framed(const VtuDataArray& a, const char* what,
+                                                std::vector<unsigned char>& storage) const {
+  const std::string* format = a.tag.attribute("format");
+  if (format && *format == "binary") {
+    // All of the element's text at once: base64_decode takes padding inside
+    // the text, so a header and data encoded separately (as VTK and meshio
+    // do) decode as one byte sequence, as does one run holding both.
+    std::size_t bad_at = 0;
+    if (!base64_decode(text_.substr(a.content_begin, a.content_end - a.content_begin), storage, bad_at))
+      fail(xml_.where(a.content_begin + bad_at), what, "invalid base64 data");
+    return {storage.data(), storage.size(), a.content_begin};
+  }
+  if (format && *format == "appended") {
+    const std::size_t at = appended_at(a, what);
+    if (enc_.appended_base64) {
+      appended_base64(at, what, storage);
+      return {storage.data(), storage.size(), at};
+    }
+    // Raw: the array's data run from its offset to at most the end of the file.
+    return {reinterpret_cast<const unsigned char*>(text_.data()) + at, text_.size() - at, at};
+  }
+  fail(xml_.where(a.tag.begin), what, "unknown format '" + (format ? *format : std::string()) + "'");
+}
+
+std::size_t VtuArrayDecoder::appended_at(const VtuDataArray& a, const char* what) const {
+  const std::string at_tag = xml_.where(a.tag.begin);
+  if (!enc_.has_appended) fail(at_tag, what, "format=\"appended\" but the file has no AppendedData section");
+  const std::string* off = a.tag.attribute("offset");
+  long long offset = -1;
+  if (!off || !parse_integer(*off, offset) || offset < 0) fail(at_tag, what, "missing or bad offset attribute");
+  const std::size_t at = enc_.appended_begin + static_cast<std::size_t>(offset);
+  if (at > text_.size())
+    fail(byte_where(at), what, "truncated: the block at appended offset " + *off + " lies beyond the end of the file");
+  return at;
+}
+
+// Appended base64 data: the header and the data are encoded separately,
+// each padded, so the data begin where the header's characters end. An
+// uncompressed header is one item; a compressed one is as long as its
+// first item, the block count, says.
+void VtuArrayDecoder::appended_base64(std::size_t at, const char* what, std::vector<unsigned char>& storage) const {
+  const VtuBlocks blocks(enc_, byte_where(at), what);
+  base64_run(at, base64_length(enc_.header_bytes), what, "block header", storage);
+  if (storage.size() < enc_.header_bytes) fail(byte_where(at), what, "invalid base64 block header");
+  const std::size_t header = blocks.header_size(storage.data(), text_.size());
+  const std::size_t header_chars = base64_length(header);
+  storage.clear();
+  base64_run(at, header_chars, what, "block header", storage);
+  if (storage.size() < header) fail(byte_where(at), what, "invalid base64 block header");
+  const std::uint64_t data = blocks.data_size(storage.data(), text_.size());
+  base64_run(at + header_chars, base64_length(data), what, "data", storage);
+}
+
+// Decodes the `chars` characters at `at`, or what of them the file holds,
+// onto `storage`.
+void VtuArrayDecoder::base64_run(std::size_t at, std::size_t chars, const char* what, const char* part,
+                                 std::vector<unsigned char>& storage) const {
+  const std::string_view run = at < text_.size() ? text_.substr(at, chars) : std::string_view();
+  std::size_t bad_at = 0;
+  if (!base64_decode(run, storage, bad_at)) fail(byte_where(at + bad_at), what, std::string("invalid base64 ") + part);
 }
 
 std::vector<double> VtuArrayDecoder::reals(const VtuDataArray& a, std::size_t tuples, int components,

@@ -1,24 +1,17 @@
 #pragma once
 // Decoding the values of one VTU DataArray, whatever its form: ascii text,
 // inline base64 ("binary"), or appended raw or base64 data, each binary
-// block preceded by its byte count (UInt32 or UInt64 per header_type).
+// array framed by a byte count or, compressed, by a block table
+// (vtu_blocks.hpp).
 #include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "mesh/io/vtu_blocks.hpp"
 #include "mesh/io/xml_scan.hpp"
 
 namespace tetsmooth {
-
-// How a file frames its binary data, from the VTKFile and AppendedData tags.
-struct VtuEncoding {
-  bool big_endian = false;
-  std::size_t header_bytes = 4;  // UInt32 unless header_type says UInt64
-  bool has_appended = false;
-  bool appended_base64 = false;
-  std::size_t appended_begin = 0;  // offset of the byte after the '_'
-};
 
 struct VtuDataArray {
   XmlTag tag;
@@ -38,11 +31,26 @@ class VtuArrayDecoder {
   std::vector<long long> integers(const VtuDataArray& a, std::size_t values, const char* what) const;
 
  private:
+  // An array's framed binary data (vtu_blocks.hpp) and the byte offset in
+  // the file where it begins, for messages.
+  struct Framed {
+    const unsigned char* data;
+    std::size_t size;
+    std::size_t at;
+  };
+
   template <class Out>
   std::vector<Out> decode(const VtuDataArray& a, std::size_t tuples, int components, const char* what) const;
   template <class Out>
   void parse_ascii(const VtuDataArray& a, std::size_t expected, const char* what, std::vector<Out>& out) const;
+  Framed framed(const VtuDataArray& a, const char* what, std::vector<unsigned char>& storage) const;
+  std::size_t appended_at(const VtuDataArray& a, const char* what) const;
+  void appended_base64(std::size_t at, const char* what, std::vector<unsigned char>& storage) const;
+  void base64_run(std::size_t at, std::size_t chars, const char* what, const char* part,
+                  std::vector<unsigned char>& storage) const;
+  std::size_t max_tuples() const;
   std::string byte_where(std::size_t offset) const;
+  [[noreturn]] static void fail(const std::string& where, const char* what, const std::string& message);
 
   std::string_view text_;
   const XmlScanner& xml_;

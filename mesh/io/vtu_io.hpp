@@ -12,8 +12,10 @@
 //
 // Reading: one Piece; DataArrays in ascii, binary (base64) or appended
 // (raw or base64) form, header_type UInt32 or UInt64, either byte order,
-// any numeric type. Compressed files are rejected with a message saying
-// so. Cells must be tetra, or vertex/line/triangle/quad, which are passed
+// any numeric type; binary data uncompressed or compressed with
+// vtkZLibDataCompressor or vtkLZMADataCompressor (vtu_blocks.hpp), other
+// compressors (vtkLZ4DataCompressor) rejected with a message naming them.
+// Cells must be tetra, or vertex/line/triangle/quad, which are passed
 // through with their nodes fixed. Region tags come from one cell-data array
 // (tetsmooth:tag, or another tool's name for them: vtk_arrays.hpp) and fixed
 // nodes from tetsmooth:fixed; every other PointData and CellData array is

@@ -39,10 +39,11 @@ void read_vtkfile_tag(const XmlScanner& xml, const XmlTag& tag, VtuEncoding& enc
   const std::string* type = tag.attribute("type");
   if (!type || *type != "UnstructuredGrid")
     xml.fail(tag.begin, "VTK XML type '" + (type ? *type : std::string()) + "' is not UnstructuredGrid");
-  if (const std::string* c = tag.attribute("compressor"); c && !c->empty())
+  if (const std::string* c = tag.attribute("compressor"); c && !vtu_compressor(*c, enc.compressor))
     xml.fail(tag.begin, "compressed VTU data (" + *c +
-                            ") is not supported; write the file uncompressed (ParaView: Compressor Type None; "
-                            "meshio: compression=None)");
+                            ") is not supported: tetsmooth reads zlib (vtkZLibDataCompressor) and LZMA "
+                            "(vtkLZMADataCompressor) compression; save the file with one of those or uncompressed "
+                            "(ParaView: Compressor Type ZLib or None)");
   if (const std::string* order = tag.attribute("byte_order")) {
     if (*order != "LittleEndian" && *order != "BigEndian") xml.fail(tag.begin, "unknown byte_order '" + *order + "'");
     enc.big_endian = *order == "BigEndian";

@@ -88,7 +88,7 @@ std::string resolve_links(std::string path, bool& held) {
 
 // Where the bytes go: a temporary beside the target, renamed over it by
 // commit() and removed otherwise; or, for a target that is a device, FIFO or
-// socket, the target itself.
+// socket, or a file this process holds open through /proc, the target itself.
 class TempFile {
  public:
   explicit TempFile(const std::string& target) : target_(target) {

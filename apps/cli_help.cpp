@@ -66,7 +66,8 @@ std::string generate_help() {
          ", meshed by TetGen)\nor lattice-N: N^3 jittered cubes of 6 tets each, (N+1)^3 nodes.\n\n"
          "Options:\n"
          "  -o, --output OUT       where to write the mesh (format from the extension)\n"
-         "  --seed N               random seed; the same seed gives the same mesh (default 1)\n"
+         "  --seed N               random seed; the same seed gives the same mesh (default 1;\n"
+         "                         slope-77k is fixed and ignores it)\n"
          "  --output-format F      write format F whatever OUT's extension\n"
          "  -q, --quiet            print nothing but errors\n\n" +
          kExitCodes;

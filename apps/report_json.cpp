@@ -90,8 +90,12 @@ nlohmann::ordered_json quality_report_json(const QualityCommand& command, const 
           {"worst_tets", worst}};
 }
 
+std::string json_text(const nlohmann::ordered_json& doc) {
+  return doc.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
+
 void write_json_file(const nlohmann::ordered_json& doc, const std::string& path) {
-  write_atomically(path, [&](std::ostream& os) { os << doc.dump(2) << '\n'; });
+  write_atomically(path, [&](std::ostream& os) { os << json_text(doc) << '\n'; });
 }
 
 }  // namespace tetsmooth::cli

@@ -37,6 +37,11 @@ nlohmann::ordered_json summary_json(const QualitySummary& s);
 nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const SmoothRecord& record);
 nlohmann::ordered_json quality_report_json(const QualityCommand& command, const QualityRecord& record);
 
+// The document as pretty-printed text. File names and array names are bytes
+// from the user's files, not always UTF-8: invalid sequences become U+FFFD
+// rather than stopping the report (JSON must be UTF-8).
+std::string json_text(const nlohmann::ordered_json& doc);
+
 // Pretty-printed JSON with a final newline, written atomically to `path`.
 void write_json_file(const nlohmann::ordered_json& doc, const std::string& path);
 

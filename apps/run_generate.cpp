@@ -16,7 +16,9 @@ void run_generate(const GenerateCommand& c, const Console& console) {
   write_mesh_with_fields(mesh, c.output, format);
   if (console.quiet) return;
   const QualitySummary q = summarize_quality(mesh);
-  console.note("wrote " + c.output + ": " + c.model + " (seed " + std::to_string(c.seed) + "), " +
+  const std::string seed =
+      model_uses_seed(c.model) ? "seed " + std::to_string(c.seed) : "fixed: --seed does not change it";
+  console.note("wrote " + c.output + ": " + c.model + " (" + seed + "), " +
                with_thousands(mesh.num_nodes()) + " nodes, " + with_thousands(mesh.num_tets()) +
                " tets, radius ratio min " + quality_text(q.min) + " mean " + quality_text(q.mean) + " (" +
                format_name(format) + ")");

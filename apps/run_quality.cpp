@@ -27,7 +27,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
 
   std::ostream& os = console.out;
   if (c.json) {
-    os << quality_report_json(c, record).dump(2) << '\n';
+    os << json_text(quality_report_json(c, record)) << '\n';
     return;
   }
   os << c.input << ": " << with_thousands(record.mesh.nodes) << " nodes (" << with_thousands(record.boundary_nodes)

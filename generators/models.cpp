@@ -52,6 +52,8 @@ const std::vector<std::string>& paper_model_names() {
   return names;
 }
 
+bool model_uses_seed(const std::string& name) { return name != "slope-77k"; }
+
 TetMesh generate_model(const std::string& name, std::uint64_t seed) {
   for (const BoxModel& model : kBoxModels)
     if (name == model.name) return generate_box_delaunay(model.lattice_per_axis, model.random_nodes, seed);

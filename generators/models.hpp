@@ -30,6 +30,10 @@ const std::vector<std::string>& paper_model_names();  // {"5k","10k","59k","slop
 //   109k      109,260   ~727,088        21^3 lattice + 99,999 random nodes
 TetMesh generate_model(const std::string& name, std::uint64_t seed = 1);
 
+// Whether `name`'s mesh depends on the seed (all but slope-77k, whose
+// geometry and TetGen run are fixed).
+bool model_uses_seed(const std::string& name);
+
 // Lattice-plus-random-nodes in the unit box [0,1]^3, Delaunay-tetrahedralised
 // by TetGen without Steiner points: exactly lattice_per_axis^3 +
 // random_nodes nodes, the lattice first (x fastest), then the random nodes

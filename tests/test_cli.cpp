@@ -479,6 +479,20 @@ TEST_F(CliFiles, AllTetsInvertedSuggestsTheOppositeOrientation) {
   EXPECT_EQ(tangled.err.find("opposite order"), std::string::npos) << tangled.err;
 }
 
+// File names are bytes, not always UTF-8: the reports still come out, with
+// the bad byte replaced, and the mesh is written.
+TEST_F(CliFiles, ReportsSurviveFileNamesThatAreNotUtf8) {
+  const std::string in = lattice(2, "bad\xff.vtu");
+  const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "-q", "--report", path("r.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("r.json")) >> j;
+  EXPECT_EQ(j["input"]["path"], path("bad\xef\xbf\xbd.vtu"));
+  const CliRun q = run({"quality", in, "--json"});
+  ASSERT_EQ(q.code, kExitOk) << q.err;
+  EXPECT_EQ(nlohmann::json::parse(q.out)["input"]["nodes"], 27);
+}
+
 TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {
   const std::string in = lattice(3);
   const CliRun r = run({"smooth", in, "-o", path("out.mesh"), "--device", "cpu", "-q"});

@@ -232,6 +232,13 @@ TEST(Generators, SlopeSizeFollowsTheTarget) {
   EXPECT_THROW(generate_slope(10, 1), UsageError);
 }
 
+// What `tetsmooth generate` says of the seed rests on this.
+TEST(Generators, OnlyTheSlopeIgnoresTheSeed) {
+  for (const std::string& name : paper_model_names()) EXPECT_EQ(model_uses_seed(name), name != "slope-77k") << name;
+  EXPECT_TRUE(model_uses_seed("lattice-4"));
+  EXPECT_NE(generate_model("lattice-4", 1).xyz, generate_model("lattice-4", 2).xyz);
+}
+
 TEST(Generators, SlopeIsDeterministicAndSeedIndependent) {
   const TetMesh a = generate_slope(10'000, 1);
   const TetMesh b = generate_slope(10'000, 1);

@@ -163,6 +163,19 @@ TEST_F(IoDir, AtomicGroupWritesNothingUnlessEveryBodySucceeds) {
   EXPECT_EQ(files(), 1u);
 }
 
+// A directory in the way of the second file: the first is not replaced
+// either, so a TetGen pair is never left half new.
+TEST_F(IoDir, AtomicGroupChecksEveryTargetBeforeReplacingAny) {
+  write_atomically(path("a.node"), [](std::ostream& out) { out << "old a"; });
+  fs::create_directory(path("a.ele"));
+  EXPECT_THROW(write_atomically({{path("a.node"), [](std::ostream& out) { out << "new a"; }},
+                                 {path("a.ele"), [](std::ostream& out) { out << "new ele"; }}}),
+               OutputError);
+  EXPECT_EQ(contents(path("a.node")), "old a");
+  EXPECT_TRUE(fs::is_directory(path("a.ele")));
+  EXPECT_EQ(files(), 2u);
+}
+
 TEST_F(IoDir, AtomicWriteIntoMissingDirectoryNamesPathAndReason) {
   try {
     write_atomically(path("no/such/dir/t.txt"), [](std::ostream& out) { out << "x"; });

@@ -155,6 +155,14 @@ class TempFile {
     if (::close(fd) != 0) fail(target_, "", errno);
   }
 
+  // The failure commit() would meet that can be seen beforehand: a
+  // directory where the file should go (rename cannot replace it).
+  void check_destination() const {
+    struct stat st {};
+    if (!direct_ && ::stat(dest_.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+      fail(target_, "cannot rename the temporary into place: ", EISDIR);
+  }
+
   void commit() {
     if (direct_) return;
     if (::rename(path_.c_str(), dest_.c_str()) != 0) fail(target_, "cannot rename the temporary into place: ", errno);
@@ -183,6 +191,9 @@ void write_atomically(const std::vector<AtomicPart>& parts, bool /*binary: no te
     temps.push_back(std::make_unique<TempFile>(part.path));
     temps.back()->fill(part.body);
   }
+  // Every destination checked before the first rename, so that a set does
+  // not fail half-way for a reason known in advance.
+  for (const auto& temp : temps) temp->check_destination();
   for (auto& temp : temps) temp->commit();
 }
 

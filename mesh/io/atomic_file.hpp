@@ -38,8 +38,10 @@ struct AtomicPart {
 
 // Writes every part to its temporary first and renames only when all of
 // them are complete, so a failure in any body leaves every target as it was.
-// (Renames are atomic one by one, not as a set: if a rename itself fails
-// after an earlier one succeeded, the earlier target is already replaced.)
+// Every target is checked before the first rename (a directory in the way
+// fails the whole set), but renames are atomic one by one, not as a set: if
+// a rename itself fails after an earlier one succeeded, the earlier target
+// is already replaced.
 void write_atomically(const std::vector<AtomicPart>& parts, bool binary = false);
 
 }  // namespace tetsmooth

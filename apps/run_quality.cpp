@@ -4,6 +4,7 @@
 #include "apps/commands.hpp"
 #include "apps/input_warnings.hpp"
 #include "apps/option_names.hpp"
+#include "apps/region_pins.hpp"
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
 #include "mesh/io/mesh_io.hpp"
@@ -14,12 +15,16 @@ namespace tetsmooth::cli {
 void run_quality(const QualityCommand& c, const Console& console) {
   QualityRecord record;
   record.format = format_from_path(c.input, c.input_format);
-  const TetMesh mesh = read_mesh(c.input, record.format);
+  TetMesh mesh = read_mesh(c.input, record.format);
   record.mesh = inspect_input(mesh, c.input);
   for (const std::string& w : input_warnings(mesh, record.mesh, c.input)) console.warn(w);
 
-  // The topology tells which tets smoothing could change (min_movable).
-  const Topology topology = build_topology(mesh);
+  // The topology tells which tets smoothing could change (min_movable), with
+  // material interfaces pinned as `smooth` pins them.
+  const Topology topology = [&] {
+    const RegionInterfacePins pins(mesh);
+    return build_topology(mesh);
+  }();
   record.boundary_nodes = static_cast<std::size_t>(std::count(topology.boundary.begin(), topology.boundary.end(), 1));
   record.movable_nodes = static_cast<std::size_t>(std::count(topology.movable.begin(), topology.movable.end(), 1));
   record.summary = summarize_quality(mesh, topology.movable);

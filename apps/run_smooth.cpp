@@ -8,6 +8,7 @@
 #include "apps/output_check.hpp"
 #include "apps/output_fields.hpp"
 #include "apps/progress_line.hpp"
+#include "apps/region_pins.hpp"
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
 #include "kernels/smoother.hpp"
@@ -123,6 +124,10 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   ProgressLine progress(console.err, console.err_is_terminal && !console.quiet, options.max_iterations);
   options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
   try {
+    const RegionInterfacePins pins(mesh);
+    if (pins.added() > 0)
+      console.note(with_thousands(pins.added()) + " nodes on interfaces between regions (tets of different tags) "
+                   "stay fixed");
     record.result = smooth(mesh, options, record.device);
   } catch (...) {
     progress.finish();

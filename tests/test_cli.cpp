@@ -493,6 +493,38 @@ TEST_F(CliFiles, ReportsSurviveFileNamesThatAreNotUtf8) {
   EXPECT_EQ(nlohmann::json::parse(q.out)["input"]["nodes"], 27);
 }
 
+// Two layers told apart only by their tets' tags: the interface between
+// them stays put, the run says so, and the written file gains no pins.
+TEST_F(CliFiles, MaterialInterfacesStayFixed) {
+  TetMesh mesh = testing::cube_grid(4, 0.2);
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 4; ++k) cx += mesh.xyz[3 * static_cast<std::size_t>(mesh.tets[4 * t + k])] / 4;
+    mesh.extras.tet_tags.push_back(cx < 2 ? 1 : 2);  // the cubes left and right of x = 2
+  }
+  write_mesh(mesh, path("layers.vtu"));
+  const CliRun r = run({"smooth", path("layers.vtu"), "-o", path("out.vtu"), "--device", "cpu"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("25 nodes on interfaces between regions"), std::string::npos) << r.err;
+  const TetMesh out = read_mesh(path("out.vtu"));
+  EXPECT_TRUE(out.fixed.empty());
+  EXPECT_EQ(out.extras.tet_tags, mesh.extras.tet_tags);
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    const bool on_interface = mesh.xyz[3 * i] > 1.5 && mesh.xyz[3 * i] < 2.5;  // node column i = 2, jittered
+    for (int c = 0; c < 3; ++c) {
+      if (on_interface) {
+        EXPECT_EQ(out.xyz[3 * i + c], mesh.xyz[3 * i + c]) << "interface node " << i;
+      }
+      moved += out.xyz[3 * i + c] != mesh.xyz[3 * i + c];
+    }
+  }
+  EXPECT_GT(moved, 0u);
+  const CliRun q = run({"quality", path("layers.vtu"), "--json"});
+  ASSERT_EQ(q.code, kExitOk) << q.err;
+  EXPECT_EQ(nlohmann::json::parse(q.out)["input"]["movable_nodes"], 27 - 9);
+}
+
 TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {
   const std::string in = lattice(3);
   const CliRun r = run({"smooth", in, "-o", path("out.mesh"), "--device", "cpu", "-q"});

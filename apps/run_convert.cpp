@@ -17,6 +17,7 @@ void run_convert(const ConvertCommand& c, const Console& console) {
   check_output_location(c.output);
   const TetMesh mesh = read_mesh(c.input, input_format);
   check_writable(mesh, c.output, output_format);
+  for (const std::string& loss : output_losses(mesh, c.output, output_format)) console.warn(c.output + ": " + loss);
   for (const std::string& w : input_warnings(mesh, inspect_input(mesh, c.input), c.input)) console.warn(w);
   write_mesh_with_fields(mesh, c.output, output_format);
   console.note("wrote " + c.output + ": " + with_thousands(mesh.num_nodes()) + " nodes, " +

@@ -114,6 +114,8 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
                                   ? "continuing: adaptive smoothing never makes them worse"
                                   : "continuing, but ordinary smoothing may make them worse";
   record.warnings = input_warnings(mesh, record.input, c.input, inverted_note);
+  for (const std::string& loss : output_losses(mesh, c.output, record.output_format))
+    record.warnings.push_back(c.output + ": " + loss);
   for (std::string& w : ignored_option_warnings(c, record.device)) record.warnings.push_back(std::move(w));
   for (const std::string& w : record.warnings) console.warn(w);
   console.note(c.input + ": " + with_thousands(record.input.nodes) + " nodes, " + with_thousands(record.input.tets) +

@@ -363,6 +363,37 @@ TEST_F(CliFiles, OutputThatCannotHoldTheElementsFailsBeforeSmoothing) {
   EXPECT_EQ(run({"smooth", path("hex.msh"), "-o", path("out.msh"), "--device", "cpu", "-q"}).code, kExitOk);
 }
 
+// What the output format cannot carry is named before the work: elements
+// other than tets to TetGen, pins to MSH, node attributes to VTU.
+TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}});
+  write_mesh(mesh, path("hex.msh"));
+  const CliRun tetgen = run({"convert", path("hex.msh"), path("hex.node")});
+  EXPECT_EQ(tetgen.code, kExitOk) << tetgen.err;
+  EXPECT_NE(tetgen.err.find("1 hexahedron will not be written: tetgen holds tets only"), std::string::npos)
+      << tetgen.err;
+
+  TetMesh pinned = testing::cube_with_centre();
+  pinned.extras.required_nodes = {8};
+  pinned.fixed.assign(9, 0);
+  pinned.fixed[8] = 1;
+  write_mesh(pinned, path("pinned.mesh"));
+  const CliRun msh = run({"smooth", path("pinned.mesh"), "-o", path("out.msh"), "--device", "cpu"});
+  EXPECT_EQ(msh.code, kExitOk) << msh.err;
+  EXPECT_NE(msh.err.find("1 pinned node will not be pinned in the msh41 output"), std::string::npos) << msh.err;
+  const CliRun medit = run({"convert", path("pinned.mesh"), path("same.mesh")});
+  EXPECT_EQ(medit.err.find("will not be"), std::string::npos) << medit.err;  // Medit keeps them
+
+  TetMesh attrs = testing::cube_with_centre();
+  attrs.extras.node_attribute_count = 1;
+  attrs.extras.node_attributes.assign(9, 0.5);
+  write_mesh(attrs, path("attrs.node"));
+  const CliRun vtu = run({"convert", path("attrs.node"), path("attrs.vtu")});
+  EXPECT_NE(vtu.err.find("the node attributes (1 per node) will not be written: vtu has no place for them"), std::string::npos)
+      << vtu.err;
+}
+
 TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {
   if (cuda_available()) GTEST_SKIP() << "a CUDA device is usable here";
   const std::string in = lattice(2);

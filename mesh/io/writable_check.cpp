@@ -1,5 +1,6 @@
 #include "mesh/io/writable_check.hpp"
 
+#include <algorithm>
 #include <ostream>
 #include <streambuf>
 
@@ -59,7 +60,57 @@ void write_probe(const TetMesh& probe, MeshFormat format, std::ostream& out) {
   }
 }
 
+std::string count_of(std::size_t n, const std::string& what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+// Pinned nodes whose pin the format keeps: VTU and VTK write every pin; Medit
+// its RequiredVertices, Corners and element nodes; MSH only element nodes.
+std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
+  if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk) return 0;
+  std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
+  const bool elements_pin = format != MeshFormat::TetGen && format != MeshFormat::Cache;
+  if (elements_pin)
+    for (const PassThroughBlock& b : mesh.extras.blocks)
+      for (index_t n : b.connectivity) kept[static_cast<std::size_t>(n)] = 1;
+  if (format == MeshFormat::Medit)
+    for (const auto* list : {&mesh.extras.required_nodes, &mesh.extras.corner_nodes})
+      for (index_t n : *list) kept[static_cast<std::size_t>(n)] = 1;
+  std::size_t lost = 0;
+  for (std::size_t i = 0; i < mesh.fixed.size(); ++i) lost += mesh.fixed[i] && !kept[i];
+  return lost;
+}
+
 }  // namespace
+
+std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& path, MeshFormat format) {
+  const MeshFormat f = format_from_path(path, format);
+  const std::string name = format_name(f);
+  const FileExtras& e = mesh.extras;
+  std::vector<std::string> notes;
+  if (f == MeshFormat::TetGen || f == MeshFormat::Cache) {
+    std::string kinds;
+    std::size_t elements = 0;
+    for (const PassThroughBlock& b : e.blocks) {
+      const std::size_t n = b.connectivity.size() / static_cast<std::size_t>(std::max(b.nodes_per_element, 1));
+      if (n == 0) continue;
+      elements += n;
+      kinds += (kinds.empty() ? "" : ", ") + count_of(n, b.kind);
+    }
+    if (elements > 0) notes.push_back(kinds + " will not be written: " + name + " holds tets only");
+  }
+  if (const std::size_t lost = pins_lost(mesh, f); lost > 0)
+    notes.push_back(count_of(lost, "pinned node") + " will not be pinned in the " + name +
+                    " output, so a later run may move them");
+  if (f != MeshFormat::TetGen && f != MeshFormat::Medit && !e.node_markers.empty())
+    notes.push_back("the node markers will not be written: " + name + " has no place for them");
+  if (f != MeshFormat::TetGen && e.node_attribute_count > 0 && !e.node_attributes.empty())
+    notes.push_back("the node attributes (" + std::to_string(e.node_attribute_count) +
+                    " per node) will not be written: " + name + " has no place for them");
+  if (f == MeshFormat::Cache && !e.tet_tags.empty())
+    notes.push_back("the region tags will not be written: " + name + " holds coordinates and tets only");
+  return notes;
+}
 
 void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat format) {
   NullBuf nowhere;

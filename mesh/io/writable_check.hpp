@@ -2,6 +2,7 @@
 // Whether an output format can hold a mesh, asked before the work that
 // produces it, so that a long smoothing run does not end in "cannot write".
 #include <string>
+#include <vector>
 
 #include "mesh/io/mesh_io.hpp"
 
@@ -15,5 +16,14 @@ namespace tetsmooth {
 // whatever the mesh's size. What depends on the values themselves (a tag too
 // large for MSH field data) is still found only by the real write.
 void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat format = MeshFormat::Auto);
+
+// What `format` (Auto: from the name) will not carry of what the mesh holds,
+// one sentence each, for a warning before the work: elements other than
+// tets (TetGen and .tsm hold tets only), the pins of fixed nodes (MSH keeps
+// a pin only through an element on the node, TetGen and .tsm not at all;
+// a later run would move such nodes), TetGen node markers and attributes,
+// and region tags (.tsm).
+std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& path,
+                                       MeshFormat format = MeshFormat::Auto);
 
 }  // namespace tetsmooth

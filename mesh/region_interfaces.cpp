@@ -1,8 +1,8 @@
 #include "mesh/region_interfaces.hpp"
 
 #include <algorithm>
-#include <array>
-#include <tuple>
+
+#include "mesh/topology.hpp"
 
 namespace tetsmooth {
 
@@ -10,36 +10,20 @@ std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh) {
   std::vector<std::uint8_t> interface(mesh.num_nodes(), 0);
   const std::vector<int>& tags = mesh.extras.tet_tags;
   if (tags.size() != mesh.num_tets()) return interface;
-  struct FaceUse {
-    std::array<index_t, 3> face;  // ascending
-    index_t opposite;             // the fourth node: which tet, whatever its listing
-    int tag;
-    bool operator<(const FaceUse& o) const {
-      return std::tie(face, opposite, tag) < std::tie(o.face, o.opposite, o.tag);
-    }
-  };
-  std::vector<FaceUse> uses(4 * mesh.num_tets());
-  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
-    for (int f = 0; f < 4; ++f) {
-      FaceUse& u = uses[4 * t + f];
-      for (int k = 0; k < 3; ++k) u.face[k] = mesh.tets[4 * t + kTetFaces[f][k]];
-      std::sort(u.face.begin(), u.face.end());
-      u.opposite = mesh.tets[4 * t + f];
-      u.tag = tags[t];
-    }
-  std::sort(uses.begin(), uses.end());
-  // The tags of the uses [b, e) of one face by one tet, without repeats.
+  const std::vector<FaceUse> uses = sorted_face_uses(mesh.tets);
+  // The tags of the listings [b, e) of one tet, sorted, without repeats.
   const auto tag_set = [&](std::size_t b, std::size_t e) {
     std::vector<int> set;
-    for (std::size_t k = b; k < e; ++k)
-      if (set.empty() || set.back() != uses[k].tag) set.push_back(uses[k].tag);
+    for (std::size_t k = b; k < e; ++k) set.push_back(tags[static_cast<std::size_t>(uses[k].tet)]);
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
     return set;
   };
   for (std::size_t first = 0, last; first < uses.size(); first = last) {
     for (last = first + 1; last < uses.size() && uses[last].face == uses[first].face; ++last) {
     }
-    // The run holds the face's tets one after another (sorted by fourth
-    // node); the face is an interface when two of them differ in tags.
+    // The run holds the face's tets one after another (by fourth node); the
+    // face is an interface when two of them differ in tags.
     std::vector<int> seen;
     bool differs = false;
     for (std::size_t b = first, e; b < last && !differs; b = e) {

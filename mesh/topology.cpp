@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 namespace tetsmooth {
 namespace {
@@ -59,12 +60,7 @@ Csr build_node_tets(const std::vector<index_t>& tets, std::size_t num_nodes) {
   return csr_from_sorted_pairs(keys, num_nodes);
 }
 
-std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes) {
-  struct FaceUse {
-    std::array<index_t, 3> face;  // ascending
-    index_t opposite;             // the tet's fourth node
-    bool operator<(const FaceUse& o) const { return face != o.face ? face < o.face : opposite < o.opposite; }
-  };
+std::vector<FaceUse> sorted_face_uses(const std::vector<index_t>& tets) {
   const std::size_t nt = tets.size() / 4;
   std::vector<FaceUse> uses(nt * 4);
   for (std::size_t t = 0; t < nt; ++t)
@@ -73,8 +69,16 @@ std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, 
       u.face = {tets[4 * t + kTetFaces[f][0]], tets[4 * t + kTetFaces[f][1]], tets[4 * t + kTetFaces[f][2]]};
       std::sort(u.face.begin(), u.face.end());
       u.opposite = tets[4 * t + f];
+      u.tet = static_cast<index_t>(t);
     }
-  std::sort(uses.begin(), uses.end());
+  std::sort(uses.begin(), uses.end(), [](const FaceUse& a, const FaceUse& b) {
+    return std::tie(a.face, a.opposite, a.tet) < std::tie(b.face, b.opposite, b.tet);
+  });
+  return uses;
+}
+
+std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes) {
+  const std::vector<FaceUse> uses = sorted_face_uses(tets);
   std::vector<std::uint8_t> boundary(num_nodes, 0);
   for (std::size_t first = 0, last; first < uses.size(); first = last) {
     for (last = first + 1; last < uses.size() && uses[last].face == uses[first].face; ++last) {

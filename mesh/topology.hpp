@@ -1,6 +1,8 @@
 #pragma once
 // Mesh topology on the CPU, built the way the paper builds it (§3.2-3.3) so
 // the CUDA version can be checked against it item by item.
+#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -16,6 +18,19 @@ Csr build_neighbours(const std::vector<index_t>& tets, std::size_t num_nodes);
 
 // Node -> incident tets, each row sorted ascending.
 Csr build_node_tets(const std::vector<index_t>& tets, std::size_t num_nodes);
+
+// One face of one tet: its nodes ascending, the tet's fourth node (which
+// tells the tets on the two sides of a face apart, and a tet listed twice
+// from two tets) and the tet's index (tets fit index_t, as in node_tets).
+struct FaceUse {
+  std::array<index_t, 3> face;
+  index_t opposite;
+  index_t tet;
+};
+
+// The 4 faces of every tet, sorted by (face, opposite, tet): the uses of a
+// face lie together, those of each tet on it together within them.
+std::vector<FaceUse> sorted_face_uses(const std::vector<index_t>& tets);
 
 // 1 for nodes on a boundary face: each tet's 4 faces are stored with sorted
 // node indices and the tet's fourth node, all faces sorted, and a face is on

@@ -13,40 +13,21 @@ import unittest
 import meshio
 
 from test_cli import BIN, run
-from test_independent_readers import gmsh_module
-
-
-def start_gmsh(gmsh):
-    # As in test_independent_readers: no options from ~/.gmshrc or the
-    # environment (-noenv exists from Gmsh 4.9).
-    major, minor = (int(x) for x in gmsh.__version__.split(".")[:2])
-    gmsh.initialize(["", "-noenv"] if (major, minor) >= (4, 9) else [""], readConfigFiles=False)
-    gmsh.option.setNumber("General.Terminal", 0)
+from test_independent_readers import gmsh_module, gmsh_session, physical_groups
 
 
 def physical_group_sizes(gmsh, path):
     """{(dim, physical tag): number of elements} of the mesh file at path."""
-    start_gmsh(gmsh)
-    try:
+    with gmsh_session(gmsh):
         gmsh.open(path)
-        sizes = {}
-        for dim, tag in gmsh.model.getPhysicalGroups():
-            count = 0
-            for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
-                _, element_tags, _ = gmsh.model.mesh.getElements(dim, entity)
-                count += sum(len(t) for t in element_tags)
-            sizes[(dim, tag)] = count
-        return sizes
-    finally:
-        gmsh.finalize()
+        return physical_groups(gmsh)
 
 
 def write_box_with_groups(gmsh, path, version):
     """A coarse box, the volume in physical group 7, two faces in 3, an edge
     in 5 and a corner in 9: tets, triangles, lines and a vertex, each kind
     tagged (Gmsh saves only the elements of physical groups)."""
-    start_gmsh(gmsh)
-    try:
+    with gmsh_session(gmsh):
         gmsh.model.occ.addBox(0, 0, 0, 1, 2, 3)
         gmsh.model.occ.synchronize()
         gmsh.model.addPhysicalGroup(3, [1], 7)
@@ -57,8 +38,6 @@ def write_box_with_groups(gmsh, path, version):
         gmsh.model.mesh.generate(3)
         gmsh.option.setNumber("Mesh.MshFileVersion", version)
         gmsh.write(path)
-    finally:
-        gmsh.finalize()
 
 
 class ForeignTags(unittest.TestCase):

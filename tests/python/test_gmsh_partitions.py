@@ -5,7 +5,6 @@ partitioned, the same number of elements in each, and the boundary nodes
 where they were.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
-import contextlib
 import json
 import os
 import shutil
@@ -16,33 +15,9 @@ import meshio
 import numpy as np
 
 from test_cli import BIN, run
-from test_independent_readers import gmsh_module
+from test_independent_readers import gmsh_module, gmsh_session, physical_groups
 
 INPUTS = [("part-ascii.msh", 0), ("part-binary.msh", 1)]
-
-
-@contextlib.contextmanager
-def gmsh_session(gmsh):
-    # As in test_independent_readers: no user options change what is read.
-    major, minor = (int(x) for x in gmsh.__version__.split(".")[:2])
-    gmsh.initialize(["", "-noenv"] if (major, minor) >= (4, 9) else [""], readConfigFiles=False)
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        yield
-    finally:
-        gmsh.finalize()
-
-
-def physical_groups(gmsh):
-    """{(dim, tag): number of elements} of the model in the session."""
-    counts = {}
-    for dim, tag in gmsh.model.getPhysicalGroups():
-        n = 0
-        for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
-            _, elements, _ = gmsh.model.mesh.getElements(dim, entity)
-            n += sum(len(e) for e in elements)
-        counts[(dim, tag)] = n
-    return counts
 
 
 def nodes_by_tag(gmsh):

@@ -4,6 +4,7 @@ read back with meshio (and the .msh files with the Gmsh API), and meshes
 written by meshio are read by `tetsmooth quality --json` and `convert`.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
+import contextlib
 import json
 import os
 import shutil
@@ -31,14 +32,35 @@ def gmsh_module():
     return gmsh, ""
 
 
-def read_with_gmsh(gmsh, path):
-    """Nodes in tag order and tets as 0-based rows into them."""
+@contextlib.contextmanager
+def gmsh_session(gmsh):
+    """An initialised, quiet Gmsh for the `with` block, finalised after it."""
     # Options in ~/.gmshrc or the environment must not change what is read:
     # -noenv exists from Gmsh 4.9; older versions only skip the config files.
     major, minor = (int(x) for x in gmsh.__version__.split(".")[:2])
     gmsh.initialize(["", "-noenv"] if (major, minor) >= (4, 9) else [""], readConfigFiles=False)
     try:
         gmsh.option.setNumber("General.Terminal", 0)
+        yield
+    finally:
+        gmsh.finalize()
+
+
+def physical_groups(gmsh):
+    """{(dim, tag): number of elements} of the model in the session."""
+    counts = {}
+    for dim, tag in gmsh.model.getPhysicalGroups():
+        n = 0
+        for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
+            _, elements, _ = gmsh.model.mesh.getElements(dim, entity)
+            n += sum(len(e) for e in elements)
+        counts[(dim, tag)] = n
+    return counts
+
+
+def read_with_gmsh(gmsh, path):
+    """Nodes in tag order and tets as 0-based rows into them."""
+    with gmsh_session(gmsh):
         gmsh.open(path)
         tags, coords, _ = gmsh.model.mesh.getNodes()
         order = np.argsort(tags)
@@ -51,8 +73,6 @@ def read_with_gmsh(gmsh, path):
                 tets.append(np.asarray(nodes).reshape(-1, 4))
         tets = np.searchsorted(tags, np.concatenate(tets))
         return xyz, tets
-    finally:
-        gmsh.finalize()
 
 
 class IndependentReaders(unittest.TestCase):

@@ -12,22 +12,44 @@ namespace {
 // Local vertex pairs of a tet's six edges.
 constexpr int kTetEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-// Rows from (row, item) pairs already sorted by row: counts, then an
-// exclusive scan into offsets.
-Csr csr_from_sorted_pairs(const std::vector<std::uint64_t>& keys, std::size_t rows) {
+// The node rows of a table sorted into rows by a counting sort
+// (counting_sort.hpp): the row counts' exclusive scan places every item, as
+// the paper's scan of the sorted pairs' row counts does, and only a row's
+// own items are left to order. `finish(row, first, last)` orders the row's
+// items in place and returns the end of those it keeps; the kept rows are
+// then packed to the front.
+template <class Finish>
+Csr pack_rows(RowBuckets<index_t>&& b, const Finish& finish) {
+  const std::size_t rows = b.offsets.size() - 1;
   Csr csr;
   csr.offsets.assign(rows + 1, 0);
-  csr.items.resize(keys.size());
-  for (std::size_t k = 0; k < keys.size(); ++k) {
-    ++csr.offsets[static_cast<std::size_t>(keys[k] >> 32) + 1];
-    csr.items[k] = static_cast<index_t>(keys[k] & 0xffffffffu);
+  std::size_t out = 0;
+  for (std::size_t r = 0; r < rows; ++r) {
+    index_t* const first = b.items.data() + b.offsets[r];
+    index_t* const last = finish(r, first, b.items.data() + b.offsets[r + 1]);
+    if (b.items.data() + out != first) std::copy(first, last, b.items.data() + out);
+    out += static_cast<std::size_t>(last - first);
+    csr.offsets[r + 1] = static_cast<index_t>(out);
   }
-  std::partial_sum(csr.offsets.begin(), csr.offsets.end(), csr.offsets.begin());
+  csr.items.assign(b.items.begin(), b.items.begin() + static_cast<std::ptrdiff_t>(out));
   return csr;
 }
 
-std::uint64_t pack(index_t hi, index_t lo) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(hi)) << 32) | static_cast<std::uint32_t>(lo);
+// A face's nodes ascending, by min and max: a tet's corner order is
+// arbitrary, and the branches of a general sort mispredicted on about every
+// face (on the 1M-node lattice, most of the face sort's time).
+std::array<index_t, 3> ascending(index_t a, index_t b, index_t c) {
+  const index_t lo = std::min(a, b), hi = std::max(a, b);
+  const index_t top = std::max(hi, c), rest = std::min(hi, c);
+  return {std::min(lo, rest), std::max(lo, rest), top};
+}
+
+// One more than the largest node index in `tets` (0 for none): the rows of
+// the tables below that are sorted by node without a node count given.
+std::size_t node_rows(const std::vector<index_t>& tets) {
+  index_t top = -1;
+  for (index_t v : tets) top = std::max(top, v);
+  return static_cast<std::size_t>(top) + 1;
 }
 
 }  // namespace
@@ -35,50 +57,58 @@ std::uint64_t pack(index_t hi, index_t lo) {
 Csr build_neighbours(const std::vector<index_t>& tets, std::size_t num_nodes) {
   const std::size_t nt = tets.size() / 4;
   // Each edge in both directions, so every node's row is complete.
-  std::vector<std::uint64_t> keys(nt * 12);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int e = 0; e < 6; ++e) {
-      const index_t a = tets[4 * t + kTetEdges[e][0]], b = tets[4 * t + kTetEdges[e][1]];
-      keys[12 * t + 2 * e] = pack(a, b);
-      keys[12 * t + 2 * e + 1] = pack(b, a);
-    }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  // A tet with a repeated node would give self loops; they are no neighbours.
-  keys.erase(std::remove_if(keys.begin(), keys.end(), [](std::uint64_t k) { return (k >> 32) == (k & 0xffffffffu); }),
-             keys.end());
-  return csr_from_sorted_pairs(keys, num_nodes);
+  RowBuckets<index_t> pairs = sort_into_rows<index_t>(num_nodes, [&](const auto& slot) {
+    for (std::size_t t = 0; t < nt; ++t)
+      for (const auto& e : kTetEdges) {
+        const index_t a = tets[4 * t + e[0]], b = tets[4 * t + e[1]];
+        slot(static_cast<std::size_t>(a)) = b;
+        slot(static_cast<std::size_t>(b)) = a;
+      }
+  });
+  return pack_rows(std::move(pairs), [](std::size_t row, index_t* first, index_t* last) {
+    std::sort(first, last);
+    last = std::unique(first, last);
+    // A tet with a repeated node would give a self loop; it is no neighbour.
+    return std::remove(first, last, static_cast<index_t>(row));
+  });
 }
 
 Csr build_node_tets(const std::vector<index_t>& tets, std::size_t num_nodes) {
   const std::size_t nt = tets.size() / 4;
-  std::vector<std::uint64_t> keys(nt * 4);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int k = 0; k < 4; ++k) keys[4 * t + k] = pack(tets[4 * t + k], static_cast<index_t>(t));
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  return csr_from_sorted_pairs(keys, num_nodes);
+  // Produced in tet order, so each row is already ascending; a tet that
+  // names a node twice lists itself twice in a row, side by side.
+  RowBuckets<index_t> uses = sort_into_rows<index_t>(num_nodes, [&](const auto& slot) {
+    for (std::size_t t = 0; t < nt; ++t)
+      for (int k = 0; k < 4; ++k) slot(static_cast<std::size_t>(tets[4 * t + k])) = static_cast<index_t>(t);
+  });
+  return pack_rows(std::move(uses), [](std::size_t, index_t* first, index_t* last) { return std::unique(first, last); });
 }
 
-std::vector<FaceUse> sorted_face_uses(const std::vector<index_t>& tets) {
+RowItems<FaceUse> sorted_face_uses(const std::vector<index_t>& tets) {
   const std::size_t nt = tets.size() / 4;
-  std::vector<FaceUse> uses(nt * 4);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (int f = 0; f < 4; ++f) {
-      FaceUse& u = uses[4 * t + f];
-      u.face = {tets[4 * t + kTetFaces[f][0]], tets[4 * t + kTetFaces[f][1]], tets[4 * t + kTetFaces[f][2]]};
-      std::sort(u.face.begin(), u.face.end());
-      u.opposite = tets[4 * t + f];
-      u.tet = static_cast<index_t>(t);
-    }
-  std::sort(uses.begin(), uses.end(), [](const FaceUse& a, const FaceUse& b) {
-    return std::tie(a.face, a.opposite, a.tet) < std::tie(b.face, b.opposite, b.tet);
+  // Into rows by the face's lowest node, then each row sorted on its own:
+  // the rows in order are the whole sorted list.
+  RowBuckets<FaceUse> uses = sort_into_rows<FaceUse>(node_rows(tets), [&](const auto& slot) {
+    for (std::size_t t = 0; t < nt; ++t)
+      for (int f = 0; f < 4; ++f) {
+        const std::array<index_t, 3> face =
+            ascending(tets[4 * t + kTetFaces[f][0]], tets[4 * t + kTetFaces[f][1]], tets[4 * t + kTetFaces[f][2]]);
+        FaceUse& u = slot(static_cast<std::size_t>(face[0]));
+        u.face = face;
+        u.opposite = tets[4 * t + f];
+        u.tet = static_cast<index_t>(t);
+      }
   });
-  return uses;
+  const auto before = [](const FaceUse& a, const FaceUse& b) {
+    return std::tie(a.face, a.opposite, a.tet) < std::tie(b.face, b.opposite, b.tet);
+  };
+  for (std::size_t r = 0; r + 1 < uses.offsets.size(); ++r)
+    std::sort(uses.items.begin() + uses.offsets[r], uses.items.begin() + uses.offsets[r + 1], before);
+  return std::move(uses.items);
 }
 
 std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes) {
-  const std::vector<FaceUse> uses = sorted_face_uses(tets);
+  const RowItems<FaceUse> uses = sorted_face_uses(tets);
   std::vector<std::uint8_t> boundary(num_nodes, 0);
   for (std::size_t first = 0, last; first < uses.size(); first = last) {
     for (last = first + 1; last < uses.size() && uses[last].face == uses[first].face; ++last) {
@@ -92,14 +122,22 @@ std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, 
 }
 
 std::size_t count_repeated_tets(const std::vector<index_t>& tets) {
-  std::vector<std::array<index_t, 4>> sorted(tets.size() / 4);
-  for (std::size_t t = 0; t < sorted.size(); ++t) {
-    std::copy(tets.begin() + 4 * t, tets.begin() + 4 * t + 4, sorted[t].begin());
-    std::sort(sorted[t].begin(), sorted[t].end());
-  }
-  std::sort(sorted.begin(), sorted.end());
+  // Each tet's nodes ascending, into rows by the lowest: repeats share a row.
+  using Sorted = std::array<index_t, 4>;
+  RowBuckets<Sorted> sorted = sort_into_rows<Sorted>(node_rows(tets), [&](const auto& slot) {
+    for (std::size_t t = 0; t < tets.size() / 4; ++t) {
+      Sorted s;
+      std::copy(tets.begin() + 4 * t, tets.begin() + 4 * t + 4, s.begin());
+      std::sort(s.begin(), s.end());
+      slot(static_cast<std::size_t>(s[0])) = s;
+    }
+  });
   std::size_t repeated = 0;
-  for (std::size_t t = 1; t < sorted.size(); ++t) repeated += sorted[t] == sorted[t - 1];
+  for (std::size_t r = 0; r + 1 < sorted.offsets.size(); ++r) {
+    const auto first = sorted.items.begin() + sorted.offsets[r], last = sorted.items.begin() + sorted.offsets[r + 1];
+    std::sort(first, last);
+    for (auto it = first; it != last && it + 1 != last; ++it) repeated += *it == *(it + 1);
+  }
   return repeated;
 }
 

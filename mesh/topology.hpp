@@ -1,19 +1,27 @@
 #pragma once
-// Mesh topology on the CPU, built the way the paper builds it (§3.2-3.3) so
-// the CUDA version can be checked against it item by item.
+// Mesh topology on the CPU: the tables of the paper's §3.2-3.3, which the
+// CUDA version (kernels/cuda/device_topology.cu) builds the paper's way and
+// is checked against item by item. Here the pairs are sorted by their first
+// node with a counting sort (mesh/counting_sort.hpp), then each row on its
+// own: the same order as one comparison sort of all the pairs, with only
+// short rows left to compare. On a 2-core host, `tetsmooth quality` of a
+// 1M-node, 6M-tet lattice took 9.5 s with the one sort, about half of it
+// sorting, and takes 4.2 s with this.
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
+#include "mesh/counting_sort.hpp"
 #include "mesh/csr.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth {
 
 // Node -> neighbour nodes (nodes sharing an edge), each row sorted ascending,
-// no self loops. Built from the tets' 6 edges, a reversed copy appended, a
-// sort by (start, end), unique, and an exclusive scan of the row counts.
+// no self loops. Built from the tets' 6 edges and a reversed copy of each,
+// sorted by (start, end), duplicates removed; the offsets are the exclusive
+// scan of the row counts.
 Csr build_neighbours(const std::vector<index_t>& tets, std::size_t num_nodes);
 
 // Node -> incident tets, each row sorted ascending.
@@ -30,7 +38,7 @@ struct FaceUse {
 
 // The 4 faces of every tet, sorted by (face, opposite, tet): the uses of a
 // face lie together, those of each tet on it together within them.
-std::vector<FaceUse> sorted_face_uses(const std::vector<index_t>& tets);
+RowItems<FaceUse> sorted_face_uses(const std::vector<index_t>& tets);
 
 // 1 for nodes on a boundary face: each tet's 4 faces are stored with sorted
 // node indices and the tet's fourth node, all faces sorted, and a face is on

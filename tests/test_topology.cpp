@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include "mesh/topology.hpp"
 #include "test_meshes.hpp"
@@ -53,7 +54,10 @@ void expect_matches_brute_force(const TetMesh& m) {
   }
   std::vector<std::vector<index_t>> inc(m.num_nodes());
   for (std::size_t t = 0; t < m.num_tets(); ++t)
-    for (int k = 0; k < 4; ++k) inc[m.tets[4 * t + k]].push_back(static_cast<index_t>(t));
+    for (int k = 0; k < 4; ++k) {
+      std::vector<index_t>& row = inc[m.tets[4 * t + k]];
+      if (row.empty() || row.back() != static_cast<index_t>(t)) row.push_back(static_cast<index_t>(t));  // once a tet
+    }
   for (std::size_t i = 0; i < m.num_nodes(); ++i)
     EXPECT_EQ(std::vector<index_t>(topo.node_tets.row_begin(i), topo.node_tets.row_end(i)), inc[i]) << "node " << i;
   EXPECT_EQ(topo.boundary, brute_boundary(m));
@@ -143,6 +147,44 @@ TEST(Topology, CountsRepeatedTets) {
   tets.insert(tets.end(), v, v + 4);                      // and as it was
   tets.insert(tets.end(), m.tets.begin() + 4, m.tets.begin() + 8);  // tet 1 again
   EXPECT_EQ(count_repeated_tets(tets), 3u);
+}
+
+// A tet that names a node twice (a collapsed tet in a broken file) is in
+// that node's row once, and gives the node no edge to itself.
+TEST(Topology, TetWithARepeatedNode) {
+  TetMesh m = testing::cube_with_centre();
+  m.tets.insert(m.tets.end(), {8, 0, 8, 1});
+  expect_matches_brute_force(m);
+  const Topology topo = build_topology(m);
+  EXPECT_FALSE(std::binary_search(topo.neighbours.row_begin(8), topo.neighbours.row_end(8), index_t(8)));
+  EXPECT_EQ(topo.node_tets.row_size(8), 13);  // the cube's 12 tets and this one
+}
+
+// The face uses come out in the order of one sort of them all, whatever the
+// node numbering (here shuffled, so that faces' lowest nodes are scattered).
+TEST(Topology, FaceUsesInFullSortOrder) {
+  TetMesh m = testing::random_delaunay(300, 9);
+  std::vector<index_t> relabel(m.num_nodes());
+  for (std::size_t i = 0; i < relabel.size(); ++i) relabel[i] = static_cast<index_t>((i * 7919) % relabel.size());
+  for (index_t& v : m.tets) v = relabel[static_cast<std::size_t>(v)];
+  m.tets.insert(m.tets.end(), m.tets.begin(), m.tets.begin() + 40);  // ten tets again
+  const auto uses = sorted_face_uses(m.tets);
+  std::vector<FaceUse> expected;
+  for (std::size_t t = 0; t < m.num_tets(); ++t)
+    for (int f = 0; f < 4; ++f) {
+      FaceUse u;
+      u.face = {m.tets[4 * t + kTetFaces[f][0]], m.tets[4 * t + kTetFaces[f][1]], m.tets[4 * t + kTetFaces[f][2]]};
+      std::sort(u.face.begin(), u.face.end());
+      u.opposite = m.tets[4 * t + f];
+      u.tet = static_cast<index_t>(t);
+      expected.push_back(u);
+    }
+  const auto key = [](const FaceUse& u) { return std::tie(u.face, u.opposite, u.tet); };
+  std::sort(expected.begin(), expected.end(), [&](const FaceUse& a, const FaceUse& b) { return key(a) < key(b); });
+  ASSERT_EQ(uses.size(), expected.size());
+  for (std::size_t k = 0; k < uses.size(); ++k) EXPECT_EQ(key(uses[k]), key(expected[k])) << "use " << k;
+  EXPECT_EQ(count_repeated_tets(m.tets), 10u);
+  expect_matches_brute_force(m);
 }
 
 TEST(Topology, MeanEdgeLengthOfRegularTet) {

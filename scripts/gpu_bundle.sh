@@ -17,7 +17,7 @@ mkdir -p "$bundle"
 cp "$build"/bench/bench_smooth "$build"/tests/test_gpu_smoother "$build"/tests/test_gpu_topology "$bundle"/
 for lib in libbenchmark.so.1debian libtet.so.1.5 libcudart.so.13 libgomp.so.1 libz.so.1 liblzma.so.5; do
   path=$(ldd "$bundle"/bench_smooth | awk -v l="$lib" '$1 == l {print $3}')
-  [ -n "$path" ] || path=$(ldconfig -p | awk -v l="$lib" '$1 == l {print $NF; exit}')
+  [ -n "$path" ] || path=$(ldconfig -p | awk -v l="$lib" '$1 == l && !found {print $NF; found = 1}')  # no early exit: that would end ldconfig with SIGPIPE, which pipefail turns into a silent stop
   [ -n "$path" ] || { echo "gpu_bundle: $lib not found" >&2; exit 1; }
   cp -L "$path" "$bundle/$lib"
 done

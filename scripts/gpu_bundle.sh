@@ -22,5 +22,5 @@ for lib in libbenchmark.so.1debian libtet.so.1.5 libcudart.so.13 libgomp.so.1 li
   cp -L "$path" "$bundle/$lib"
 done
 cp scripts/device_run.sh "$bundle"/
-git rev-parse --short=12 HEAD > "$bundle"/GIT_SHA 2>/dev/null || echo unknown > "$bundle"/GIT_SHA
+scripts/git_version.sh > "$bundle"/GIT_SHA
 du -sh "$bundle"

@@ -1,21 +1,64 @@
 #!/usr/bin/env bash
-# Files a bench_smooth JSON under results/<device>/ (device: the model in the
-# JSON's gpu_name, e.g. "NVIDIA H100 80GB HBM3" -> h100; "cpu-<host>" without
-# a GPU) and renders its tables and figures there. A second JSON (the float
-# run, bench_float.json) is copied beside it when given.
+# Files a bench_smooth result under results/<device>/ and renders its tables
+# and figures there.
+#
+#   scripts/publish_results.sh [--dest DIR] [--logs DIR] BENCH.json [FLOAT.json]
+#
+# <device> is the GPU model in the JSON's gpu_name without "NVIDIA", as a
+# slug ("NVIDIA H100 80GB HBM3" -> h100-80gb-hbm3, "NVIDIA H100 PCIe" ->
+# h100-pcie, so different boards never share a folder), or cpu-<host> for a
+# run without a GPU; --dest names the folder instead. FLOAT.json (the float
+# run) is filed beside it as bench_float.json. --logs DIR copies the GPU
+# test and sanitizer logs and device.txt of a device_run.sh output folder.
+#
+# The tables and figures are rendered into a fresh folder first; only when
+# that succeeds do they replace the destination's result files, so a bad
+# JSON leaves the old results whole, and files of an earlier run that this
+# one does not produce (an old bench_float.json, a figure) do not linger
+# beside it. Other files there (Nsight Compute reports, notes) are kept.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-json=$1
-device=$(/usr/bin/python3 -c '
+usage() { echo "usage: $0 [--dest DIR] [--logs DIR] BENCH.json [FLOAT.json]" >&2; exit 2; }
+dest='' logs=''
+while [ $# -gt 0 ]; do
+  case $1 in
+    --dest) [ $# -ge 2 ] || usage; dest=$2; shift 2 ;;
+    --logs) [ $# -ge 2 ] || usage; logs=$2; shift 2 ;;
+    -*) usage ;;
+    *) break ;;
+  esac
+done
+[ $# -ge 1 ] && [ $# -le 2 ] || usage
+json=$1 float=${2:-}
+for f in "$json" $float; do [ -s "$f" ] || { echo "publish_results: $f is missing or empty (did any benchmark run?)" >&2; exit 2; }; done
+if [ -z "$dest" ]; then
+  device=$(/usr/bin/python3 -c '
 import json, re, sys
-ctx = json.load(open(sys.argv[1]))["context"]
+try:
+    ctx = json.load(open(sys.argv[1])).get("context", {})
+except (OSError, ValueError) as error:
+    sys.exit(f"publish_results: {sys.argv[1]}: not benchmark JSON: {error}")
 name = ctx.get("gpu_name")
-model = name.lower().replace("nvidia", "").split() if name else []
-print(re.sub(r"[^a-z0-9]+", "-", model[0]).strip("-") if model else "cpu-" + ctx.get("host_name", "unknown"))
+model = re.sub(r"\bnvidia\b", "", name.lower()) if name else "cpu " + ctx.get("host_name", "unknown")
+print(re.sub(r"[^a-z0-9]+", "-", model).strip("-"))
 ' "$json")
-dest=results/$device
+  dest=results/$device
+fi
+stage=$(mktemp -d)
+trap 'rm -rf "$stage"' EXIT
+cp "$json" "$stage/bench_smooth.json"
+[ -z "$float" ] || cp "$float" "$stage/bench_float.json"
+if [ -n "$logs" ]; then
+  for f in gpu_tests.log sanitizers.log device.txt; do [ ! -f "$logs/$f" ] || cp "$logs/$f" "$stage/"; done
+fi
+/usr/bin/python3 plots/report.py "$stage/bench_smooth.json" "$stage"
 mkdir -p "$dest"
-cp "$json" "$dest/bench_smooth.json"
-if [ $# -ge 2 ]; then cp "$2" "$dest/bench_float.json"; fi
-/usr/bin/python3 plots/report.py "$dest/bench_smooth.json" "$dest"
+if [ -f "$dest/bench_smooth.json" ]; then
+  echo "replacing the results in $dest (git $(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["context"].get("git_sha", "?"))' "$dest/bench_smooth.json" 2>/dev/null || echo '?'))"
+fi
+# What a run produces; logs only when this run brings its own.
+rm -f "$dest"/bench_smooth.json "$dest"/bench_float.json "$dest"/tables.md "$dest"/table*.csv \
+      "$dest"/quality.csv "$dest"/runs.csv "$dest"/scaling.csv "$dest"/colours.csv "$dest"/fig*.png
+[ -z "$logs" ] || rm -f "$dest"/gpu_tests.log "$dest"/sanitizers.log "$dest"/device.txt
+cp "$stage"/* "$dest"/
 echo "results written to $dest"

@@ -2,7 +2,15 @@
 # The study: installs what is missing, builds, generates the paper's meshes
 # (cached in meshes/), runs bench_smooth with repetitions and writes
 # results/<device>/bench_smooth.json with its tables and figures.
-# On a machine without a GPU only the CPU families run; for the GPU machine
+#
+#   scripts/run_study.sh [bench_smooth flags...]
+#
+# Environment: REPS (repetitions, default 3), BUILD_DIR (default build),
+# TETSMOOTH_MESH_CACHE (default ./meshes). Flags are passed to bench_smooth
+# after the defaults, so they win: e.g. --models=5k,109k, --no-cpu,
+# --precision=float, --benchmark_filter=REGEX (bench_smooth --help lists
+# them). On a machine without a GPU only the CPU families run (the lattice
+# scaling mesh is GPU-only and is then not generated); for the GPU machine
 # see scripts/gpu_bundle.sh and scripts/device_run.sh (README: Results).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -11,7 +19,10 @@ build=${BUILD_DIR:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j"$(nproc)" --target bench_smooth
 export TETSMOOTH_MESH_CACHE=${TETSMOOTH_MESH_CACHE:-$PWD/meshes}
+TETSMOOTH_GIT_SHA=$(scripts/git_version.sh)
+export TETSMOOTH_GIT_SHA
 tmp=$(mktemp -d)
-"$build"/bench/bench_smooth --benchmark_repetitions="${REPS:-3}" --benchmark_min_time=0.01 \
+trap 'rm -rf "$tmp"' EXIT
+"$build"/bench/bench_smooth --scaling=lattice-215 --benchmark_repetitions="${REPS:-3}" --benchmark_min_time=0.01 \
   --benchmark_out="$tmp/bench_smooth.json" --benchmark_out_format=json "$@"
 scripts/publish_results.sh "$tmp/bench_smooth.json"

@@ -1,0 +1,105 @@
+#include "bench/bench_flags.hpp"
+
+#include <charconv>
+#include <cstring>
+#include <sstream>
+
+#include "generators/models.hpp"
+#include "mesh/errors.hpp"
+
+namespace tetsmooth::bench {
+namespace {
+
+std::vector<std::string> split_list(const std::string& flag, const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  if (out.empty()) throw UsageError(flag + ": empty list");
+  return out;
+}
+
+std::string checked_lattice(const std::string& name) {
+  const std::string prefix = "lattice-";
+  int n = 0;
+  const char* first = name.data() + std::min(prefix.size(), name.size());
+  const char* last = name.data() + name.size();
+  const auto [end, ec] = std::from_chars(first, last, n);
+  if (name.rfind(prefix, 0) != 0 || ec != std::errc() || end != last || n < 1)
+    throw UsageError("--scaling: '" + name + "' is not a lattice-N mesh (N cubes a side, N >= 1)");
+  return name;
+}
+
+int checked_lanes(const std::string& text) {
+  int lanes = -1;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), lanes);
+  if (ec != std::errc() || end != text.data() + text.size() ||
+      (lanes != 0 && lanes != 8 && lanes != 16 && lanes != 32))
+    throw UsageError("--coloured-lanes: '" + text + "' is not 0 (automatic), 8, 16 or 32");
+  return lanes;
+}
+
+}  // namespace
+
+std::string model_label(const std::string& name) {
+  if (name == "77k" || name == "slope-77k") return "77k";
+  std::string known;
+  for (const std::string& model : paper_model_names()) {
+    if (name == model) return name;
+    known += (known.empty() ? "" : ", ") + model;
+  }
+  throw UsageError("--models: unknown model '" + name + "'; expected some of " + known +
+                   " (77k for slope-77k); lattice meshes go in --scaling");
+}
+
+BenchConfig take_own_flags(int& argc, char** argv) {
+  BenchConfig c;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    auto value = [&](const char* prefix) { return a.substr(std::strlen(prefix)); };
+    if (a.rfind("--models=", 0) == 0) {
+      c.models.clear();
+      for (const std::string& name : split_list("--models", value("--models="))) c.models.push_back(model_label(name));
+    } else if (a.rfind("--scaling=", 0) == 0) {
+      c.scaling.clear();
+      for (const std::string& name : split_list("--scaling", value("--scaling="))) c.scaling.push_back(checked_lattice(name));
+    } else if (a.rfind("--precision=", 0) == 0) {
+      const std::string p = value("--precision=");
+      if (p != "double" && p != "float") throw UsageError("--precision: '" + p + "' is not double or float");
+      c.precision = p == "float" ? Precision::Float : Precision::Double;
+    } else if (a.rfind("--coloured-lanes=", 0) == 0) {
+      c.coloured_lanes = checked_lanes(value("--coloured-lanes="));
+    } else if (a == "--no-cpu") {
+      c.cpu = false;
+    } else if (a == "--no-gpu") {
+      c.gpu = false;
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
+  return c;
+}
+
+const char* own_flags_help() {
+  return "bench_smooth: the study of the paper's Tables 3-6 and Figures 9-13.\n"
+         "Each benchmark times topology + colouring + smoothing to convergence.\n"
+         "\n"
+         "bench_smooth's own flags:\n"
+         "  --models=LIST          paper models to run, comma-separated (default 5k,10k,59k,77k,109k;\n"
+         "                         slope-77k is accepted for 77k)\n"
+         "  --scaling=LIST         lattice-N meshes for the GPU scaling runs, e.g. lattice-215 (10M nodes);\n"
+         "                         default none\n"
+         "  --precision=P          GPU precision, double (default) or float\n"
+         "  --coloured-lanes=N     GPU Coloured threads per node: 0 automatic (default), 8, 16 or 32\n"
+         "  --no-cpu               skip the serial and threaded CPU baselines\n"
+         "  --no-gpu               skip the GPU families\n"
+         "Environment: TETSMOOTH_MESH_CACHE (generated meshes, default ./meshes),\n"
+         "TETSMOOTH_GIT_SHA (the commit written into the JSON's context).\n"
+         "Exit status: 0 done, 1 a run failed, 2 a bad flag.\n"
+         "\n"
+         "Google Benchmark's flags follow.\n\n";
+}
+
+}  // namespace tetsmooth::bench

@@ -1,0 +1,97 @@
+#!/usr/bin/python3
+"""Tests of scripts/publish_results.sh, which files a result under results/.
+
+Run: /usr/bin/python3 tests/python/test_publish.py   (CTest sets TETSMOOTH_SOURCE_DIR)
+Uses tests/data/bench_small.json (a small bench_smooth result) and writes
+only into temporary folders given with --dest.
+"""
+
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+
+SOURCE_DIR = os.environ.get("TETSMOOTH_SOURCE_DIR") or os.path.dirname(
+    os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+SCRIPT = os.path.join(SOURCE_DIR, "scripts", "publish_results.sh")
+SMALL = os.path.join(SOURCE_DIR, "tests", "data", "bench_small.json")
+
+
+def publish(*args):
+    return subprocess.run(["bash", SCRIPT, *args], capture_output=True, text=True, timeout=300)
+
+
+class PublishResults(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="publish-")
+        self.dest = os.path.join(self.tmp, "dest")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp)
+
+    def write(self, name, text):
+        path = os.path.join(self.tmp, name)
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(text)
+        return path
+
+    def test_files_the_result_with_its_tables_and_logs(self):
+        logs = os.path.join(self.tmp, "out")
+        os.mkdir(logs)
+        for name in ("gpu_tests.log", "sanitizers.log", "device.txt"):
+            self.write(os.path.join("out", name), name)
+        done = publish("--dest", self.dest, "--logs", logs, SMALL, SMALL)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        present = set(os.listdir(self.dest))
+        for name in ("bench_smooth.json", "bench_float.json", "tables.md", "table3.csv", "gpu_tests.log",
+                     "sanitizers.log", "device.txt"):
+            self.assertIn(name, present)
+        self.assertTrue(any(name.startswith("fig") for name in present), present)
+
+    def test_a_new_run_replaces_the_old_files_and_keeps_notes(self):
+        self.assertEqual(publish("--dest", self.dest, SMALL, SMALL).returncode, 0)
+        for name in ("fig99_old.png", "ncu_notes.txt"):
+            self.write(os.path.join("dest", name), "earlier run")
+        done = publish("--dest", self.dest, SMALL)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertIn("replacing the results", done.stdout)
+        present = set(os.listdir(self.dest))
+        self.assertNotIn("bench_float.json", present, "a float file of the earlier run must not linger")
+        self.assertNotIn("fig99_old.png", present)
+        self.assertIn("ncu_notes.txt", present)
+
+    def test_bad_input_leaves_the_old_results_whole(self):
+        self.assertEqual(publish("--dest", self.dest, SMALL).returncode, 0)
+        before = sorted(os.listdir(self.dest))
+        for bad in (self.write("empty.json", ""), self.write("broken.json", "{not json"),
+                    os.path.join(self.tmp, "missing.json")):
+            done = publish("--dest", self.dest, bad)
+            self.assertNotEqual(done.returncode, 0, bad)
+            self.assertTrue(done.stderr.strip(), f"{bad}: no message")
+            self.assertEqual(sorted(os.listdir(self.dest)), before, bad)
+        with open(os.path.join(self.dest, "bench_smooth.json"), encoding="utf-8") as kept, \
+                open(SMALL, encoding="utf-8") as original:
+            self.assertEqual(json.load(kept), json.load(original))
+
+    def test_device_folder_names_the_whole_board(self):
+        with open(SMALL, encoding="utf-8") as handle:
+            result = json.load(handle)
+        # Without --dest the script writes under results/ of its own tree:
+        # run a copy of scripts/ and plots/, so the checkout's is never touched.
+        repo = os.path.join(self.tmp, "repo")
+        shutil.copytree(os.path.join(SOURCE_DIR, "scripts"), os.path.join(repo, "scripts"))
+        shutil.copytree(os.path.join(SOURCE_DIR, "plots"), os.path.join(repo, "plots"))
+        for gpu, folder in (("NVIDIA H100 80GB HBM3", "h100-80gb-hbm3"), ("NVIDIA H100 PCIe", "h100-pcie"),
+                            ("NVIDIA H200", "h200")):
+            result["context"]["gpu_name"] = gpu
+            path = self.write("named.json", json.dumps(result))
+            done = subprocess.run(["bash", os.path.join(repo, "scripts", "publish_results.sh"), path],
+                                  capture_output=True, text=True, timeout=300)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            self.assertTrue(os.path.isfile(os.path.join(repo, "results", folder, "tables.md")), gpu)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -4,7 +4,7 @@ Used by make_tables.py, make_figures.py, report.py and compare_results.py;
 it is a module, not a script:
 
     from bench_json import load_result
-    result = load_result("results/h100/bench.json")
+    result = load_result("results/h100/bench_smooth.json")
     result.time_ms("FormB/AoS/MultiBlock/109k")      # -> float or None
     result.counter("Serial/FormB/109k", "q_min_after")
 
@@ -18,10 +18,20 @@ What it does with the file (google/benchmark 1.7.x JSON, --benchmark_out):
   * repetitions: the "median" aggregate when present, else the mean of the
     per-repetition ("iteration") entries, else a "mean" aggregate.  The same
     choice applies to the counters.
+  * model labels: bench_smooth --models takes the paper's labels (5k, 10k,
+    59k, 77k, 109k) and also the generator names (slope-77k), and uses the
+    label as given in the benchmark names and the model_<label>_* context
+    keys.  Both spellings are mapped to the label in MODELS here, in one
+    place (canonical_model), so "Serial/FormB/slope-77k" is
+    "Serial/FormB/77k" for every script.  (A run that lists one model under
+    both spellings keeps the entries of the spelling met first.)
   * times are converted to milliseconds from the entry's time_unit.
   * entries that report an error (error_occurred / skipped) are left out and
     listed in `errors`; unknown fields are ignored; custom context values
     (written as strings by AddCustomContext) are parsed as numbers on request.
+  * an empty file (bench_smooth writes one when no benchmark was selected) and
+    a file with an empty "benchmarks" list raise BenchInputError, so every
+    script exits 2 with a message instead of a traceback or empty tables.
 """
 
 import json
@@ -31,6 +41,9 @@ import re
 from dataclasses import dataclass, field
 
 MODELS = ("5k", "10k", "59k", "77k", "109k")
+# Generator names that bench_smooth --models also accepts, by the label in
+# MODELS they stand for (generators/models.cpp: "slope-77k" is the 77k model).
+MODEL_ALIASES = {"slope-77k": "77k"}
 FORMS = ("FormA", "FormB")
 LAYOUTS = ("AoS", "SoA")
 STRATEGIES = ("SingleBlock", "MultiBlock", "Coloured")
@@ -42,6 +55,11 @@ ORDINARY_GPU = "Ordinary"
 COPY_BANDWIDTH = "Memory/CopyBandwidth"
 
 TIME_UNIT_TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
+
+# CPU families smooth in double whatever --precision says; gpu_precision in
+# the context is the GPU families' precision.
+CPU_PRECISION = "double"
+NO_BENCHMARK_HINT = "no benchmark ran? check --benchmark_filter/--models"
 
 _SUFFIX_SEGMENT = re.compile(
     r"^(manual_time|real_time|process_time|repeats:\d+|iterations:\d+|"
@@ -78,6 +96,37 @@ def entry_name(entry):
         if entry.get("run_type") == "aggregate" and aggregate and name.endswith("_" + aggregate):
             name = name[: -len(aggregate) - 1]
     return strip_name(name)
+
+
+def canonical_model(label):
+    """The MODELS label of a model, whichever spelling bench_smooth was given."""
+    return MODEL_ALIASES.get(label, label)
+
+
+def canonical_name(name):
+    """A stripped benchmark name with its mesh segment (the last) as in MODELS."""
+    head, _, mesh = name.rpartition("/")
+    return f"{head}/{canonical_model(mesh)}" if head else name
+
+
+def _canonical_context(context):
+    """The context with model_<alias>_* keys renamed to the MODELS label (first spelling wins)."""
+    renamed = {}
+    for key, value in context.items():
+        match = re.fullmatch(r"model_(.+)_(nodes|tets)", key)
+        if match:
+            key = f"model_{canonical_model(match.group(1))}_{match.group(2)}"
+        renamed.setdefault(key, value)
+    return renamed
+
+
+def cuda_version_text(value):
+    """CUDA's version integer (major*1000 + minor*10, e.g. 13000) as "13.0"; other text unchanged."""
+    text = str(value).strip()
+    if not text.isdigit() or int(text) < 1000:
+        return text
+    number = int(text)
+    return f"{number // 1000}.{(number % 1000) // 10}"
 
 
 def gpu_name(form, layout, strategy, mesh):
@@ -259,6 +308,23 @@ class BenchResult:
                 tets = tets if tets is not None else run.counters.get("tets")
         return nodes, tets
 
+    def gpu_precision(self):
+        """"float" or "double" (the GPU families'), or None when the context does not say."""
+        return self.context_text("gpu_precision")
+
+    def precision_tag(self):
+        """Short precision note for titles: "float", "double" or "precision not recorded"."""
+        return self.gpu_precision() or "precision not recorded"
+
+    def precision_text(self):
+        """One line saying in which precision the GPU and the CPU runs smoothed."""
+        precision = self.gpu_precision()
+        if not self.has_gpu_runs():
+            return f"{CPU_PRECISION} (CPU runs only)"
+        if precision is None:
+            return f"GPU runs: not recorded in the result's context (no gpu_precision); CPU runs {CPU_PRECISION}"
+        return f"GPU runs in {precision}, CPU runs in {CPU_PRECISION}"
+
     def device_label(self):
         """Short GPU name for legends and titles."""
         return self.context_text("gpu_name") or ("no GPU" if not self.has_gpu_runs() else "GPU")
@@ -277,7 +343,7 @@ class BenchResult:
             if sms:
                 extras.append(f"{int(sms)} SMs")
             if self.context_text("cuda_version"):
-                extras.append(f"CUDA {self.context_text('cuda_version')}")
+                extras.append(f"CUDA {cuda_version_text(self.context_text('cuda_version'))}")
             gpu_line = gpu + (f" ({', '.join(extras)})" if extras else "")
         else:
             gpu_line = "none in this run (CPU baselines only)"
@@ -287,6 +353,7 @@ class BenchResult:
         lines = [
             f"GPU: {gpu_line}",
             f"CPU: {cpu_line}",
+            f"precision: {self.precision_text()}",
             f"git SHA: {self.context_text('git_sha', 'unknown')}",
             f"date: {self.context_text('date', 'unknown')}",
             # Google Benchmark's own build as its library reports it (Debian's
@@ -302,12 +369,17 @@ def parse_result(document, path="<memory>"):
     """Build a BenchResult from an already parsed JSON document."""
     if not isinstance(document, dict) or not isinstance(document.get("benchmarks"), list):
         raise BenchInputError(f"{path}: not Google Benchmark JSON (no \"benchmarks\" list)")
+    if not document["benchmarks"]:
+        raise BenchInputError(f"{path}: the \"benchmarks\" list is empty: {NO_BENCHMARK_HINT}")
     context = document.get("context") if isinstance(document.get("context"), dict) else {}
-    groups, errors = {}, {}
+    groups, errors, spelling = {}, {}, {}
     for index, entry in enumerate(document["benchmarks"]):
         if not isinstance(entry, dict) or "name" not in entry:
             raise BenchInputError(f"{path}: benchmarks[{index}] has no name")
-        name = entry_name(entry)
+        written = entry_name(entry)
+        name = canonical_name(written)
+        if spelling.setdefault(name, written) != written:
+            continue  # the same model under its other spelling: the first one met is kept
         if _is_error(entry):
             errors[name] = str(entry.get("error_message") or entry.get("skip_message") or "error")
             continue
@@ -317,7 +389,7 @@ def parse_result(document, path="<memory>"):
         run = _reduce(name, entries)
         if run is not None:
             runs[name] = run
-    return BenchResult(path, context, runs, errors)
+    return BenchResult(path, _canonical_context(context), runs, errors)
 
 
 def load_result(path):
@@ -326,7 +398,10 @@ def load_result(path):
         raise BenchInputError(f"{path}: no such file")
     try:
         with open(path, encoding="utf-8") as handle:
-            document = json.load(handle)
+            text = handle.read()
+        if not text.strip():
+            raise BenchInputError(f"{path}: empty file: {NO_BENCHMARK_HINT}")
+        document = json.loads(text)
     except json.JSONDecodeError as error:
         raise BenchInputError(f"{path}: bad JSON at line {error.lineno}, column {error.colno}: {error.msg}") from error
     except (OSError, UnicodeDecodeError) as error:

@@ -15,9 +15,12 @@ Writes into OUTDIR (created if missing):
 Figures 9-12 have three rows: our times (top), the paper's published times
 from Tables 3-4 (middle, same y axis so the two devices compare directly) and
 a ratio row with both (ours solid, filled markers; paper dashed, hollow).
-Time axes are logarithmic where the values span more than a decade.  Models
-that were not run leave gaps; a panel with nothing measured says so.
-Exit status: 0 on success, 2 when the result file is missing or not benchmark JSON.
+A row's y axis is logarithmic when its values, over all the figure's panels,
+span more than a decade, so the panels of a row always share one scale; the
+axis label says "log scale" then.  Titles name the GPU precision of the run
+("float" or "double"; CPU runs are always double).  Models that were not run
+leave gaps; a panel with nothing measured says so.
+Exit status: 0 on success, 2 when the result file is missing, empty or not benchmark JSON.
 """
 
 import argparse
@@ -29,7 +32,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
-from matplotlib.ticker import FuncFormatter  # noqa: E402
+from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter  # noqa: E402
 
 import bench_json as bj  # noqa: E402
 import paper_numbers as paper  # noqa: E402
@@ -113,6 +116,27 @@ def finish(ax, title, ylabel, drawn, empty_text):
         ax.text(0.5, 0.5, empty_text, ha="center", va="center", transform=ax.transAxes, fontsize=9, color="gray")
 
 
+def row_scales(panels):
+    """(time rows, ratio row) y scales, each decided once over every panel.
+
+    Per-panel choices gave a figure with one ratio panel linear and its
+    neighbour logarithmic (a run with Form B only), which reads as if the
+    two were on the same scale.
+    """
+    time_values = [v for p in panels for s in p["ours"] + p["paper"] for v in s["values"]]
+    ratio_values = [v for p in panels for s in p["ratio"] for v in s["values"]]
+    return ("log" if span_is_wide(time_values) else "linear", "log" if span_is_wide(ratio_values) else "linear")
+
+
+def scale_label(label, scale):
+    return f"{label}, log scale" if scale == "log" else label
+
+
+def ours_label(result):
+    """Our device with the GPU precision, for titles: "NVIDIA H100 80GB HBM3 (float)"."""
+    return f"{result.device_label()} ({result.precision_tag()})"
+
+
 def comparison_figure(path, title, result, panels, ratio_label):
     """Three rows x len(panels) columns: our times, the paper's times, ratios.
 
@@ -120,23 +144,22 @@ def comparison_figure(path, title, result, panels, ratio_label):
     and "table" (the paper's table number the middle row comes from).
     """
     fig, axes = plt.subplots(3, len(panels), figsize=(6.2 * len(panels), 12), squeeze=False)
-    time_values = [v for p in panels for s in p["ours"] + p["paper"] for v in s["values"]]
-    log_time = span_is_wide(time_values)
-    device = result.device_label()
+    time_scale, ratio_scale = row_scales(panels)
+    device = ours_label(result)
     for column, panel in enumerate(panels):
         top, middle, bottom = axes[0][column], axes[1][column], axes[2][column]
-        finish(top, f"{panel['title']} - ours: {device}", "time (ms)", draw(top, panel["ours"]),
-               "not measured in this run")
-        finish(middle, f"{panel['title']} - paper: {paper.GPU} (Table {panel['table']})", "time (ms)",
-               draw(middle, panel["paper"]), "no published numbers")
+        finish(top, f"{panel['title']} - ours: {device}", scale_label("time (ms)", time_scale),
+               draw(top, panel["ours"]), "not measured in this run")
+        finish(middle, f"{panel['title']} - paper: {paper.GPU} (Table {panel['table']})",
+               scale_label("time (ms)", time_scale), draw(middle, panel["paper"]), "no published numbers")
         drawn = draw(bottom, panel["ratio"])
         bottom.axhline(1.0, color="black", linewidth=0.8, alpha=0.6)
-        finish(bottom, f"{panel['title']} - {ratio_label}", "ratio", drawn, "nothing to compare")
+        finish(bottom, f"{panel['title']} - {ratio_label}", scale_label("ratio", ratio_scale), drawn,
+               "nothing to compare")
         for ax in (top, middle):
-            if log_time:
-                ax.set_yscale("log")
-        if span_is_wide([v for s in panel["ratio"] for v in s["values"]]):
-            bottom.set_yscale("log")
+            ax.set_yscale(time_scale)
+        bottom.set_yscale(ratio_scale)
+        if ratio_scale == "log":
             bottom.yaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
     share_y(list(axes[0]) + list(axes[1]))
     fig.suptitle(f"{title}\nours: {device}, git {result.context_text('git_sha', 'unknown')}; "
@@ -315,6 +338,18 @@ def pick_quality_model(result, wanted):
     return None
 
 
+def log_ticks(ax):
+    """Label 1, 2 and 5 times each power of ten on a log y axis.
+
+    Counts of the paper models' bins lie within about one decade, where the
+    default locator labels a single power of ten and the axis cannot be read.
+    """
+    ax.yaxis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0)))
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:,.0f}"))
+    ax.yaxis.set_minor_formatter(NullFormatter())
+    ax.tick_params(axis="y", labelsize=8)
+
+
 def draw_histogram(ax, counts, reference, title, paper_note):
     centres = [(i + 0.5) / HIST_BINS for i in range(HIST_BINS)]
     width = 0.9 / HIST_BINS
@@ -328,6 +363,7 @@ def draw_histogram(ax, counts, reference, title, paper_note):
                 where="pre", color="black", linewidth=1, label="input (outline)")
     if counts is not None:
         ax.set_yscale("log")
+        log_ticks(ax)
         ax.legend(fontsize=7, loc="upper left")
     ax.set_xlim(0, 1)
     ax.set_xlabel("radius ratio q (1 = regular)", fontsize=8)
@@ -355,7 +391,7 @@ def fig13_quality(result, outdir, wanted_model):
     draw_histogram(axes[2], adaptive, before,
                    f"(c) adaptive Laplacian (Form B){mean_q(result, f'Serial/FormB/{model}', 'q_mean_after')}",
                    PAPER_NEAR_ZERO["adaptive"])
-    fig.suptitle(f"Figure 13: quality distribution, model {model} (serial CPU runs; "
+    fig.suptitle(f"Figure 13: quality distribution, model {model} (serial CPU runs, {bj.CPU_PRECISION}; "
                  f"{result.cpu_label()}, git {result.context_text('git_sha', 'unknown')})", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 0.93))
     path = os.path.join(outdir, "fig13_quality.png")
@@ -379,7 +415,7 @@ def parse_args(argv):
     parser = argparse.ArgumentParser(description="Figures 9-13 of the paper from a bench_smooth result.")
     parser.add_argument("result", help="bench_smooth --benchmark_out JSON")
     parser.add_argument("outdir", help="folder for the PNG files")
-    parser.add_argument("--quality-model", default="109k", choices=bj.MODELS,
+    parser.add_argument("--quality-model", default="109k", choices=bj.MODELS, type=bj.canonical_model,
                         help="model whose histograms Figure 13 shows (default 109k)")
     parser.add_argument("--metric", default="real_time", choices=("real_time", "cpu_time"),
                         help="which time to plot (default real_time)")

@@ -5,7 +5,7 @@ Usage:
     /usr/bin/python3 plots/make_tables.py RESULT.json OUTDIR [--metric real_time]
 
 Writes into OUTDIR (created if missing):
-    tables.md     all tables in Markdown, headed by the device, host and git SHA
+    tables.md     all tables in Markdown, headed by the device, host, precision and git SHA
     table3.csv    running time (ms), Form A: ours and the paper's Table 3
     table4.csv    running time (ms), Form B: ours and the paper's Table 4
     table5.csv    speedup over our serial CPU and over Threads, Form A; paper's Table 5
@@ -20,7 +20,7 @@ in Markdown.  Times are the chosen metric (default real_time, which is the
 CUDA-event time for GPU families) in ms: the median aggregate when the run has
 repetitions, else the mean of the iterations.  Speedup = our serial CPU time
 over the variant's time, as the paper defines it.  Exit status: 0 on success,
-2 when the result file is missing or not benchmark JSON.
+2 when the result file is missing, empty or not benchmark JSON.
 """
 
 import argparse
@@ -66,6 +66,11 @@ def fmt_sig(value, digits=4):
 
 def fmt_fixed(decimals):
     return lambda v: DASH if v is None else f"{v:,.{decimals}f}"
+
+
+def fmt_general(digits):
+    """Significant digits that keep tiny values visible: 4.611e-08 rather than 0.0000."""
+    return lambda v: DASH if v is None else f"{v:.{digits}g}"
 
 
 def fmt_int(value):
@@ -229,7 +234,9 @@ def speedup_table(result, form, metric):
 
 QUALITY_COLUMNS = ([Column("benchmark", "Benchmark", fmt_text), Column("sweeps", "Sweeps", fmt_int),
                     Column("accepted", "Accepted", fmt_int)]
-                   + [Column(k, k.replace("_", " "), fmt_fixed(4)) for k in QUALITY_KEYS[2:6]]
+                   # q min of the paper models' inputs is about 5e-8, which fixed decimals show as 0.0000.
+                   + [Column(k, k.replace("_", " "), fmt_general(4)) for k in QUALITY_KEYS[2:4]]
+                   + [Column(k, k.replace("_", " "), fmt_fixed(4)) for k in QUALITY_KEYS[4:6]]
                    + [Column(k, k.replace("_", " "), fmt_int) for k in QUALITY_KEYS[6:]])
 
 SCALING_COLUMNS = [Column("benchmark", "Benchmark", fmt_text), Column("nodes", "Nodes", fmt_int),
@@ -366,7 +373,8 @@ def runs_table(result, metric):
 # ---------------------------------------------------------------- output
 
 def header_markdown(result, metric):
-    lines = ["# tetsmooth results beside the paper", ""]
+    # The precision is in the title line: float and double runs give different tables.
+    lines = [f"# tetsmooth results beside the paper ({result.precision_text()})", ""]
     lines += [f"- {line}" for line in result.describe()]
     lines += [f"- result file: `{os.path.basename(result.path)}`; times: {metric}, median of repetitions "
               "where present, else the mean of iterations",

@@ -5,6 +5,11 @@ Run: /usr/bin/python3 tests/python/test_compare.py   (CTest sets TETSMOOTH_SOURC
 tests/data/bench_small_slower.json is bench_small.json with two benchmarks
 slowed down: FormB/AoS/MultiBlock/5k by 1.5x and FormB/SoA/MultiBlock/109k by
 1.2x (their rates divided by the same factors); everything else is identical.
+Both fixtures hold one benchmark reported as an error (Threads/FormA/109k),
+which fails the check; the timing tests use copies without it (CLEAN_BASE,
+CLEAN_SLOWER) and the error tests use the fixtures as they are.  Other cases
+(missing benchmarks, precisions, hosts, empty files) are small synthetic
+results written by write_result().
 """
 
 import csv
@@ -24,10 +29,56 @@ DATA = os.path.join(SOURCE_DIR, "tests", "data")
 BASE = os.path.join(DATA, "bench_small.json")
 SLOWER = os.path.join(DATA, "bench_small_slower.json")
 SLOWED = {"FormB/AoS/MultiBlock/5k": 1.5, "FormB/SoA/MultiBlock/109k": 1.2}
+ERRORED = "Threads/FormA/109k"
+ERROR_MESSAGE = "skipped: --skip-slow-cpu was given"
 sys.path.insert(0, PLOTS)
 
 import bench_json as bj  # noqa: E402
 import compare_results  # noqa: E402
+
+
+FOLDER = tempfile.TemporaryDirectory()
+CLEAN_BASE = os.path.join(FOLDER.name, "bench_small_clean.json")
+CLEAN_SLOWER = os.path.join(FOLDER.name, "bench_small_slower_clean.json")
+
+
+def copy_without_errors(source, target):
+    """A fixture without its errored entry, so that only the timings decide the verdict."""
+    with open(source, encoding="utf-8") as handle:
+        document = json.load(handle)
+    document["benchmarks"] = [e for e in document["benchmarks"] if not e.get("error_occurred")]
+    with open(target, "w", encoding="utf-8") as handle:
+        json.dump(document, handle)
+
+
+def setUpModule():
+    copy_without_errors(BASE, CLEAN_BASE)
+    copy_without_errors(SLOWER, CLEAN_SLOWER)
+
+
+def tearDownModule():
+    FOLDER.cleanup()
+
+
+def bench(name, time=None, error=None):
+    """One iteration entry in ms, or an errored one when error is a message."""
+    item = {"name": name + "/manual_time", "run_name": name + "/manual_time", "run_type": "iteration",
+            "iterations": 1, "real_time": time or 0.0, "cpu_time": time or 0.0, "time_unit": "ms"}
+    if error:
+        item.update(error_occurred=True, error_message=error)
+    return item
+
+
+GPU_CONTEXT = {"gpu_name": "NVIDIA H100 80GB HBM3", "gpu_precision": "double", "host_name": "vm", "num_cpus": 16}
+
+
+def write_result(folder, stem, benchmarks, **context):
+    """A result file with GPU_CONTEXT updated by context (a value of None drops the key)."""
+    merged = dict(GPU_CONTEXT, **context)
+    path = os.path.join(folder, stem + ".json")
+    with open(path, "w", encoding="utf-8") as handle:
+        json.dump({"context": {k: v for k, v in merged.items() if v is not None}, "benchmarks": benchmarks}, handle)
+    return path
 
 
 def compare(*args):
@@ -47,13 +98,13 @@ def gbench_available():
 
 class ExitStatusTests(unittest.TestCase):
     def test_identical_files_pass(self):
-        completed = compare(BASE, BASE)
+        completed = compare(CLEAN_BASE, CLEAN_BASE)
         self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
         self.assertIn("OK: within thresholds", completed.stdout)
         self.assertEqual(printed_geomean(completed.stdout)[0], 1.0)
 
     def test_slower_file_fails(self):
-        completed = compare(BASE, SLOWER)
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER)
         self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
         self.assertIn("REGRESSION", completed.stdout)
         for name in SLOWED:
@@ -61,38 +112,140 @@ class ExitStatusTests(unittest.TestCase):
         self.assertNotRegex(completed.stdout, r"FormB/AoS/MultiBlock/109k\s.*SLOWER")
 
     def test_geomean_is_over_common_benchmarks(self):
-        geomean, count = printed_geomean(compare(BASE, SLOWER).stdout)
+        geomean, count = printed_geomean(compare(CLEAN_BASE, CLEAN_SLOWER).stdout)
         expected = math.exp(sum(math.log(f) for f in SLOWED.values()) / count)
         self.assertAlmostEqual(geomean, expected, places=3)
-        self.assertEqual(count, len(bj.load_result(BASE).runs))
+        self.assertEqual(count, len(bj.load_result(CLEAN_BASE).runs))
 
     def test_thresholds_are_separate_options(self):
         # Geomean ~1.026: within 10 % once the per-benchmark check is off ...
-        self.assertEqual(compare(BASE, SLOWER, "--per-benchmark-threshold", "off").returncode, 0)
+        self.assertEqual(compare(CLEAN_BASE, CLEAN_SLOWER, "--per-benchmark-threshold", "off").returncode, 0)
         # ... and beyond 2 %.
-        completed = compare(BASE, SLOWER, "--per-benchmark-threshold", "off", "--geomean-threshold", "0.02")
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, "--per-benchmark-threshold", "off",
+                            "--geomean-threshold", "0.02")
         self.assertEqual(completed.returncode, 1)
         self.assertIn("geometric mean of ratios", completed.stdout)
         # Per benchmark only: 1.5 is beyond 1.3, 1.2 is not.
-        completed = compare(BASE, SLOWER, "--geomean-threshold", "off", "--per-benchmark-threshold", "0.3")
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, "--geomean-threshold", "off",
+                            "--per-benchmark-threshold", "0.3")
         self.assertEqual(completed.returncode, 1)
         self.assertIn("1 benchmark(s) slower", completed.stdout)
-        self.assertEqual(compare(BASE, SLOWER, "--threshold", "0.6").returncode, 0)
-        self.assertEqual(compare(BASE, SLOWER, "--threshold", "off").returncode, 0)
+        self.assertEqual(compare(CLEAN_BASE, CLEAN_SLOWER, "--threshold", "0.6").returncode, 0)
+        self.assertEqual(compare(CLEAN_BASE, CLEAN_SLOWER, "--threshold", "off").returncode, 0)
 
     def test_faster_new_result_passes(self):
-        self.assertEqual(compare(SLOWER, BASE).returncode, 0)
+        self.assertEqual(compare(CLEAN_SLOWER, CLEAN_BASE).returncode, 0)
 
     def test_rate_metric_is_higher_is_better(self):
-        completed = compare(BASE, SLOWER, "--metric", "bytes_per_s")
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, "--metric", "bytes_per_s")
         self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
         self.assertIn("higher is better", completed.stdout)
-        self.assertEqual(compare(SLOWER, BASE, "--metric", "bytes_per_s").returncode, 0)
+        self.assertEqual(compare(CLEAN_SLOWER, CLEAN_BASE, "--metric", "bytes_per_s").returncode, 0)
 
     def test_filter(self):
-        completed = compare(BASE, SLOWER, "--filter", "^Serial/")
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, "--filter", "^Serial/")
         self.assertEqual(completed.returncode, 0)
         self.assertNotIn("FormB/AoS/MultiBlock/5k", completed.stdout)
+
+
+class ErrorAndMissingTests(unittest.TestCase):
+    """Benchmarks that errored or disappeared cannot be tracked: they must not pass silently."""
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.addCleanup(self.folder.cleanup)
+
+    def result(self, stem, benchmarks, **context):
+        return write_result(self.folder.name, stem, benchmarks, **context)
+
+    def test_error_in_new_fails_and_is_printed(self):
+        completed = compare(BASE, BASE)  # the fixture's errored benchmark is in NEW too
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn(f"errored in NEW (not compared): {ERRORED}: {ERROR_MESSAGE}", completed.stdout)
+        self.assertRegex(completed.stdout, r"REGRESSION: 1 benchmark\(s\) errored in NEW: " + re.escape(ERRORED))
+        self.assertNotIn("only in OLD", completed.stdout)  # reported once, as errored
+        # --filter selects the errors too.
+        completed = compare(BASE, BASE, "--filter", "^Form")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertNotIn(ERRORED, completed.stdout)
+
+    def test_error_in_new_of_a_measured_benchmark(self):
+        old = self.result("old", [bench("Serial/FormB/5k", 10.0), bench("Serial/FormA/5k", 20.0)])
+        new = self.result("new", [bench("Serial/FormB/5k", 10.0), bench("Serial/FormA/5k", error="CUDA error")])
+        completed = compare(old, new)
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn("Serial/FormA/5k: CUDA error", completed.stdout)
+        # Every benchmark of NEW errored: still a regression (1), not bad input (2).
+        new = self.result("new", [bench("Serial/FormB/5k", error="out of memory")])
+        completed = compare(old, new, "--filter", "FormB")
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn("out of memory", completed.stdout)
+
+    def test_error_only_in_old_is_a_note(self):
+        completed = compare(BASE, CLEAN_BASE)
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn(f"errored in OLD (not compared): {ERRORED}: {ERROR_MESSAGE}", completed.stdout)
+
+    def test_missing_from_new_fails_unless_allowed(self):
+        old = self.result("old", [bench("Serial/FormB/5k", 10.0), bench("FormB/AoS/MultiBlock/5k", 1.0)])
+        new = self.result("new", [bench("Serial/FormB/5k", 10.0)])
+        completed = compare(old, new)
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn("missing from NEW", completed.stdout)
+        self.assertIn("FormB/AoS/MultiBlock/5k", completed.stdout)
+        completed = compare(old, new, "--allow-missing")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertRegex(completed.stdout, r"warning: 1 benchmark\(s\) of OLD missing from NEW \(allowed\)")
+        self.assertEqual(compare(old, new, "--filter", "^Serial/").returncode, 0)
+        # The other way round the extra benchmark is only listed.
+        completed = compare(new, old)
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn("only in NEW (not compared): FormB/AoS/MultiBlock/5k", completed.stdout)
+
+    def test_model_aliases_match(self):
+        # bench_smooth --models=slope-77k names the 77k model by its generator name.
+        old = self.result("old", [bench("FormB/AoS/MultiBlock/77k", 2.0)])
+        new = self.result("new", [bench("FormB/AoS/MultiBlock/slope-77k", 3.0)])
+        completed = compare(old, new, "--threshold", "off")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertEqual(printed_geomean(completed.stdout), (1.5, 1))
+
+
+class ContextTests(unittest.TestCase):
+    """What the two files are: GPU precision, host and CPU count."""
+
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.addCleanup(self.folder.cleanup)
+        self.benchmarks = [bench("Serial/FormB/5k", 10.0), bench("FormB/AoS/MultiBlock/5k", 1.0)]
+        self.old = write_result(self.folder.name, "old", self.benchmarks)
+
+    def new(self, **context):
+        return write_result(self.folder.name, "new", self.benchmarks, **context)
+
+    def test_precision_mismatch_is_bad_input(self):
+        new = self.new(gpu_precision="float")
+        completed = compare(self.old, new)
+        self.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+        for expected in ("double", "float", "--allow-precision-mismatch"):
+            self.assertIn(expected, completed.stderr)
+        completed = compare(self.old, new, "--allow-precision-mismatch")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn("warning: OLD ran the GPU families in double, NEW in float", completed.stdout)
+        # CPU families run in double in both files: nothing to stop.
+        self.assertEqual(compare(self.old, new, "--filter", "^Serial/").returncode, 0)
+
+    def test_unrecorded_precision_is_a_warning(self):
+        completed = compare(self.old, self.new(gpu_precision=None))
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn("GPU precision not recorded", completed.stdout)
+
+    def test_different_host_or_cpu_count_warns(self):
+        for context in ({"host_name": "other"}, {"num_cpus": 64}):
+            completed = compare(self.old, self.new(**context))
+            self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+            self.assertIn("CPU baselines compare machines", completed.stdout, context)
+        self.assertNotIn("warning", compare(self.old, self.new()).stdout)
 
 
 class BadInputTests(unittest.TestCase):
@@ -110,6 +263,20 @@ class BadInputTests(unittest.TestCase):
                 completed = compare(path, BASE)
                 self.assertEqual(completed.returncode, 2, text)
                 self.assertIn("bad.json", completed.stderr)
+
+    def test_empty_file_and_empty_benchmark_list(self):
+        # bench_smooth writes a 0-byte file when --benchmark_filter/--models select nothing.
+        with tempfile.TemporaryDirectory() as folder:
+            empty = os.path.join(folder, "empty.json")
+            open(empty, "w", encoding="utf-8").close()
+            no_benchmarks = write_result(folder, "none", [])
+            for path in (empty, no_benchmarks):
+                for args in ((path, BASE), (BASE, path)):
+                    completed = compare(*args)
+                    self.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+                    self.assertIn(path, completed.stderr)
+                    self.assertIn("no benchmark ran?", completed.stderr)
+                    self.assertNotIn("Traceback", completed.stderr)
 
     def test_nothing_in_common_and_bad_options(self):
         self.assertEqual(compare(BASE, SLOWER, "--filter", "^NoSuchFamily").returncode, 2)

@@ -6,7 +6,9 @@ The fixture tests/data/bench_small.json is a hand-made google/benchmark 1.7.1
 result with the quirks of real runs: /repeats:N, /iterations:N, /min_time:X
 and /manual_time suffixes, repetitions with median/mean/stddev/cv aggregates,
 a benchmark reported as an error, a time unit of "us", custom context values
-as strings, two models (5k, 109k) and two lattices.
+as strings, two models (5k, 109k) and two lattices.  Other cases (the
+slope-77k spelling, float runs, CUDA's integer version, tiny q, empty files)
+are small synthetic results written by write_result().
 """
 
 import csv
@@ -17,6 +19,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+from unittest import mock
 
 SOURCE_DIR = os.environ.get("TETSMOOTH_SOURCE_DIR") or os.path.dirname(
     os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -66,6 +69,47 @@ def entry(name, real_time, unit="ms", run_type="iteration", aggregate=None, run_
     return item
 
 
+def write_result(folder, document, stem="result"):
+    path = os.path.join(folder, stem + ".json")
+    with open(path, "w", encoding="utf-8") as handle:
+        json.dump(document, handle)
+    return path
+
+
+def histogram_counters(prefix, counts):
+    return {f"{prefix}_{i}": c for i, c in enumerate(counts)}
+
+
+# Bin counts within about one decade, as the paper models' are.
+HIST_INPUT = [18288, 31000, 52000, 75000, 100000, 118000, 122000, 108000, 72000, 21000]
+HIST_AFTER = [12448, 28000, 50000, 68000, 88000, 108000, 121000, 117000, 91000, 30000]
+
+
+def float_document():
+    """A float run of Form B on the 109k model only, with the context bench_smooth writes."""
+    context = {"gpu_name": "NVIDIA H100 80GB HBM3", "gpu_precision": "float", "cuda_version": "13000",
+               "sm_count": "132", "host_name": "vm", "num_cpus": 16, "git_sha": "abc123"}
+    quality = dict(q_min_before=4.611063343546083e-08, q_min_after=0.0, q_mean_before=0.55, q_mean_after=0.58)
+    return {"context": context, "benchmarks": [
+        entry("Serial/FormB/109k/manual_time", 4000.0, sweeps=8, **quality,
+              **histogram_counters("hist_before", HIST_INPUT), **histogram_counters("hist_after", HIST_AFTER)),
+        entry("Serial/Ordinary/109k/manual_time", 3000.0, sweeps=100, **quality,
+              **histogram_counters("hist_before", HIST_INPUT), **histogram_counters("hist_after", HIST_AFTER)),
+        entry("FormB/AoS/MultiBlock/109k/manual_time", 2.0, sweeps=8, **quality),
+        entry("FormB/SoA/MultiBlock/109k/manual_time", 2.5, sweeps=8, **quality)]}
+
+
+def figures_drawn(draw):
+    """Run draw() with plt.close patched out; returns the figures it closed, still open, in order."""
+    import make_figures
+    from matplotlib.figure import Figure
+    closed = []
+    with mock.patch.object(make_figures.plt, "close", side_effect=closed.append):
+        draw()
+    # pyplot may close("all") when it first picks its backend; only figures count.
+    return [f for f in closed if isinstance(f, Figure)]
+
+
 class NameTests(unittest.TestCase):
     def test_suffixes_are_stripped(self):
         cases = {
@@ -96,6 +140,28 @@ class NameTests(unittest.TestCase):
         self.assertEqual(bj.parse_name("Threads/FormA/5k")["kind"], "threads")
         self.assertEqual(bj.parse_name("Memory/CopyBandwidth")["kind"], "copy")
         self.assertEqual(bj.parse_name("FormC/AoS/MultiBlock/5k")["kind"], "other")
+
+    def test_model_aliases(self):
+        # bench_smooth --models=slope-77k puts the generator's name in the benchmark names and context.
+        self.assertEqual(bj.canonical_model("slope-77k"), "77k")
+        self.assertEqual(bj.canonical_model("lattice-64"), "lattice-64")
+        self.assertEqual(bj.canonical_name("FormB/AoS/MultiBlock/slope-77k"), "FormB/AoS/MultiBlock/77k")
+        self.assertEqual(bj.canonical_name("Memory/CopyBandwidth"), "Memory/CopyBandwidth")
+        document = {"context": {"model_slope-77k_nodes": "76850", "model_slope-77k_tets": "389359"},
+                    "benchmarks": [entry("Serial/FormB/slope-77k/manual_time", 1800.0),
+                                   entry("FormB/AoS/MultiBlock/slope-77k/manual_time", 1.5),
+                                   entry("Threads/FormB/slope-77k/manual_time", 1.0, error_occurred=True,
+                                         error_message="failed")]}
+        result = bj.parse_result(document)
+        self.assertAlmostEqual(result.time_ms("Serial/FormB/77k"), 1800.0)
+        self.assertAlmostEqual(result.time_ms("FormB/AoS/MultiBlock/77k"), 1.5)
+        self.assertIn("Threads/FormB/77k", result.errors)
+        self.assertEqual(result.mesh_size("77k"), (76850, 389359))
+
+    def test_cuda_version_text(self):
+        self.assertEqual(bj.cuda_version_text("13000"), "13.0")
+        self.assertEqual(bj.cuda_version_text(12040), "12.4")
+        self.assertEqual(bj.cuda_version_text("13.0"), "13.0")
 
 
 class LoaderTests(unittest.TestCase):
@@ -157,6 +223,29 @@ class LoaderTests(unittest.TestCase):
                 with self.assertRaises(bj.BenchInputError) as caught:
                     bj.load_result(path)
                 self.assertIn(path, str(caught.exception))
+
+    def test_empty_file_and_no_benchmarks(self):
+        # bench_smooth writes a 0-byte file when nothing was selected.
+        with tempfile.TemporaryDirectory() as folder:
+            paths = [os.path.join(folder, "empty.json"), os.path.join(folder, "blank.json"),
+                     write_result(folder, {"context": {}, "benchmarks": []}, "none")]
+            open(paths[0], "w", encoding="utf-8").close()
+            with open(paths[1], "w", encoding="utf-8") as handle:
+                handle.write("\n  \n")
+            for path in paths:
+                with self.assertRaises(bj.BenchInputError) as caught:
+                    bj.load_result(path)
+                self.assertIn(path, str(caught.exception))
+                self.assertIn("check --benchmark_filter/--models", str(caught.exception))
+            self.assertIn("empty file", str(self.load_error(paths[0])))
+
+    @staticmethod
+    def load_error(path):
+        try:
+            bj.load_result(path)
+        except bj.BenchInputError as error:
+            return error
+        return None
 
 
 class PaperNumberTests(unittest.TestCase):
@@ -299,6 +388,21 @@ class ReportTests(unittest.TestCase):
                          "paper: NVIDIA Quadro P6000", "Table 3", "Table 6", "22.620", "—",
                          "Threads/FormA/109k: not measured"):
             self.assertIn(expected, text)
+        # The fixture predates gpu_precision: the header says so rather than guess.
+        self.assertIn("not recorded", text.splitlines()[0])
+
+    def test_report_docstring_lists_every_file(self):
+        import report
+        for name in sorted(os.listdir(self.out)):
+            self.assertIn(name, report.__doc__)
+
+    def test_docstrings_cite_existing_results(self):
+        import re
+        for script in sorted(os.listdir(PLOTS)):
+            if script.endswith(".py"):
+                with open(os.path.join(PLOTS, script), encoding="utf-8") as handle:
+                    for cited in re.findall(r"results/h100/[\w.]+\.json", handle.read()):
+                        self.assertTrue(os.path.isfile(os.path.join(SOURCE_DIR, cited)), f"{script}: {cited}")
 
     def test_figures_are_real_pngs(self):
         import matplotlib
@@ -314,6 +418,81 @@ class ReportTests(unittest.TestCase):
             self.assertGreater(float(pixels.std()), 0.01, f"{name} looks blank")
 
 
+class PrecisionAndFormattingTests(unittest.TestCase):
+    """A float run, CUDA's version integer and tiny q values, as bench_smooth writes them."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = tempfile.TemporaryDirectory()
+        cls.path = write_result(cls.folder.name, float_document(), "bench_float")
+        cls.result = bj.load_result(cls.path)
+        cls.completed = run_script("report.py", cls.path, cls.folder.name)
+        with open(os.path.join(cls.folder.name, "tables.md"), encoding="utf-8") as handle:
+            cls.markdown = handle.read()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.folder.cleanup()
+
+    def test_tables_state_precision_and_cuda_version(self):
+        self.assertEqual(self.completed.returncode, 0, self.completed.stderr)
+        self.assertIn("float", self.markdown.splitlines()[0])
+        self.assertIn("CUDA 13.0", self.markdown)
+        self.assertNotIn("13000", self.markdown)
+
+    def test_report_prints_precision(self):
+        self.assertIn("precision: GPU runs in float", self.completed.stdout)
+
+    def test_figure_titles_state_precision(self):
+        import make_figures
+        with tempfile.TemporaryDirectory() as out:
+            figures = figures_drawn(lambda: make_figures.write_figures(self.result, out))
+        try:
+            self.assertEqual(len(figures), 5)
+            for figure in figures[:4]:
+                self.assertIn("(float)", figure._suptitle.get_text())
+                self.assertIn("(float)", figure.axes[0].get_title())
+            self.assertIn("double", figures[4]._suptitle.get_text())  # serial CPU runs
+        finally:
+            for figure in figures:
+                make_figures.plt.close(figure)
+
+    def test_tiny_q_min_is_visible(self):
+        line = next(l for l in self.markdown.splitlines() if l.startswith("| Serial/FormB/109k |"))
+        self.assertIn("| 4.611e-08 | 0 |", line)
+        self.assertNotIn("0.0000", line)
+
+    def test_ratio_row_has_one_scale(self):
+        # Form A has only the paper's ratios (narrow span), Form B ours too (serial / GPU ~2000):
+        # both ratio panels must still share one scale.
+        import make_figures
+        with tempfile.TemporaryDirectory() as out:
+            figures = figures_drawn(lambda: make_figures.fig11_cpu_gpu(self.result, out, "real_time"))
+        try:
+            axes = figures[0].axes
+            self.assertEqual(len(axes), 6)
+            self.assertEqual({ax.get_yscale() for ax in axes[4:]}, {"log"})
+            self.assertEqual(len({ax.get_yscale() for ax in axes[:4]}), 1)
+            self.assertIn("log scale", axes[4].get_ylabel())
+        finally:
+            make_figures.plt.close(figures[0])
+
+    def test_histogram_axis_has_several_ticks(self):
+        import make_figures
+        with tempfile.TemporaryDirectory() as out:
+            figures = figures_drawn(lambda: make_figures.fig13_quality(self.result, out, "109k"))
+        try:
+            figure = figures[0]
+            figure.canvas.draw()
+            ax = figure.axes[0]
+            low, high = ax.get_ylim()
+            labelled = [t for t in ax.yaxis.get_major_ticks()
+                        if low <= t.get_loc() <= high and t.label1.get_visible() and t.label1.get_text()]
+            self.assertGreaterEqual(len(labelled), 3, [t.label1.get_text() for t in labelled])
+        finally:
+            make_figures.plt.close(figures[0])
+
+
 class OptionAndEdgeTests(unittest.TestCase):
     def test_missing_result_exits_2(self):
         with tempfile.TemporaryDirectory() as out:
@@ -322,6 +501,36 @@ class OptionAndEdgeTests(unittest.TestCase):
                 self.assertEqual(completed.returncode, 2, script)
                 self.assertIn("no such file", completed.stderr)
             self.assertFalse(os.path.exists(os.path.join(out, "x")))
+
+    def test_empty_result_exits_2(self):
+        with tempfile.TemporaryDirectory() as out:
+            empty = os.path.join(out, "empty.json")
+            open(empty, "w", encoding="utf-8").close()
+            for script in ("report.py", "make_tables.py", "make_figures.py"):
+                completed = run_script(script, empty, os.path.join(out, "x"))
+                self.assertEqual(completed.returncode, 2, script)
+                self.assertIn(f"{empty}: empty file", completed.stderr)
+                self.assertNotIn("Traceback", completed.stderr)
+            self.assertFalse(os.path.exists(os.path.join(out, "x")))
+
+    def test_slope_77k_run_fills_the_tables(self):
+        document = raw_fixture()
+        for item in document["benchmarks"]:
+            for key in ("name", "run_name"):
+                if key in item:
+                    item[key] = item[key].replace("/109k", "/slope-77k")
+        context = document["context"]
+        for suffix in ("nodes", "tets"):
+            context[f"model_slope-77k_{suffix}"] = context.pop(f"model_109k_{suffix}")
+        with tempfile.TemporaryDirectory() as out:
+            path = write_result(out, document, "slope")
+            completed = run_script("report.py", path, out, "--quality-model", "slope-77k")
+            self.assertEqual(completed.returncode, 0, completed.stderr)
+            rows = {r["model"]: r for r in read_csv(os.path.join(out, "table4.csv"))}
+            self.assertNotEqual(rows["77k"]["aos_multi_ms"], "")
+            self.assertNotEqual(rows["77k"]["cpu_serial_ms"], "")
+            self.assertEqual(rows["77k"]["nodes"], "109260")
+            self.assertNotIn("no histograms for 77k", completed.stderr)
 
     def test_cpu_only_result(self):
         document = raw_fixture()

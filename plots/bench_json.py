@@ -4,7 +4,7 @@ Used by make_tables.py, make_figures.py, report.py and compare_results.py;
 it is a module, not a script:
 
     from bench_json import load_result
-    result = load_result("results/h100/bench_smooth.json")
+    result = load_result("results/h100-80gb-hbm3/bench_smooth.json")
     result.time_ms("FormB/AoS/MultiBlock/109k")      # -> float or None
     result.counter("Serial/FormB/109k", "q_min_after")
 

@@ -57,7 +57,7 @@ or one missing from NEW (without --allow-missing), 2 = bad input (missing,
 empty or bad JSON, no benchmark in common, different precisions, bad option).
 
 Examples:
-    compare_results.py results/h100/bench_smooth.json new.json               # 10 % on each and on the geomean
+    compare_results.py results/h100-80gb-hbm3/bench_smooth.json new.json               # 10 % on each and on the geomean
     compare_results.py old.json new.json --per-benchmark-threshold off --geomean-threshold 0.05
     compare_results.py old.json new.json --filter '^Form[AB]/' --metric ms_per_sweep
     compare_results.py old.json new.json --filter '^(?!.*/5k$)' --allow-missing   # without the noisy 5k runs

@@ -12,7 +12,7 @@ It prints the precision of the run first (float and double runs of
 bench_smooth give files of the same names), then the files written.  This is the step the study script calls after
 bench_smooth, e.g.
 
-    /usr/bin/python3 plots/report.py results/h100/bench_smooth.json results/h100
+    /usr/bin/python3 plots/report.py results/h100-80gb-hbm3/bench_smooth.json results/h100-80gb-hbm3
 
 Exit status: 0 on success, 2 when the result file is missing, empty or not
 benchmark JSON (nothing is written then).

@@ -15,12 +15,17 @@ struct PassThroughBlock {
   std::vector<std::int32_t> connectivity;  // 0-based node indices
   std::vector<int> tags;       // per element: physical/region tag, or empty
   std::vector<int> entity_tags;  // per element: geometric entity tag (Gmsh), or empty
+  std::vector<long long> element_tags;  // per element: the file's element id (Gmsh), or empty
 };
 
 struct FileExtras {
   std::vector<long long> node_tags;   // original node ids (sparse Gmsh tags), or empty
   std::vector<int> tet_tags;          // per tet: physical/region attribute, or empty
   std::vector<int> tet_entity_tags;   // per tet: geometric entity tag (Gmsh), or empty
+  // Per tet: the file's element id (Gmsh element tag), or empty. Written back
+  // when every element has one and they are positive and distinct, so that
+  // ids a simulation deck refers to survive a round trip.
+  std::vector<long long> tet_element_tags;
   std::vector<PassThroughBlock> blocks;
   // Format sections reproduced verbatim on write (e.g. "$Entities", "$PhysicalNames"
   // bodies for Gmsh), keyed by section name.

@@ -42,6 +42,7 @@ void check_shapes(const TetMesh& mesh, const std::string& source) {
                      " values, expected " + std::to_string(attrs) + " per node");
   per_tet(mesh.extras.tet_tags.size(), "the tet tag array");
   per_tet(mesh.extras.tet_entity_tags.size(), "the tet entity tag array");
+  per_tet(mesh.extras.tet_element_tags.size(), "the tet element tag array");
 }
 
 void check_coordinates(const TetMesh& mesh, const std::string& source) {
@@ -67,7 +68,8 @@ void check_blocks(const TetMesh& mesh, const std::string& source) {
                        " indices, not a multiple of " + std::to_string(block.nodes_per_element));
     const std::size_t count = block.connectivity.size() / block.nodes_per_element;
     if ((!block.tags.empty() && block.tags.size() != count) ||
-        (!block.entity_tags.empty() && block.entity_tags.size() != count))
+        (!block.entity_tags.empty() && block.entity_tags.size() != count) ||
+        (!block.element_tags.empty() && block.element_tags.size() != count))
       fail(source, "the " + block.kind + " block has a tag array that does not match its " + std::to_string(count) +
                        " elements");
     check_indices(block.connectivity, block.nodes_per_element, mesh.num_nodes(), source, name);

@@ -349,7 +349,7 @@ TEST_F(CliFiles, ReportOverAMeshIsAUsageError) {
 // before it smooths anything, and writes nothing.
 TEST_F(CliFiles, OutputThatCannotHoldTheElementsFailsBeforeSmoothing) {
   TetMesh mesh = testing::cube_with_centre();
-  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
   write_mesh(mesh, path("hex.msh"));
   for (const char* out : {"out.vtu", "out.vtk"}) {
     const CliRun r = run({"smooth", path("hex.msh"), "-o", path(out), "--device", "cpu"});
@@ -367,7 +367,7 @@ TEST_F(CliFiles, OutputThatCannotHoldTheElementsFailsBeforeSmoothing) {
 // other than tets to TetGen, pins to MSH, node attributes to VTU.
 TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   TetMesh mesh = testing::cube_with_centre();
-  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
   write_mesh(mesh, path("hex.msh"));
   const CliRun tetgen = run({"convert", path("hex.msh"), path("hex.node")});
   EXPECT_EQ(tetgen.code, kExitOk) << tetgen.err;

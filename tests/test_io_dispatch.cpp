@@ -267,7 +267,7 @@ TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
 
 TEST_F(IoDir, WriteMeshFailureLeavesNoFile) {
   TetMesh mesh = testing::regular_tet();
-  mesh.extras.blocks.push_back(PassThroughBlock{"prism", 6, {0, 1, 2, 3, 0, 1}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"prism", 6, {0, 1, 2, 3, 0, 1}, {}, {}, {}});
   EXPECT_THROW(write_mesh(mesh, path("p.vtu")), OutputError);
   EXPECT_EQ(files(), 0u);
 }

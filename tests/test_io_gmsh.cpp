@@ -11,6 +11,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/gmsh_io.hpp"
@@ -58,6 +59,7 @@ void expect_same_blocks(const TetMesh& a, const TetMesh& b) {
     EXPECT_EQ(x.connectivity, y.connectivity) << x.kind;
     EXPECT_EQ(x.tags, y.tags) << x.kind;
     EXPECT_EQ(x.entity_tags, y.entity_tags) << x.kind;
+    EXPECT_EQ(x.element_tags, y.element_tags) << x.kind;
   }
 }
 
@@ -83,6 +85,7 @@ TEST(GmshIo, ReadsSparseTagsEntitiesPhysicalsAndPassThroughElements) {
   EXPECT_EQ(mesh.tets, (std::vector<index_t>{3, 1, 2, 0, 3, 2, 1, 4}));
   EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 2}));
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 8}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{110, 120}));
   EXPECT_EQ(mesh.extras.node_entity_dims, (std::vector<int>{0, 2, 2, 3, 3}));
   EXPECT_EQ(mesh.extras.node_entity_tags, (std::vector<int>{1, 5, 5, 1, 2}));
 
@@ -91,12 +94,14 @@ TEST(GmshIo, ReadsSparseTagsEntitiesPhysicalsAndPassThroughElements) {
   EXPECT_EQ(point.kind, "vertex");
   EXPECT_EQ(point.connectivity, (std::vector<index_t>{0}));
   EXPECT_EQ(point.tags, (std::vector<int>{9}));
+  EXPECT_EQ(point.element_tags, (std::vector<long long>{100}));
   const PassThroughBlock& tris = mesh.extras.blocks[1];
   EXPECT_EQ(tris.kind, "triangle");
   EXPECT_EQ(tris.nodes_per_element, 3);
   EXPECT_EQ(tris.connectivity, (std::vector<index_t>{1, 2, 0, 2, 1, 4}));
   EXPECT_EQ(tris.tags, (std::vector<int>{3, 3}));
   EXPECT_EQ(tris.entity_tags, (std::vector<int>{5, 5}));
+  EXPECT_EQ(tris.element_tags, (std::vector<long long>{101, 102}));
   // Only A, the node of no point or triangle, may move.
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 1}));
 
@@ -115,8 +120,11 @@ TEST(GmshIo, ReadsMsh22WithPhysicalAndElementaryTags) {
   EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 2, 1, 4}));
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
   EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{4, 5}));
   ASSERT_EQ(mesh.extras.blocks.size(), 2u);
   EXPECT_EQ(mesh.extras.blocks[0].kind, "vertex");
+  EXPECT_EQ(mesh.extras.blocks[0].element_tags, (std::vector<long long>{1}));
+  EXPECT_EQ(mesh.extras.blocks[1].element_tags, (std::vector<long long>{2, 3}));
   EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{0}));
   EXPECT_EQ(mesh.extras.blocks[1].tags, (std::vector<int>{3, 3}));
   EXPECT_EQ(mesh.extras.blocks[1].entity_tags, (std::vector<int>{5, 5}));
@@ -168,11 +176,15 @@ void expect_partitions_merged(const TetMesh& mesh) {
   EXPECT_EQ(point.connectivity, (std::vector<index_t>{0}));
   EXPECT_EQ(point.entity_tags, (std::vector<int>{1}));
   EXPECT_EQ(point.tags, (std::vector<int>{9}));
+  EXPECT_EQ(point.element_tags, (std::vector<long long>{100}));
   const PassThroughBlock& tris = mesh.extras.blocks[1];
   EXPECT_EQ(tris.kind, "triangle");
   EXPECT_EQ(tris.connectivity, (std::vector<index_t>{1, 2, 0, 2, 1, 4}));
   EXPECT_EQ(tris.entity_tags, (std::vector<int>{5, 5}));
   EXPECT_EQ(tris.tags, (std::vector<int>{3, 3}));
+  // The dropped elements' tags (103, 105) go with them.
+  EXPECT_EQ(tris.element_tags, (std::vector<long long>{101, 102}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{110, 120}));
   // A is pinned by no element of the model, so it may move.
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 1}));
   EXPECT_EQ(mesh.extras.read_notes,
@@ -335,6 +347,7 @@ TEST_P(GmshRoundTrip, KeepsTagsEntitiesPhysicalsAndBlocks) {
   EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
   EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
   EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_entity_tags);
+  EXPECT_EQ(back.extras.tet_element_tags, mesh.extras.tet_element_tags);
   EXPECT_EQ(back.fixed, mesh.fixed);
   expect_same_blocks(back, mesh);
   ASSERT_NE(raw_section(back, "$PhysicalNames"), nullptr);
@@ -357,6 +370,10 @@ TEST_P(GmshRoundTrip, CoordinatesAreExact) {
   std::vector<long long> one_to_n(mesh.num_nodes());
   for (std::size_t i = 0; i < one_to_n.size(); ++i) one_to_n[i] = static_cast<long long>(i) + 1;
   EXPECT_EQ(back.extras.node_tags, one_to_n);
+  // A mesh without element tags gets 1..T.
+  one_to_n.resize(mesh.num_tets());
+  for (std::size_t i = 0; i < one_to_n.size(); ++i) one_to_n[i] = static_cast<long long>(i) + 1;
+  EXPECT_EQ(back.extras.tet_element_tags, one_to_n);
   EXPECT_EQ(back.extras.tet_entity_tags, std::vector<int>(mesh.num_tets(), 1));
   EXPECT_TRUE(back.extras.blocks.empty());
 }
@@ -390,11 +407,15 @@ TEST_P(GmshRoundTrip, FieldsAreWrittenAndSkippedOnReading) {
   fields.tet_scalars.push_back({"quality \"q\"", {0.25, 0.75}});
   const std::string text = write_text(mesh, GetParam(), fields);
   EXPECT_NE(text.find("$NodeData\n1\n\"displacement\"\n1\n0\n3\n0\n1\n5\n"), std::string::npos);
-  // All 5 elements get a value: NaN for the point and the triangles.
+  // All 5 elements get a value, by their own tags (the tets 110 and 120
+  // are written first): NaN for the point and the triangles.
   EXPECT_NE(text.find("$ElementData\n1\n\"quality 'q'\"\n1\n0\n3\n0\n1\n5\n"), std::string::npos);
   if (GetParam() != MshFlavour::V41Binary) {
     EXPECT_NE(text.find("\n42 0.5\n20 1.5\n"), std::string::npos);
-    EXPECT_NE(text.find("\n1 0.25\n2 0.75\n3 nan\n"), std::string::npos);
+    EXPECT_NE(text.find("\n110 0.25\n120 0.75\n100 nan\n101 nan\n102 nan\n"), std::string::npos);
+  }
+  if (GetParam() == MshFlavour::V41Ascii) {  // blocks, elements, smallest and largest tag
+    EXPECT_NE(text.find("$Elements\n4 5 100 120\n"), std::string::npos);
   }
   EXPECT_EQ(read_text(text).xyz, mesh.xyz);
 }
@@ -421,6 +442,47 @@ TEST(GmshIo, HugeSparseNodeTagsAreKept) {
   EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{1000000000000, 7, 3, 4}));
   EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
   EXPECT_EQ(read_text(write_text(mesh, MshFlavour::V41Binary)).extras.node_tags, mesh.extras.node_tags);
+}
+
+// Element tags that Gmsh would refuse, or that field data cannot name, are
+// replaced by 1, 2, ... on writing, with a note; the elements themselves
+// are read as they are.
+TEST(GmshIo, UnusableElementTagsAreNotedAndRenumbered) {
+  const std::string two_tets =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n$EndNodes\n"
+      "$Elements\n2\nA 4 2 1 1 1 2 3 4\nB 4 2 1 1 1 3 2 5\n$EndElements\n";
+  const auto with_tags = [&](const std::string& a, const std::string& b) {
+    return read_text(replaced(replaced(two_tets, "A 4", a + " 4"), "B 4", b + " 4"));
+  };
+  for (const auto& [a, b, why] : {std::tuple{"7", "7", "element tag 7 is used twice"},
+                                  std::tuple{"0", "9", "element tag 0 is not positive"},
+                                  std::tuple{"3", "2147483648", "element tag 2147483648 exceeds"}}) {
+    const TetMesh mesh = with_tags(a, b);
+    EXPECT_EQ(mesh.num_tets(), 2u);
+    EXPECT_TRUE(mesh.extras.tet_element_tags.empty()) << why;
+    ASSERT_EQ(mesh.extras.read_notes.size(), 1u) << why;
+    EXPECT_NE(mesh.extras.read_notes[0].find(why), std::string::npos) << mesh.extras.read_notes[0];
+    EXPECT_EQ(read_text(write_text(mesh, MshFlavour::V41Ascii)).extras.tet_element_tags,
+              (std::vector<long long>{1, 2}));
+  }
+  const TetMesh kept = with_tags("2147483647", "5");
+  EXPECT_TRUE(kept.extras.read_notes.empty());
+  EXPECT_EQ(read_text(write_text(kept, MshFlavour::V41Binary)).extras.tet_element_tags,
+            (std::vector<long long>{2147483647, 5}));
+  // Tags given in memory are checked on writing too: one repeated between
+  // a tet and a triangle falls back to 1..N.
+  TetMesh clash = kept;
+  clash.extras.tet_element_tags = {5, 6};
+  PassThroughBlock tri;
+  tri.kind = "triangle";
+  tri.nodes_per_element = 3;
+  tri.connectivity = {0, 1, 2};
+  tri.element_tags = {6};
+  clash.extras.blocks.push_back(tri);
+  const TetMesh back = read_text(write_text(clash, MshFlavour::V22Ascii));
+  EXPECT_EQ(back.extras.tet_element_tags, (std::vector<long long>{1, 2}));
+  ASSERT_EQ(back.extras.blocks.size(), 1u);
+  EXPECT_EQ(back.extras.blocks[0].element_tags, (std::vector<long long>{3}));
 }
 
 // A file written on a machine of the other byte order.

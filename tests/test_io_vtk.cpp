@@ -30,9 +30,9 @@ namespace {
 TetMesh decorated_mesh() {
   TetMesh mesh = testing::cube_with_centre(0.41, 0.53, 0.47);
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) mesh.extras.tet_tags.push_back(100 + static_cast<int>(t));
-  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 2, 3, 0, 3, 1}, {1, 2}, {}});
-  mesh.extras.blocks.push_back(PassThroughBlock{"line", 2, {4, 5}, {}, {}});
-  mesh.extras.blocks.push_back(PassThroughBlock{"vertex", 1, {7}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 2, 3, 0, 3, 1}, {1, 2}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"line", 2, {4, 5}, {}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"vertex", 1, {7}, {}, {}, {}});
   mesh.fixed = {1, 1, 1, 1, 1, 1, 1, 1, 0};
   return mesh;
 }

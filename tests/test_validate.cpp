@@ -107,7 +107,7 @@ TEST(Validate, RejectsMeshWithoutTets) {
 
 TEST(Validate, RejectsPassThroughBlockOutOfRange) {
   TetMesh mesh = testing::regular_tet();
-  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2, 1, 2, 4}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2, 1, 2, 4}, {}, {}, {}});
   const std::string msg = validation_error(mesh);
   EXPECT_NE(msg.find("triangle element 1"), std::string::npos) << msg;
   EXPECT_NE(msg.find("node 4"), std::string::npos) << msg;

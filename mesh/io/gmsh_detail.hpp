@@ -3,10 +3,16 @@
 // the element types this library handles and the model entities of an MSH 4
 // $Entities section.
 #include <cstddef>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace tetsmooth {
+struct FileExtras;
+}
 
 namespace tetsmooth::gmsh {
 
@@ -61,6 +67,19 @@ class Entities {
 // The first physical tag of entity (dim, tag), 0 when it has none or the
 // entity is unknown: the one physical tag an element carries in MSH 2.
 int first_physical(const Entities& entities, int dim, int tag);
+
+// Tags a written file can carry are positive, distinct and at most
+// `largest`: a tag of `tags` that is not, or nullopt when all are.
+std::optional<long long> unusable_tag(std::vector<long long> tags, long long largest = INT64_MAX);
+
+// Element tags are kept only where field data ($ElementData, whose tags are
+// 32-bit ints) can name them too.
+inline constexpr long long kLargestElementTag = INT32_MAX;
+
+// Every element's tag from the file, tets first and then each pass-through
+// block (the order the writer writes them in), or empty when any element
+// has none.
+std::vector<long long> element_tags_in_write_order(const FileExtras& extras, std::size_t tets);
 
 // The body of an ASCII $Entities section, parsed (throws InputError naming
 // `source` and the line) and written back.

@@ -7,21 +7,24 @@
 namespace tetsmooth::gmsh {
 namespace {
 
-// MSH 2 gives each element its tags directly: the first is the physical
-// group, the second the elementary (entity) tag; partition tags follow.
-void add_element(ReadState& state, const ElementType& type, const std::vector<index_t>& nodes, int physical,
-                 int elementary) {
+// MSH 2 gives each element its number (`id`, the element tag of MSH 4) and
+// its tags: the first is the physical group, the second the elementary
+// (entity) tag; partition tags follow.
+void add_element(ReadState& state, const ElementType& type, const std::vector<index_t>& nodes, long long id,
+                 int physical, int elementary) {
   FileExtras& extras = state.mesh.extras;
   if (type.id == kTetType) {
     state.mesh.tets.insert(state.mesh.tets.end(), nodes.begin(), nodes.end());
     extras.tet_tags.push_back(physical);
     extras.tet_entity_tags.push_back(elementary);
+    extras.tet_element_tags.push_back(id);
     return;
   }
   PassThroughBlock& block = state.block_for(type);
   block.connectivity.insert(block.connectivity.end(), nodes.begin(), nodes.end());
   block.tags.push_back(physical);
   block.entity_tags.push_back(elementary);
+  block.element_tags.push_back(id);
 }
 
 template <class Source>
@@ -48,10 +51,7 @@ void read_nodes_v22(Source& src, ReadState& state) {
       tag = src.int_value("node tag");
       if (tag < 0) src.fail("negative node tag " + std::to_string(tag));
     } else {
-      const std::uint64_t value = src.size_value("node tag");
-      if (value > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
-        src.fail("node tag " + std::to_string(value) + " is too large");
-      tag = static_cast<long long>(value);
+      tag = tag_value(src, "node tag");
     }
     mesh.extras.node_tags.push_back(tag);
     for (int k = 0; k < 3; ++k) mesh.xyz.push_back(src.real_value("node coordinate"));
@@ -67,7 +67,7 @@ void read_elements_v22(AsciiSource& src, ReadState& state) {
   const std::uint64_t total = src.size_value("number of elements");
   std::vector<index_t> nodes;
   for (std::uint64_t e = 0; e < total; ++e) {
-    src.size_value("element tag");
+    const long long id = tag_value(src, "element tag");
     const ElementType& type = checked_type(src, src.int_value("element type"));
     const std::uint64_t tags = src.size_value("number of element tags");
     int physical = 0, elementary = 0;
@@ -78,7 +78,7 @@ void read_elements_v22(AsciiSource& src, ReadState& state) {
     }
     nodes.resize(static_cast<std::size_t>(type.nodes));
     for (index_t& n : nodes) n = node_index(src, state, src.size_value("node tag"));
-    add_element(state, type, nodes, physical, elementary);
+    add_element(state, type, nodes, id, physical, elementary);
   }
 }
 
@@ -97,7 +97,8 @@ void read_elements_v22(BinarySource& src, ReadState& state) {
     src.reservable(static_cast<std::uint64_t>(count), 4 * (1 + static_cast<std::size_t>(tags) + type.nodes));
     nodes.resize(static_cast<std::size_t>(type.nodes));
     for (int e = 0; e < count; ++e) {
-      src.int_value("element number");
+      const int id = src.int_value("element number");
+      if (id < 0) src.fail("negative element number " + std::to_string(id));
       int physical = 0, elementary = 0;
       for (int k = 0; k < tags; ++k) {
         const int value = src.int_value("element tag value");
@@ -109,7 +110,7 @@ void read_elements_v22(BinarySource& src, ReadState& state) {
         if (tag < 0) src.fail("negative node tag " + std::to_string(tag));
         n = node_index(src, state, static_cast<std::uint64_t>(tag));
       }
-      add_element(state, type, nodes, physical, elementary);
+      add_element(state, type, nodes, id, physical, elementary);
     }
     seen += static_cast<std::uint64_t>(count);
   }

@@ -49,17 +49,6 @@ PassThroughBlock& ReadState::block_for(const ElementType& type) {
   return block;
 }
 
-namespace {
-
-template <class Source>
-long long node_tag(Source& src) {
-  const std::uint64_t tag = src.size_value("node tag");
-  if (tag > static_cast<std::uint64_t>(std::numeric_limits<long long>::max()))
-    src.fail("node tag " + std::to_string(tag) + " is too large");
-  return static_cast<long long>(tag);
-}
-
-}  // namespace
 
 template <class Source>
 void read_nodes_v41(Source& src, ReadState& state) {
@@ -94,7 +83,7 @@ void read_nodes_v41(Source& src, ReadState& state) {
     // coordinates; they are dropped: nodes that move leave them stale.
     const int extra_values = parametric != 0 ? dim : 0;
     src.reservable(count, 8 + 24 + 8 * static_cast<std::size_t>(extra_values));
-    for (std::uint64_t i = 0; i < count; ++i) extras.node_tags.push_back(node_tag(src));
+    for (std::uint64_t i = 0; i < count; ++i) extras.node_tags.push_back(tag_value(src, "node tag"));
     for (std::uint64_t i = 0; i < count; ++i) {
       for (int k = 0; k < 3; ++k) mesh.xyz.push_back(src.real_value("node coordinate"));
       for (int k = 0; k < extra_values; ++k) src.real_value("parametric coordinate");
@@ -142,16 +131,19 @@ void read_elements_v41(Source& src, ReadState& state) {
     if (tet) {
       mesh.tets.reserve(mesh.tets.size() + 4 * reserve);
       mesh.extras.tet_entity_tags.reserve(mesh.extras.tet_entity_tags.size() + reserve);
+      mesh.extras.tet_element_tags.reserve(mesh.extras.tet_element_tags.size() + reserve);
     }
     for (std::uint64_t e = 0; e < count; ++e) {
-      src.size_value("element tag");
+      const long long id = tag_value(src, "element tag");
       for (index_t& n : nodes) n = node_index(src, state, src.size_value("node tag"));
       if (tet) {
         mesh.tets.insert(mesh.tets.end(), nodes.begin(), nodes.end());
         mesh.extras.tet_entity_tags.push_back(entity);
+        mesh.extras.tet_element_tags.push_back(id);
       } else {
         block->connectivity.insert(block->connectivity.end(), nodes.begin(), nodes.end());
         block->entity_tags.push_back(entity);
+        block->element_tags.push_back(id);
       }
     }
   }

@@ -223,11 +223,13 @@ std::size_t merge_block(const gmsh::Entities& partitions, PassThroughBlock& bloc
     for (std::size_t k = 0; k < nodes; ++k) block.connectivity[kept * nodes + k] = block.connectivity[e * nodes + k];
     block.entity_tags[kept] = *entity;
     if (!block.tags.empty()) block.tags[kept] = block.tags[e];
+    if (!block.element_tags.empty()) block.element_tags[kept] = block.element_tags[e];
     ++kept;
   }
   block.connectivity.resize(kept * nodes);
   block.entity_tags.resize(kept);
   if (!block.tags.empty()) block.tags.resize(kept);
+  if (!block.element_tags.empty()) block.element_tags.resize(kept);
   return count - kept;
 }
 
@@ -263,6 +265,21 @@ void merge_partitions(ReadState& state) {
       "; the written file is not partitioned");
 }
 
+// Element tags that cannot be written back (zero, one used twice, or one
+// past the 32-bit ints of field data) are dropped, so that a written file
+// numbers its elements 1, 2, ... instead of carrying tags that Gmsh would
+// refuse; the user hears of it.
+void check_element_tags(FileExtras& extras, std::size_t tets) {
+  const std::optional<long long> bad =
+      gmsh::unusable_tag(gmsh::element_tags_in_write_order(extras, tets), gmsh::kLargestElementTag);
+  if (!bad) return;
+  extras.tet_element_tags.clear();
+  for (PassThroughBlock& block : extras.blocks) block.element_tags.clear();
+  const char* why = *bad <= 0 ? " is not positive" : *bad > gmsh::kLargestElementTag ? " exceeds 2^31 - 1" : " is used twice";
+  extras.read_notes.push_back("element tag " + std::to_string(*bad) + why +
+                              "; a written MSH file numbers the elements 1, 2, ... instead of keeping their tags");
+}
+
 template <class Source>
 TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   read_sections(src, state);
@@ -271,6 +288,7 @@ TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   if (state.mesh.tets.empty()) src.fail("no tetrahedra (element type 4): a volume mesh is needed");
   if (state.major == 4 && (state.has_entities || state.has_partitions)) map_physicals(state);
   if (state.has_partitions) merge_partitions(state);
+  check_element_tags(state.mesh.extras, state.mesh.num_tets());
 
   TetMesh& mesh = state.mesh;
   // `fixed` stays empty when no pass-through element pins a node.

@@ -147,6 +147,15 @@ struct ReadState {
   PassThroughBlock& block_for(const ElementType& type);
 };
 
+// A node or element tag, a size_t in the format, as the long long it is
+// kept in; fails naming `what` when it does not fit.
+template <class Source>
+long long tag_value(Source& src, const char* what) {
+  const std::uint64_t tag = src.size_value(what);
+  if (tag > static_cast<std::uint64_t>(INT64_MAX)) src.fail(std::string(what) + " " + std::to_string(tag) + " is too large");
+  return static_cast<long long>(tag);
+}
+
 // The 0-based index of node `tag`; fails naming the tag when it is unknown.
 template <class Source>
 index_t node_index(Source& src, const ReadState& state, std::uint64_t tag) {

@@ -16,17 +16,11 @@ const std::string* raw_section(const FileExtras& extras, const char* name) {
   return nullptr;
 }
 
-// The file's own node tags when they can be written back: one per node,
-// positive and distinct; otherwise 1..N.
-std::vector<long long> output_node_tags(const TetMesh& mesh) {
-  const std::vector<long long>& tags = mesh.extras.node_tags;
-  if (tags.size() == mesh.num_nodes()) {
-    std::vector<long long> sorted(tags);
-    std::sort(sorted.begin(), sorted.end());
-    if ((sorted.empty() || sorted.front() > 0) && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
-      return tags;
-  }
-  std::vector<long long> fresh(mesh.num_nodes());
+// The file's own tags when they can be written back: one per item,
+// positive, distinct and at most `largest`; otherwise 1..count.
+std::vector<long long> output_tags(std::vector<long long> given, std::size_t count, long long largest) {
+  if (given.size() == count && !unusable_tag(given, largest)) return given;
+  std::vector<long long> fresh(count);
   std::iota(fresh.begin(), fresh.end(), 1LL);
   return fresh;
 }
@@ -172,9 +166,11 @@ WritePlan plan_gmsh_output(const TetMesh& mesh) {
   check_indices(mesh, groups);
   if (!adopt_file_entities(mesh.extras, groups, plan)) make_entities(mesh, groups, plan);
   classify_nodes(mesh, groups, plan);
-  plan.node_tags = output_node_tags(mesh);
+  plan.node_tags = output_tags(mesh.extras.node_tags, mesh.num_nodes(), INT64_MAX);
   if (const std::string* names = raw_section(mesh.extras, "$PhysicalNames")) plan.physical_names = *names;
   for (const ElementGroup& g : groups) plan.element_count += g.count;
+  plan.element_tags = output_tags(element_tags_in_write_order(mesh.extras, mesh.num_tets()), plan.element_count,
+                                  kLargestElementTag);
   plan.groups = std::move(groups);
   return plan;
 }

@@ -12,6 +12,8 @@
 // attribute, Medit reference), else 1; each entity lists the positive
 // physical tags of its elements. Nodes are then classified on the
 // lowest-dimensional entity of an element that uses them, as Gmsh does.
+// Node and element tags are the file's where it gave usable ones (see
+// WritePlan), so ids that a simulation deck refers to survive.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -39,7 +41,11 @@ struct WritePlan {
   Entities entities;
   std::string entities_text;         // $Entities body as written in ASCII
   std::string physical_names;        // $PhysicalNames body, or empty
-  std::vector<ElementGroup> groups;  // tets first; element tags run 1, 2, ... in this order
+  std::vector<ElementGroup> groups;  // tets first, then the pass-through blocks
+  // Per element, in the order of `groups`: the file's element tags when
+  // every element has one and they are positive, distinct and at most
+  // kLargestElementTag, else 1, 2, ...
+  std::vector<long long> element_tags;
   std::size_t element_count = 0;
 };
 

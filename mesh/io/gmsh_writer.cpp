@@ -88,7 +88,8 @@ void check_field_tags(const WritePlan& plan, const MeshFields& fields) {
   };
   if (!fields.node_scalars.empty())
     for (long long tag : plan.node_tags) too_large(tag);
-  if (!fields.tet_scalars.empty()) too_large(static_cast<long long>(plan.element_count));
+  if (!fields.tet_scalars.empty())
+    for (long long tag : plan.element_tags) too_large(tag);
 }
 
 // One $NodeData or $ElementData view at time 0; the header is text in
@@ -111,12 +112,13 @@ void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const Me
     sink.end_body();
     out << "$EndNodeData\n";
   }
-  // Tets are elements 1..T. The other elements get NaN ("no value") rather
-  // than no entry: readers such as meshio expect a value for every element.
+  // Tets are the first T elements. The other elements get NaN ("no value")
+  // rather than no entry: readers such as meshio expect a value for every
+  // element.
   for (const auto& [name, values] : fields.tet_scalars) {
     write_data_header(out, "ElementData", name, plan.element_count);
     for (std::size_t e = 0; e < plan.element_count; ++e) {
-      sink.integer(static_cast<long long>(e + 1));
+      sink.integer(plan.element_tags[e]);
       sink.real(e < values.size() ? values[e] : std::numeric_limits<double>::quiet_NaN());
       sink.end_record();
     }
@@ -190,13 +192,14 @@ void write_elements_v41(std::ostream& out, Sink& sink, const WritePlan& plan) {
   std::size_t blocks = 0;
   for (const ElementGroup& g : plan.groups)
     for (std::size_t e = 0; e < g.count; ++e) blocks += e == 0 || g.entity[e] != g.entity[e - 1];
+  const auto [lo, hi] = std::minmax_element(plan.element_tags.begin(), plan.element_tags.end());
   out << "$Elements\n";
   sink.size(blocks);
   sink.size(plan.element_count);
-  sink.size(plan.element_count == 0 ? 0 : 1);
-  sink.size(plan.element_count);
+  sink.size(plan.element_count == 0 ? 0 : static_cast<std::uint64_t>(*lo));
+  sink.size(plan.element_count == 0 ? 0 : static_cast<std::uint64_t>(*hi));
   sink.end_record();
-  std::uint64_t tag = 1;
+  std::size_t written = 0;
   for (const ElementGroup& g : plan.groups) {
     const auto nodes = static_cast<std::size_t>(g.type->nodes);
     for (std::size_t first = 0; first < g.count;) {
@@ -208,7 +211,7 @@ void write_elements_v41(std::ostream& out, Sink& sink, const WritePlan& plan) {
       sink.size(last - first);
       sink.end_record();
       for (std::size_t e = first; e < last; ++e) {
-        sink.size(tag++);
+        sink.size(static_cast<std::uint64_t>(plan.element_tags[written++]));
         for (std::size_t k = 0; k < nodes; ++k)
           sink.size(
               static_cast<std::uint64_t>(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]));
@@ -256,11 +259,11 @@ void write_v22(std::ostream& out, const TetMesh& mesh, const WritePlan& plan, co
     sink.end_record();
   }
   out << "$EndNodes\n$Elements\n" << plan.element_count << '\n';
-  long long tag = 1;
+  std::size_t written = 0;
   for (const ElementGroup& g : plan.groups) {
     const auto nodes = static_cast<std::size_t>(g.type->nodes);
     for (std::size_t e = 0; e < g.count; ++e) {
-      sink.integer(tag++);
+      sink.integer(plan.element_tags[written++]);
       sink.integer(g.type->id);
       sink.integer(2);
       sink.integer(g.physical[e]);

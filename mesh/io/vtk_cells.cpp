@@ -161,7 +161,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     std::size_t& slot = block_of_type[static_cast<std::size_t>(type)];
     if (slot == SIZE_MAX) {
       slot = mesh.extras.blocks.size();
-      mesh.extras.blocks.push_back(PassThroughBlock{pass->kind, pass->nodes, {}, {}, {}});
+      mesh.extras.blocks.push_back(PassThroughBlock{pass->kind, pass->nodes, {}, {}, {}, {}});
     }
     PassThroughBlock& block = mesh.extras.blocks[slot];
     for (long long k = begin; k < end; ++k) block.connectivity.push_back(static_cast<index_t>(connectivity[k]));

@@ -32,7 +32,7 @@ TetMesh probe_of(const TetMesh& mesh) {
   if (!e.tet_tags.empty()) probe.extras.tet_tags = {e.tet_tags.front()};
   if (!e.tet_entity_tags.empty()) probe.extras.tet_entity_tags = {e.tet_entity_tags.front()};
   for (const PassThroughBlock& b : e.blocks)
-    probe.extras.blocks.push_back(PassThroughBlock{b.kind, b.nodes_per_element, {}, {}, {}});
+    probe.extras.blocks.push_back(PassThroughBlock{b.kind, b.nodes_per_element, {}, {}, {}, {}});
   return probe;
 }
 

@@ -58,6 +58,18 @@ def physical_groups(gmsh):
     return counts
 
 
+def elements_by_tag(gmsh):
+    """{dim: {element tag: (type, node tags)}} of the model in the session."""
+    found = {}
+    for dim in range(4):
+        types, tags, nodes = gmsh.model.mesh.getElements(dim=dim)
+        for etype, etags, enodes in zip(types, tags, nodes):
+            per = len(enodes) // len(etags)
+            for k, tag in enumerate(etags):
+                found.setdefault(dim, {})[int(tag)] = (int(etype), tuple(int(n) for n in enodes[k * per:(k + 1) * per]))
+    return found
+
+
 def read_with_gmsh(gmsh, path):
     """Nodes in tag order and tets as 0-based rows into them."""
     with gmsh_session(gmsh):
@@ -206,12 +218,23 @@ class IndependentReaders(unittest.TestCase):
             gmsh.write(src)
             _, _, node_tags = gmsh.model.mesh.getElements(dim=3)
             tets = sum(len(n) for n in node_tags) // 4
+            before = elements_by_tag(gmsh)
         finally:
             gmsh.finalize()
         q = json.loads(run("quality", src, "--json").stdout)
         self.assertEqual(q["input"]["tets"], tets)
         self.assertEqual(q["quality"]["inverted"], 0)
         self.assertGreater(q["quality"]["min"], 0)
+        # Gmsh numbers the points, lines and triangles before the tets; a
+        # smoothed file keeps every element's tag and nodes, as Gmsh reads it.
+        self.assertNotEqual(sorted(before[3])[0], 1)
+        for fmt in ("msh41", "msh41-binary", "msh22"):
+            with self.subTest(format=fmt):
+                out = self.path(f"gmsh-box-smooth-{fmt}.msh")
+                run("smooth", src, "-o", out, "--output-format", fmt, "-q")
+                with gmsh_session(gmsh):
+                    gmsh.open(out)
+                    self.assertEqual(elements_by_tag(gmsh), before)
 
 
 if __name__ == "__main__":

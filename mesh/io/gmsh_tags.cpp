@@ -1,0 +1,31 @@
+// Node and element tags as MSH can write them back: Gmsh requires them to
+// be positive and distinct (within nodes, and within all elements of every
+// dimension together).
+#include <algorithm>
+
+#include "mesh/file_extras.hpp"
+#include "mesh/io/gmsh_detail.hpp"
+
+namespace tetsmooth::gmsh {
+
+std::optional<long long> unusable_tag(std::vector<long long> tags, long long largest) {
+  std::sort(tags.begin(), tags.end());
+  if (!tags.empty() && tags.front() <= 0) return tags.front();
+  if (!tags.empty() && tags.back() > largest) return tags.back();
+  const auto repeated = std::adjacent_find(tags.begin(), tags.end());
+  if (repeated != tags.end()) return *repeated;
+  return std::nullopt;
+}
+
+std::vector<long long> element_tags_in_write_order(const FileExtras& extras, std::size_t tets) {
+  if (extras.tet_element_tags.size() != tets) return {};
+  std::vector<long long> all = extras.tet_element_tags;
+  for (const PassThroughBlock& block : extras.blocks) {
+    const std::size_t count = block.nodes_per_element > 0 ? block.connectivity.size() / block.nodes_per_element : 0;
+    if (block.element_tags.size() != count) return {};
+    all.insert(all.end(), block.element_tags.begin(), block.element_tags.end());
+  }
+  return all;
+}
+
+}  // namespace tetsmooth::gmsh

@@ -1,5 +1,6 @@
 #include "bench/bench_flags.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <sstream>
@@ -10,13 +11,18 @@
 namespace tetsmooth::bench {
 namespace {
 
-std::vector<std::string> split_list(const std::string& flag, const std::string& s) {
+// The comma-separated items of a list flag, each once, in order.
+std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
   std::stringstream in(s);
   for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  if (out.empty()) throw UsageError(flag + ": empty list");
+    if (!item.empty() && std::find(out.begin(), out.end(), item) == out.end()) out.push_back(item);
   return out;
+}
+
+// A model named twice (77k and slope-77k) would register its benchmarks twice.
+void add_once(std::vector<std::string>& list, std::string item) {
+  if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(std::move(item));
 }
 
 std::string checked_lattice(const std::string& name) {
@@ -60,10 +66,14 @@ BenchConfig take_own_flags(int& argc, char** argv) {
     auto value = [&](const char* prefix) { return a.substr(std::strlen(prefix)); };
     if (a.rfind("--models=", 0) == 0) {
       c.models.clear();
-      for (const std::string& name : split_list("--models", value("--models="))) c.models.push_back(model_label(name));
+      for (const std::string& name : split_list(value("--models="))) add_once(c.models, model_label(name));
+      if (c.models.empty()) throw UsageError("--models: empty list");
     } else if (a.rfind("--scaling=", 0) == 0) {
+      // "none" (or nothing) turns off scaling meshes a script asked for earlier.
       c.scaling.clear();
-      for (const std::string& name : split_list("--scaling", value("--scaling="))) c.scaling.push_back(checked_lattice(name));
+      const std::string list = value("--scaling=");
+      if (list != "none")
+        for (const std::string& name : split_list(list)) add_once(c.scaling, checked_lattice(name));
     } else if (a.rfind("--precision=", 0) == 0) {
       const std::string p = value("--precision=");
       if (p != "double" && p != "float") throw UsageError("--precision: '" + p + "' is not double or float");
@@ -90,7 +100,7 @@ const char* own_flags_help() {
          "  --models=LIST          paper models to run, comma-separated (default 5k,10k,59k,77k,109k;\n"
          "                         slope-77k is accepted for 77k)\n"
          "  --scaling=LIST         lattice-N meshes for the GPU scaling runs, e.g. lattice-215 (10M nodes);\n"
-         "                         default none\n"
+         "                         default none; --scaling=none drops those an earlier flag named\n"
          "  --precision=P          GPU precision, double (default) or float\n"
          "  --coloured-lanes=N     GPU Coloured threads per node: 0 automatic (default), 8, 16 or 32\n"
          "  --no-cpu               skip the serial and threaded CPU baselines\n"

@@ -15,22 +15,37 @@
 # that succeeds do they replace the destination's result files, so a bad
 # JSON leaves the old results whole, and files of an earlier run that this
 # one does not produce (an old bench_float.json, a figure) do not linger
-# beside it. Other files there (Nsight Compute reports, notes) are kept.
+# beside it. The logs are replaced only with --logs. Other files there
+# (Nsight Compute reports, notes) are kept. Paths are taken relative to the
+# current folder; exit status 2 on bad arguments or input.
 set -euo pipefail
-cd "$(dirname "$0")/.."
 usage() { echo "usage: $0 [--dest DIR] [--logs DIR] BENCH.json [FLOAT.json]" >&2; exit 2; }
+fail() { echo "publish_results: $*" >&2; exit 2; }
+# Paths are the caller's, resolved before the script moves to the repository.
+absolute() { realpath -m -- "$1"; }
 dest='' logs=''
 while [ $# -gt 0 ]; do
   case $1 in
-    --dest) [ $# -ge 2 ] || usage; dest=$2; shift 2 ;;
-    --logs) [ $# -ge 2 ] || usage; logs=$2; shift 2 ;;
+    --dest) [ $# -ge 2 ] && [ -n "$2" ] || usage; dest=$(absolute "$2"); shift 2 ;;
+    --logs) [ $# -ge 2 ] && [ -n "$2" ] || usage; logs=$(absolute "$2"); shift 2 ;;
     -*) usage ;;
     *) break ;;
   esac
 done
 [ $# -ge 1 ] && [ $# -le 2 ] || usage
-json=$1 float=${2:-}
-for f in "$json" $float; do [ -s "$f" ] || { echo "publish_results: $f is missing or empty (did any benchmark run?)" >&2; exit 2; }; done
+[ -n "$1" ] || usage
+json=$(absolute "$1") float=''
+if [ $# -eq 2 ]; then [ -n "$2" ] || usage; float=$(absolute "$2"); fi
+for f in "$json" ${float:+"$float"}; do
+  [ -s "$f" ] || fail "$f is missing or empty (did any benchmark run?)"
+done
+log_files=(gpu_tests.log sanitizers.log device.txt)
+if [ -n "$logs" ]; then
+  found=0
+  for f in "${log_files[@]}"; do [ ! -f "$logs/$f" ] || found=1; done
+  [ $found -eq 1 ] || fail "--logs $logs holds none of ${log_files[*]}"
+fi
+cd "$(dirname "$0")/.."
 if [ -z "$dest" ]; then
   device=$(/usr/bin/python3 -c '
 import json, re, sys
@@ -49,9 +64,10 @@ trap 'rm -rf "$stage"' EXIT
 cp "$json" "$stage/bench_smooth.json"
 [ -z "$float" ] || cp "$float" "$stage/bench_float.json"
 if [ -n "$logs" ]; then
-  for f in gpu_tests.log sanitizers.log device.txt; do [ ! -f "$logs/$f" ] || cp "$logs/$f" "$stage/"; done
+  for f in "${log_files[@]}"; do [ ! -f "$logs/$f" ] || cp "$logs/$f" "$stage/"; done
 fi
-/usr/bin/python3 plots/report.py "$stage/bench_smooth.json" "$stage"
+# report.py lists what it writes; name the files where they will be.
+/usr/bin/python3 plots/report.py "$stage/bench_smooth.json" "$stage" | sed "s#$stage#$dest#g"
 mkdir -p "$dest"
 if [ -f "$dest/bench_smooth.json" ]; then
   echo "replacing the results in $dest (git $(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["context"].get("git_sha", "?"))' "$dest/bench_smooth.json" 2>/dev/null || echo '?'))"
@@ -59,6 +75,6 @@ fi
 # What a run produces; logs only when this run brings its own.
 rm -f "$dest"/bench_smooth.json "$dest"/bench_float.json "$dest"/tables.md "$dest"/table*.csv \
       "$dest"/quality.csv "$dest"/runs.csv "$dest"/scaling.csv "$dest"/colours.csv "$dest"/fig*.png
-[ -z "$logs" ] || rm -f "$dest"/gpu_tests.log "$dest"/sanitizers.log "$dest"/device.txt
+[ -z "$logs" ] || for f in "${log_files[@]}"; do rm -f "$dest/$f"; done
 cp "$stage"/* "$dest"/
 echo "results written to $dest"

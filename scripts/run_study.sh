@@ -8,8 +8,8 @@
 # Environment: REPS (repetitions, default 3), BUILD_DIR (default build),
 # TETSMOOTH_MESH_CACHE (default ./meshes). Flags are passed to bench_smooth
 # after the defaults, so they win: e.g. --models=5k,109k, --no-cpu,
-# --precision=float, --benchmark_filter=REGEX (bench_smooth --help lists
-# them). On a machine without a GPU only the CPU families run (the lattice
+# --scaling=none (no lattice), --precision=float, --benchmark_filter=REGEX
+# (bench_smooth --help lists them). On a machine without a GPU only the CPU families run (the lattice
 # scaling mesh is GPU-only and is then not generated); for the GPU machine
 # see scripts/gpu_bundle.sh and scripts/device_run.sh (README: Results).
 set -euo pipefail
@@ -22,7 +22,8 @@ export TETSMOOTH_MESH_CACHE=${TETSMOOTH_MESH_CACHE:-$PWD/meshes}
 TETSMOOTH_GIT_SHA=$(scripts/git_version.sh)
 export TETSMOOTH_GIT_SHA
 tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
+# A failed run keeps what bench_smooth wrote, and says where.
+trap 'status=$?; if [ $status -eq 0 ]; then rm -rf "$tmp"; else echo "run_study: failed; raw results kept in $tmp" >&2; fi' EXIT
 "$build"/bench/bench_smooth --scaling=lattice-215 --benchmark_repetitions="${REPS:-3}" --benchmark_min_time=0.01 \
   --benchmark_out="$tmp/bench_smooth.json" --benchmark_out_format=json "$@"
 scripts/publish_results.sh "$tmp/bench_smooth.json"

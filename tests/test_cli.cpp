@@ -392,6 +392,23 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   const CliRun vtu = run({"convert", path("attrs.node"), path("attrs.vtu")});
   EXPECT_NE(vtu.err.find("the node attributes (1 per node) will not be written: vtu has no place for them"), std::string::npos)
       << vtu.err;
+
+  // Gmsh element ids that are not just positions survive only in MSH.
+  TetMesh ids = testing::cube_with_centre();
+  for (std::size_t t = 0; t < ids.num_tets(); ++t) ids.extras.tet_element_tags.push_back(100 + static_cast<long long>(t));
+  write_mesh(ids, path("ids.msh"));
+  const CliRun to_vtu = run({"convert", path("ids.msh"), path("ids.vtu")});
+  EXPECT_NE(to_vtu.err.find("the Gmsh element tags will not be written: vtu numbers them by position"),
+            std::string::npos)
+      << to_vtu.err;
+  const CliRun to_msh = run({"convert", path("ids.msh"), path("ids22.msh"), "--output-format", "msh22"});
+  EXPECT_EQ(to_msh.err.find("will not be written"), std::string::npos) << to_msh.err;
+  EXPECT_EQ(read_mesh(path("ids22.msh")).extras.tet_element_tags, ids.extras.tet_element_tags);
+  // Our own MSH numbers nodes and elements 1, 2, ...: nothing to lose.
+  write_mesh(testing::cube_with_centre(), path("plain.msh"));
+  const CliRun positional = run({"convert", path("plain.msh"), path("plain.vtu")});
+  EXPECT_EQ(positional.code, kExitOk) << positional.err;
+  EXPECT_EQ(positional.err.find("Gmsh"), std::string::npos) << positional.err;
 }
 
 TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {

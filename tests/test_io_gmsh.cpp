@@ -407,12 +407,13 @@ TEST_P(GmshRoundTrip, FieldsAreWrittenAndSkippedOnReading) {
   fields.tet_scalars.push_back({"quality \"q\"", {0.25, 0.75}});
   const std::string text = write_text(mesh, GetParam(), fields);
   EXPECT_NE(text.find("$NodeData\n1\n\"displacement\"\n1\n0\n3\n0\n1\n5\n"), std::string::npos);
-  // All 5 elements get a value, by their own tags (the tets 110 and 120
-  // are written first): NaN for the point and the triangles.
+  // All 5 elements get a value, by their own tags and in their order (the
+  // point 100, the triangles 101 and 102, the tets 110 and 120): NaN for
+  // the point and the triangles.
   EXPECT_NE(text.find("$ElementData\n1\n\"quality 'q'\"\n1\n0\n3\n0\n1\n5\n"), std::string::npos);
   if (GetParam() != MshFlavour::V41Binary) {
     EXPECT_NE(text.find("\n42 0.5\n20 1.5\n"), std::string::npos);
-    EXPECT_NE(text.find("\n110 0.25\n120 0.75\n100 nan\n101 nan\n102 nan\n"), std::string::npos);
+    EXPECT_NE(text.find("\n100 nan\n101 nan\n102 nan\n110 0.25\n120 0.75\n"), std::string::npos);
   }
   if (GetParam() == MshFlavour::V41Ascii) {  // blocks, elements, smallest and largest tag
     EXPECT_NE(text.find("$Elements\n4 5 100 120\n"), std::string::npos);
@@ -456,7 +457,7 @@ TEST(GmshIo, UnusableElementTagsAreNotedAndRenumbered) {
   };
   for (const auto& [a, b, why] : {std::tuple{"7", "7", "element tag 7 is used twice"},
                                   std::tuple{"0", "9", "element tag 0 is not positive"},
-                                  std::tuple{"3", "2147483648", "element tag 2147483648 exceeds"}}) {
+                                  std::tuple{"3", "2147483600", "element tag 2147483600 exceeds"}}) {
     const TetMesh mesh = with_tags(a, b);
     EXPECT_EQ(mesh.num_tets(), 2u);
     EXPECT_TRUE(mesh.extras.tet_element_tags.empty()) << why;
@@ -465,10 +466,29 @@ TEST(GmshIo, UnusableElementTagsAreNotedAndRenumbered) {
     EXPECT_EQ(read_text(write_text(mesh, MshFlavour::V41Ascii)).extras.tet_element_tags,
               (std::vector<long long>{1, 2}));
   }
-  const TetMesh kept = with_tags("2147483647", "5");
+  const TetMesh kept = with_tags("2147482623", "5");  // kLargestElementTag
   EXPECT_TRUE(kept.extras.read_notes.empty());
   EXPECT_EQ(read_text(write_text(kept, MshFlavour::V41Binary)).extras.tet_element_tags,
-            (std::vector<long long>{2147483647, 5}));
+            (std::vector<long long>{2147482623, 5}));
+  // Binary MSH 2.2 numbers its elements with signed ints: a negative one
+  // is read, and noted like 0.
+  std::string binary = "$MeshFormat\n2.2 1 8\n";
+  const auto put = [&](auto value) { binary.append(reinterpret_cast<const char*>(&value), sizeof value); };
+  put(std::int32_t{1});
+  binary += "\n$EndMeshFormat\n$Nodes\n4\n";
+  const double corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (std::int32_t n = 0; n < 4; ++n) {
+    put(n + 1);
+    for (double c : corners[n]) put(c);
+  }
+  binary += "\n$EndNodes\n$Elements\n1\n";
+  for (std::int32_t v : {4, 1, 2, -6, 1, 1, 1, 2, 3, 4}) put(v);  // type, count, tags; number, tags, nodes
+  binary += "\n$EndElements\n";
+  const TetMesh negative = read_text(binary);
+  EXPECT_EQ(negative.num_tets(), 1u);
+  ASSERT_EQ(negative.extras.read_notes.size(), 1u);
+  EXPECT_NE(negative.extras.read_notes[0].find("element tag -6 is not positive"), std::string::npos);
+
   // Tags given in memory are checked on writing too: one repeated between
   // a tet and a triangle falls back to 1..N.
   TetMesh clash = kept;

@@ -73,8 +73,9 @@ int first_physical(const Entities& entities, int dim, int tag);
 std::optional<long long> unusable_tag(std::vector<long long> tags, long long largest = INT64_MAX);
 
 // Element tags are kept only where field data ($ElementData, whose tags are
-// 32-bit ints) can name them too.
-inline constexpr long long kLargestElementTag = INT32_MAX;
+// 32-bit ints) can name them too, with a margin: Gmsh 4.8 crashes reading
+// $ElementData whose tags come within 100 of INT32_MAX.
+inline constexpr long long kLargestElementTag = INT32_MAX - 1024;
 
 // Every element's tag from the file, tets first and then each pass-through
 // block (the order the writer writes them in), or empty when any element

@@ -97,8 +97,7 @@ void read_elements_v22(BinarySource& src, ReadState& state) {
     src.reservable(static_cast<std::uint64_t>(count), 4 * (1 + static_cast<std::size_t>(tags) + type.nodes));
     nodes.resize(static_cast<std::size_t>(type.nodes));
     for (int e = 0; e < count; ++e) {
-      const int id = src.int_value("element number");
-      if (id < 0) src.fail("negative element number " + std::to_string(id));
+      const int id = src.int_value("element number");  // one not positive is noted after reading
       int physical = 0, elementary = 0;
       for (int k = 0; k < tags; ++k) {
         const int value = src.int_value("element tag value");

@@ -275,9 +275,11 @@ void check_element_tags(FileExtras& extras, std::size_t tets) {
   if (!bad) return;
   extras.tet_element_tags.clear();
   for (PassThroughBlock& block : extras.blocks) block.element_tags.clear();
-  const char* why = *bad <= 0 ? " is not positive" : *bad > gmsh::kLargestElementTag ? " exceeds 2^31 - 1" : " is used twice";
+  const std::string why = *bad <= 0                        ? " is not positive"
+                          : *bad > gmsh::kLargestElementTag ? " exceeds " + std::to_string(gmsh::kLargestElementTag)
+                                                            : " is used twice";
   extras.read_notes.push_back("element tag " + std::to_string(*bad) + why +
-                              "; a written MSH file numbers the elements 1, 2, ... instead of keeping their tags");
+                              "; MSH output numbers the elements 1, 2, ... instead of keeping their tags");
 }
 
 template <class Source>

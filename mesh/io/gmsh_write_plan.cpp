@@ -1,6 +1,8 @@
 #include "mesh/io/gmsh_write_plan.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cstddef>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -157,6 +159,30 @@ void check_indices(const TetMesh& mesh, const std::vector<ElementGroup>& groups)
   }
 }
 
+// Kept tags go out in the file's order of types: Gmsh numbers points, lines
+// and triangles before the tets, and readers such as meshio expect field
+// data in ascending element order. Groups are put in the order of their
+// first tags (stable, so 1..N leaves the tets first), with `tags` permuted
+// to match.
+void order_groups_by_tag(std::vector<ElementGroup>& groups, std::vector<long long>& tags) {
+  std::vector<std::size_t> start(groups.size() + 1, 0);
+  for (std::size_t g = 0; g < groups.size(); ++g) start[g + 1] = start[g] + groups[g].count;
+  std::vector<std::size_t> order(groups.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto first = [&](std::size_t g) { return groups[g].count == 0 ? LLONG_MAX : tags[start[g]]; };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return first(a) < first(b); });
+  std::vector<ElementGroup> sorted_groups;
+  std::vector<long long> sorted_tags;
+  sorted_tags.reserve(tags.size());
+  for (std::size_t g : order) {
+    sorted_tags.insert(sorted_tags.end(), tags.begin() + static_cast<std::ptrdiff_t>(start[g]),
+                       tags.begin() + static_cast<std::ptrdiff_t>(start[g + 1]));
+    sorted_groups.push_back(std::move(groups[g]));
+  }
+  groups = std::move(sorted_groups);
+  tags = std::move(sorted_tags);
+}
+
 }  // namespace
 
 WritePlan plan_gmsh_output(const TetMesh& mesh) {
@@ -171,6 +197,7 @@ WritePlan plan_gmsh_output(const TetMesh& mesh) {
   for (const ElementGroup& g : groups) plan.element_count += g.count;
   plan.element_tags = output_tags(element_tags_in_write_order(mesh.extras, mesh.num_tets()), plan.element_count,
                                   kLargestElementTag);
+  order_groups_by_tag(groups, plan.element_tags);
   plan.groups = std::move(groups);
   return plan;
 }

@@ -41,7 +41,9 @@ struct WritePlan {
   Entities entities;
   std::string entities_text;         // $Entities body as written in ASCII
   std::string physical_names;        // $PhysicalNames body, or empty
-  std::vector<ElementGroup> groups;  // tets first, then the pass-through blocks
+  // The tets and the pass-through blocks, in the order of their first
+  // element tags (tets first when the elements are numbered 1, 2, ...).
+  std::vector<ElementGroup> groups;
   // Per element, in the order of `groups`: the file's element tags when
   // every element has one and they are positive, distinct and at most
   // kLargestElementTag, else 1, 2, ...

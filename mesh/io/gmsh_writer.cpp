@@ -112,15 +112,19 @@ void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const Me
     sink.end_body();
     out << "$EndNodeData\n";
   }
-  // Tets are the first T elements. The other elements get NaN ("no value")
-  // rather than no entry: readers such as meshio expect a value for every
-  // element.
+  // Every element, in the order of $Elements; the elements other than tets
+  // get NaN ("no value") rather than no entry: readers such as meshio
+  // expect a value for every element.
   for (const auto& [name, values] : fields.tet_scalars) {
     write_data_header(out, "ElementData", name, plan.element_count);
-    for (std::size_t e = 0; e < plan.element_count; ++e) {
-      sink.integer(plan.element_tags[e]);
-      sink.real(e < values.size() ? values[e] : std::numeric_limits<double>::quiet_NaN());
-      sink.end_record();
+    std::size_t written = 0;
+    for (const ElementGroup& g : plan.groups) {
+      const bool tets = g.type->id == gmsh::kTetType;
+      for (std::size_t e = 0; e < g.count; ++e) {
+        sink.integer(plan.element_tags[written++]);
+        sink.real(tets ? values[e] : std::numeric_limits<double>::quiet_NaN());
+        sink.end_record();
+      }
     }
     sink.end_body();
     out << "$EndElementData\n";

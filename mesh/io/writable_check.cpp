@@ -81,6 +81,14 @@ std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   return lost;
 }
 
+// Whether the file's ids are just positions (1, 2, ... in order), which
+// every format keeps by writing the items in order.
+bool positional(const std::vector<long long>& tags) {
+  for (std::size_t i = 0; i < tags.size(); ++i)
+    if (tags[i] != static_cast<long long>(i) + 1) return false;
+  return true;
+}
+
 }  // namespace
 
 std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& path, MeshFormat format) {
@@ -107,6 +115,11 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (f != MeshFormat::TetGen && e.node_attribute_count > 0 && !e.node_attributes.empty())
     notes.push_back("the node attributes (" + std::to_string(e.node_attribute_count) +
                     " per node) will not be written: " + name + " has no place for them");
+  const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
+  const bool node_ids = !positional(e.node_tags), element_ids = !positional(e.tet_element_tags);
+  if (!msh && (node_ids || element_ids))
+    notes.push_back(std::string("the Gmsh ") + (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
+                    " tags will not be written: " + name + " numbers them by position");
   if (f == MeshFormat::Cache && !e.tet_tags.empty())
     notes.push_back("the region tags will not be written: " + name + " holds coordinates and tets only");
   return notes;

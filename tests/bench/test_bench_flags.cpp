@@ -55,6 +55,18 @@ TEST(BenchFlags, ALaterFlagReplacesAnEarlierOne) {
   EXPECT_EQ(c.precision, Precision::Double);
 }
 
+TEST(BenchFlags, ScalingNoneDropsTheLatticeAndRepeatsCountOnce) {
+  Args off({"--scaling=lattice-215", "--scaling=none"});
+  EXPECT_TRUE(off.take().scaling.empty());
+  Args empty({"--scaling=lattice-215", "--scaling="});
+  EXPECT_TRUE(empty.take().scaling.empty());
+  // A model named twice, under either name, would register its benchmarks twice.
+  Args twice({"--models=77k,slope-77k,5k,5k", "--scaling=lattice-20,lattice-20"});
+  const BenchConfig c = twice.take();
+  EXPECT_EQ(c.models, (std::vector<std::string>{"77k", "5k"}));
+  EXPECT_EQ(c.scaling, (std::vector<std::string>{"lattice-20"}));
+}
+
 TEST(BenchFlags, BadValuesNameTheFlag) {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"--models=5k,12k", "--models: unknown model '12k'"},

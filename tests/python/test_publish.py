@@ -75,6 +75,30 @@ class PublishResults(unittest.TestCase):
                 open(SMALL, encoding="utf-8") as original:
             self.assertEqual(json.load(kept), json.load(original))
 
+    def test_bad_arguments_change_nothing(self):
+        logs = os.path.join(self.tmp, "out")
+        os.mkdir(logs)
+        self.write(os.path.join("out", "gpu_tests.log"), "tests")
+        self.assertEqual(publish("--dest", self.dest, "--logs", logs, SMALL, SMALL).returncode, 0)
+        before = sorted(os.listdir(self.dest))
+        for args in (["--logs", os.path.join(self.tmp, "no-such-folder"), SMALL],  # no log to take
+                     ["--logs", self.tmp, SMALL],                                 # a folder without logs
+                     [SMALL, ""],                                                  # an empty FLOAT
+                     [SMALL, os.path.join(self.tmp, "missing float.json")]):
+            done = publish("--dest", self.dest, *args)
+            self.assertEqual(done.returncode, 2, args)
+            self.assertEqual(sorted(os.listdir(self.dest)), before, args)
+
+    def test_paths_are_the_callers_and_may_hold_spaces(self):
+        spaced = os.path.join(self.tmp, "a b")
+        os.mkdir(spaced)
+        shutil.copy(SMALL, os.path.join(spaced, "float run.json"))
+        done = subprocess.run(["bash", SCRIPT, "--dest", "rel dest", SMALL, os.path.join("a b", "float run.json")],
+                              capture_output=True, text=True, timeout=300, cwd=self.tmp)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertTrue(os.path.isfile(os.path.join(self.tmp, "rel dest", "bench_float.json")))
+        self.assertNotIn("/tmp/tmp.", done.stdout, "names the staging folder instead of the destination")
+
     def test_device_folder_names_the_whole_board(self):
         with open(SMALL, encoding="utf-8") as handle:
             result = json.load(handle)

@@ -56,7 +56,7 @@ except (OSError, ValueError) as error:
 name = ctx.get("gpu_name")
 model = re.sub(r"\bnvidia\b", "", name.lower()) if name else "cpu " + ctx.get("host_name", "unknown")
 print(re.sub(r"[^a-z0-9]+", "-", model).strip("-"))
-' "$json")
+' "$json") || exit 2
   dest=results/$device
 fi
 stage=$(mktemp -d)

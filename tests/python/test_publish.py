@@ -115,6 +115,11 @@ class PublishResults(unittest.TestCase):
                                   capture_output=True, text=True, timeout=300)
             self.assertEqual(done.returncode, 0, done.stderr)
             self.assertTrue(os.path.isfile(os.path.join(repo, "results", folder, "tables.md")), gpu)
+        # Naming the folder reads the JSON: a broken one is bad input (2).
+        done = subprocess.run(["bash", os.path.join(repo, "scripts", "publish_results.sh"), self.write("bad.json", "{x")],
+                              capture_output=True, text=True, timeout=300)
+        self.assertEqual(done.returncode, 2, done.stderr)
+        self.assertIn("not benchmark JSON", done.stderr)
 
 
 if __name__ == "__main__":

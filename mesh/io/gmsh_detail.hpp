@@ -78,9 +78,8 @@ std::optional<long long> unusable_tag(std::vector<long long> tags, long long lar
 inline constexpr long long kLargestElementTag = INT32_MAX - 1024;
 
 // Every element's tag from the file, tets first and then each pass-through
-// block (the order the writer writes them in), or empty when any element
-// has none.
-std::vector<long long> element_tags_in_write_order(const FileExtras& extras, std::size_t tets);
+// block, or empty when any element has none.
+std::vector<long long> file_element_tags(const FileExtras& extras, std::size_t tets);
 
 // The body of an ASCII $Entities section, parsed (throws InputError naming
 // `source` and the line) and written back.

@@ -49,7 +49,6 @@ PassThroughBlock& ReadState::block_for(const ElementType& type) {
   return block;
 }
 
-
 template <class Source>
 void read_nodes_v41(Source& src, ReadState& state) {
   const std::uint64_t blocks = src.size_value("number of node blocks");

@@ -271,7 +271,7 @@ void merge_partitions(ReadState& state) {
 // refuse; the user hears of it.
 void check_element_tags(FileExtras& extras, std::size_t tets) {
   const std::optional<long long> bad =
-      gmsh::unusable_tag(gmsh::element_tags_in_write_order(extras, tets), gmsh::kLargestElementTag);
+      gmsh::unusable_tag(gmsh::file_element_tags(extras, tets), gmsh::kLargestElementTag);
   if (!bad) return;
   extras.tet_element_tags.clear();
   for (PassThroughBlock& block : extras.blocks) block.element_tags.clear();

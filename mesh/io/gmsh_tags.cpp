@@ -1,6 +1,6 @@
 // Node and element tags as MSH can write them back: Gmsh requires them to
 // be positive and distinct (within nodes, and within all elements of every
-// dimension together).
+// dimension together), and field data names them by 32-bit ints.
 #include <algorithm>
 
 #include "mesh/file_extras.hpp"
@@ -17,7 +17,7 @@ std::optional<long long> unusable_tag(std::vector<long long> tags, long long lar
   return std::nullopt;
 }
 
-std::vector<long long> element_tags_in_write_order(const FileExtras& extras, std::size_t tets) {
+std::vector<long long> file_element_tags(const FileExtras& extras, std::size_t tets) {
   if (extras.tet_element_tags.size() != tets) return {};
   std::vector<long long> all = extras.tet_element_tags;
   for (const PassThroughBlock& block : extras.blocks) {

@@ -195,7 +195,7 @@ WritePlan plan_gmsh_output(const TetMesh& mesh) {
   plan.node_tags = output_tags(mesh.extras.node_tags, mesh.num_nodes(), INT64_MAX);
   if (const std::string* names = raw_section(mesh.extras, "$PhysicalNames")) plan.physical_names = *names;
   for (const ElementGroup& g : groups) plan.element_count += g.count;
-  plan.element_tags = output_tags(element_tags_in_write_order(mesh.extras, mesh.num_tets()), plan.element_count,
+  plan.element_tags = output_tags(file_element_tags(mesh.extras, mesh.num_tets()), plan.element_count,
                                   kLargestElementTag);
   order_groups_by_tag(groups, plan.element_tags);
   plan.groups = std::move(groups);

@@ -404,6 +404,25 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   const CliRun to_msh = run({"convert", path("ids.msh"), path("ids22.msh"), "--output-format", "msh22"});
   EXPECT_EQ(to_msh.err.find("will not be written"), std::string::npos) << to_msh.err;
   EXPECT_EQ(read_mesh(path("ids22.msh")).extras.tet_element_tags, ids.extras.tet_element_tags);
+  // Node tags past the 32-bit ints of field data are named before the work
+  // and cost no write: MSH 4.1 keeps them without node fields, 2.2 renumbers.
+  TetMesh wide = testing::cube_with_centre();
+  for (std::size_t i = 0; i < wide.num_nodes(); ++i) wide.extras.node_tags.push_back(3000000000LL + static_cast<long long>(i));
+  write_mesh(wide, path("wide.msh"));
+  const CliRun wide41 = run({"smooth", path("wide.msh"), "-o", path("wide-out.msh"), "--device", "cpu"});
+  EXPECT_EQ(wide41.code, kExitOk) << wide41.err;
+  EXPECT_NE(wide41.err.find("no node field data will be written: MSH names the nodes of field data by 32-bit int and "
+                            "node tag 3000000008 is larger"),
+            std::string::npos)
+      << wide41.err;
+  EXPECT_LT(wide41.err.find("will be written"), wide41.err.find("done:")) << wide41.err;
+  EXPECT_EQ(read_mesh(path("wide-out.msh")).extras.node_tags, wide.extras.node_tags);
+  const CliRun wide22 = run({"convert", path("wide.msh"), path("wide22.msh"), "--output-format", "msh22"});
+  EXPECT_EQ(wide22.code, kExitOk) << wide22.err;
+  EXPECT_NE(wide22.err.find("the Gmsh node tags will not be written (nodes are numbered 1, 2, ...): MSH 2.2"),
+            std::string::npos)
+      << wide22.err;
+  EXPECT_EQ(read_mesh(path("wide22.msh")).extras.node_tags, (std::vector<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9}));
   // Our own MSH numbers nodes and elements 1, 2, ...: nothing to lose.
   write_mesh(testing::cube_with_centre(), path("plain.msh"));
   const CliRun positional = run({"convert", path("plain.msh"), path("plain.vtu")});

@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "support/test_meshes.hpp"
@@ -466,7 +467,7 @@ TEST(GmshIo, UnusableElementTagsAreNotedAndRenumbered) {
     EXPECT_EQ(read_text(write_text(mesh, MshFlavour::V41Ascii)).extras.tet_element_tags,
               (std::vector<long long>{1, 2}));
   }
-  const TetMesh kept = with_tags("2147482623", "5");  // kLargestElementTag
+  const TetMesh kept = with_tags("2147482623", "5");  // kLargestIntTag
   EXPECT_TRUE(kept.extras.read_notes.empty());
   EXPECT_EQ(read_text(write_text(kept, MshFlavour::V41Binary)).extras.tet_element_tags,
             (std::vector<long long>{2147482623, 5}));
@@ -633,19 +634,39 @@ TEST(GmshIo, WriterRefusesWhatMshCannotHold) {
   MeshFields fields;
   fields.tet_scalars.push_back({"short", {}});
   EXPECT_THROW(write_text(mesh, MshFlavour::V41Ascii, fields), std::invalid_argument);
-  // Field data tags are 32-bit: a node tag beyond that cannot carry a value.
-  TetMesh sparse = mesh;
-  sparse.extras.node_tags = {1, 2, 3, 1LL << 40};
-  MeshFields node_field;
-  node_field.node_scalars.push_back({"p", {0, 1, 2, 3}});
-  EXPECT_THROW(write_text(sparse, MshFlavour::V41Binary, node_field), OutputError);
-  EXPECT_NO_THROW(write_text(sparse, MshFlavour::V41Binary));
   PassThroughBlock polygon;
   polygon.kind = "polygon";
   polygon.nodes_per_element = 5;
   polygon.connectivity = {0, 1, 2, 3, 0};
   mesh.extras.blocks.push_back(polygon);
   EXPECT_THROW(write_text(mesh, MshFlavour::V22Ascii), OutputError);
+}
+
+// Field data name nodes by 32-bit int. A node tag past that stays in MSH
+// 4.1's $Nodes (size_t), which then carries no $NodeData; MSH 2.2, which
+// numbers nodes by int, numbers them 1, 2, ... and keeps its node fields.
+TEST(GmshIo, NodeTagsPastTheIntRangeCostFieldsOrTags) {
+  TetMesh sparse = testing::regular_tet();
+  sparse.extras.node_tags = {1, 2, 3, gmsh::kLargestIntTag + 1};
+  MeshFields fields;
+  fields.node_scalars.push_back({"p", {0, 1, 2, 3}});
+  fields.tet_scalars.push_back({"q", {0.5}});
+  for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V41Binary}) {
+    const std::string text = write_text(sparse, flavour, fields);
+    EXPECT_EQ(text.find("$NodeData"), std::string::npos);
+    EXPECT_NE(text.find("$ElementData"), std::string::npos);
+    EXPECT_EQ(read_text(text).extras.node_tags, sparse.extras.node_tags);
+  }
+  const std::string v22 = write_text(sparse, MshFlavour::V22Ascii, fields);
+  EXPECT_NE(v22.find("$NodeData"), std::string::npos);
+  EXPECT_EQ(read_text(v22).extras.node_tags, (std::vector<long long>{1, 2, 3, 4}));
+  // At the limit, both flavours keep the tags and the fields.
+  sparse.extras.node_tags.back() = gmsh::kLargestIntTag;
+  for (MshFlavour flavour : {MshFlavour::V41Binary, MshFlavour::V22Ascii}) {
+    const std::string text = write_text(sparse, flavour, fields);
+    EXPECT_NE(text.find("$NodeData"), std::string::npos);
+    EXPECT_EQ(read_text(text).extras.node_tags, sparse.extras.node_tags);
+  }
 }
 
 TEST(GmshIo, FileWriterReplacesTargetOrThrows) {

@@ -72,10 +72,17 @@ int first_physical(const Entities& entities, int dim, int tag);
 // `largest`: a tag of `tags` that is not, or nullopt when all are.
 std::optional<long long> unusable_tag(std::vector<long long> tags, long long largest = INT64_MAX);
 
-// Element tags are kept only where field data ($ElementData, whose tags are
-// 32-bit ints) can name them too, with a margin: Gmsh 4.8 crashes reading
-// $ElementData whose tags come within 100 of INT32_MAX.
-inline constexpr long long kLargestElementTag = INT32_MAX - 1024;
+// The largest tag written where MSH holds tags as 32-bit ints (element tags
+// in $ElementData, node tags in $NodeData and in MSH 2.2's $Nodes), with a
+// margin: Gmsh 4.8 crashes reading $ElementData whose tags come within 100
+// of INT32_MAX. Element tags are kept only up to it; node tags above it are
+// kept in MSH 4.1's $Nodes (size_t), where they cost the file its node
+// field data instead.
+inline constexpr long long kLargestIntTag = INT32_MAX - 1024;
+
+// Whether field data can name every one of these node tags (empty: the
+// nodes are numbered 1, 2, ...).
+bool node_tags_fit_int(const std::vector<long long>& node_tags);
 
 // Every element's tag from the file, tets first and then each pass-through
 // block, or empty when any element has none.

@@ -271,12 +271,12 @@ void merge_partitions(ReadState& state) {
 // refuse; the user hears of it.
 void check_element_tags(FileExtras& extras, std::size_t tets) {
   const std::optional<long long> bad =
-      gmsh::unusable_tag(gmsh::file_element_tags(extras, tets), gmsh::kLargestElementTag);
+      gmsh::unusable_tag(gmsh::file_element_tags(extras, tets), gmsh::kLargestIntTag);
   if (!bad) return;
   extras.tet_element_tags.clear();
   for (PassThroughBlock& block : extras.blocks) block.element_tags.clear();
   const std::string why = *bad <= 0                        ? " is not positive"
-                          : *bad > gmsh::kLargestElementTag ? " exceeds " + std::to_string(gmsh::kLargestElementTag)
+                          : *bad > gmsh::kLargestIntTag ? " exceeds " + std::to_string(gmsh::kLargestIntTag)
                                                             : " is used twice";
   extras.read_notes.push_back("element tag " + std::to_string(*bad) + why +
                               "; MSH output numbers the elements 1, 2, ... instead of keeping their tags");

@@ -17,6 +17,10 @@ std::optional<long long> unusable_tag(std::vector<long long> tags, long long lar
   return std::nullopt;
 }
 
+bool node_tags_fit_int(const std::vector<long long>& node_tags) {
+  return std::all_of(node_tags.begin(), node_tags.end(), [](long long tag) { return tag <= kLargestIntTag; });
+}
+
 std::vector<long long> file_element_tags(const FileExtras& extras, std::size_t tets) {
   if (extras.tet_element_tags.size() != tets) return {};
   std::vector<long long> all = extras.tet_element_tags;

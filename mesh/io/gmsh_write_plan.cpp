@@ -185,18 +185,19 @@ void order_groups_by_tag(std::vector<ElementGroup>& groups, std::vector<long lon
 
 }  // namespace
 
-WritePlan plan_gmsh_output(const TetMesh& mesh) {
+WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour) {
   if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
   WritePlan plan;
   std::vector<ElementGroup> groups = given_groups(mesh);
   check_indices(mesh, groups);
   if (!adopt_file_entities(mesh.extras, groups, plan)) make_entities(mesh, groups, plan);
   classify_nodes(mesh, groups, plan);
-  plan.node_tags = output_tags(mesh.extras.node_tags, mesh.num_nodes(), INT64_MAX);
+  plan.node_tags = output_tags(mesh.extras.node_tags, mesh.num_nodes(),
+                               flavour == MshFlavour::V22Ascii ? kLargestIntTag : INT64_MAX);
   if (const std::string* names = raw_section(mesh.extras, "$PhysicalNames")) plan.physical_names = *names;
   for (const ElementGroup& g : groups) plan.element_count += g.count;
   plan.element_tags = output_tags(file_element_tags(mesh.extras, mesh.num_tets()), plan.element_count,
-                                  kLargestElementTag);
+                                  kLargestIntTag);
   order_groups_by_tag(groups, plan.element_tags);
   plan.groups = std::move(groups);
   return plan;

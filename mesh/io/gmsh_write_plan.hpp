@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "mesh/io/gmsh_detail.hpp"
+#include "mesh/io/gmsh_io.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::gmsh {
@@ -35,7 +36,10 @@ struct ElementGroup {
 };
 
 struct WritePlan {
-  std::vector<long long> node_tags;  // per node, positive and distinct
+  // Per node: the file's node tags when every node has one and they are
+  // positive, distinct and (in MSH 2.2, which numbers nodes by int) at most
+  // kLargestIntTag, else 1, 2, ...
+  std::vector<long long> node_tags;
   std::vector<int> node_dims;        // per node: the entity it is classified on
   std::vector<int> node_entities;
   Entities entities;
@@ -46,12 +50,12 @@ struct WritePlan {
   std::vector<ElementGroup> groups;
   // Per element, in the order of `groups`: the file's element tags when
   // every element has one and they are positive, distinct and at most
-  // kLargestElementTag, else 1, 2, ...
+  // kLargestIntTag, else 1, 2, ...
   std::vector<long long> element_tags;
   std::size_t element_count = 0;
 };
 
 // Throws OutputError for pass-through blocks that MSH cannot hold.
-WritePlan plan_gmsh_output(const TetMesh& mesh);
+WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour);
 
 }  // namespace tetsmooth::gmsh

@@ -1,7 +1,6 @@
 // Gmsh MSH writing: MSH 4.1 through one body for both encodings, MSH 2.2
 // ASCII. Everything the file needs is planned first (gmsh_write_plan.hpp).
 #include <algorithm>
-#include <climits>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
@@ -79,19 +78,6 @@ void check_fields(const TetMesh& mesh, const MeshFields& fields) {
                                   std::to_string(mesh.num_tets()) + " tets");
 }
 
-// Field data name their nodes and elements by 4-byte int tags (unlike
-// $Nodes and $Elements, where tags are size_t).
-void check_field_tags(const WritePlan& plan, const MeshFields& fields) {
-  const auto too_large = [](long long tag) {
-    if (tag > INT_MAX)
-      throw OutputError("tag " + std::to_string(tag) + " is too large for MSH field data (a 32-bit int)");
-  };
-  if (!fields.node_scalars.empty())
-    for (long long tag : plan.node_tags) too_large(tag);
-  if (!fields.tet_scalars.empty())
-    for (long long tag : plan.element_tags) too_large(tag);
-}
-
 // One $NodeData or $ElementData view at time 0; the header is text in
 // every flavour.
 void write_data_header(std::ostream& out, const char* section, const std::string& name, std::size_t count) {
@@ -102,16 +88,20 @@ void write_data_header(std::ostream& out, const char* section, const std::string
 
 template <class Sink>
 void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const MeshFields& fields) {
-  for (const auto& [name, values] : fields.node_scalars) {
-    write_data_header(out, "NodeData", name, values.size());
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      sink.integer(plan.node_tags[i]);
-      sink.real(values[i]);
-      sink.end_record();
+  // Field data name nodes by int; node tags past that, which only MSH 4.1's
+  // $Nodes holds, cost the file its node fields (output_losses says so
+  // before the work). Element tags always fit: the plan keeps no others.
+  if (gmsh::node_tags_fit_int(plan.node_tags))
+    for (const auto& [name, values] : fields.node_scalars) {
+      write_data_header(out, "NodeData", name, values.size());
+      for (std::size_t i = 0; i < values.size(); ++i) {
+        sink.integer(plan.node_tags[i]);
+        sink.real(values[i]);
+        sink.end_record();
+      }
+      sink.end_body();
+      out << "$EndNodeData\n";
     }
-    sink.end_body();
-    out << "$EndNodeData\n";
-  }
   // Every element, in the order of $Elements; the elements other than tets
   // get NaN ("no value") rather than no entry: readers such as meshio
   // expect a value for every element.
@@ -300,8 +290,7 @@ void write_planned(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, c
 
 void write_gmsh(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, const MeshFields& fields) {
   check_fields(mesh, fields);
-  const WritePlan plan = gmsh::plan_gmsh_output(mesh);
-  check_field_tags(plan, fields);
+  const WritePlan plan = gmsh::plan_gmsh_output(mesh, flavour);
   write_planned(mesh, out, flavour, plan, fields);
   if (!out) throw OutputError("the MSH output stream failed");
 }
@@ -310,8 +299,7 @@ void write_gmsh_file(const TetMesh& mesh, const std::string& path, MshFlavour fl
   check_fields(mesh, fields);
   WritePlan plan;
   try {
-    plan = gmsh::plan_gmsh_output(mesh);
-    check_field_tags(plan, fields);
+    plan = gmsh::plan_gmsh_output(mesh, flavour);
   } catch (const OutputError& e) {
     throw OutputError("cannot write '" + path + "': " + e.what());
   }

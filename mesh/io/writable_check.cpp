@@ -5,6 +5,7 @@
 #include <streambuf>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
@@ -120,6 +121,14 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (!msh && (node_ids || element_ids))
     notes.push_back(std::string("the Gmsh ") + (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
                     " tags will not be written: " + name + " numbers them by position");
+  if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
+    const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));
+    notes.push_back(f == MeshFormat::Msh22
+                        ? "the Gmsh node tags will not be written (nodes are numbered 1, 2, ...): MSH 2.2 numbers "
+                          "nodes by 32-bit int and node tag " + largest + " is larger"
+                        : "no node field data will be written: MSH names the nodes of field data by 32-bit int and "
+                          "node tag " + largest + " is larger");
+  }
   if (f == MeshFormat::Cache && !e.tet_tags.empty())
     notes.push_back("the region tags will not be written: " + name + " holds coordinates and tets only");
   return notes;

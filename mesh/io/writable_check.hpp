@@ -13,8 +13,7 @@ namespace tetsmooth {
 // hexahedron in VTK output for instance. The writers' own checks decide: they
 // run on a probe that has the mesh's element kinds and tags but only one tet
 // and no other elements, written nowhere, so the check costs microseconds
-// whatever the mesh's size. What depends on the values themselves (a tag too
-// large for MSH field data) is still found only by the real write.
+// whatever the mesh's size.
 void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat format = MeshFormat::Auto);
 
 // What `format` (Auto: from the name) will not carry of what the mesh holds,
@@ -22,7 +21,9 @@ void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat for
 // tets (TetGen and .tsm hold tets only), the pins of fixed nodes (MSH keeps
 // a pin only through an element on the node, TetGen and .tsm not at all;
 // a later run would move such nodes), TetGen node markers and attributes,
-// and region tags (.tsm).
+// region tags (.tsm), Gmsh node and element tags (formats other than MSH),
+// and what Gmsh node tags past the 32-bit ints of field data cost in MSH
+// (their node fields in 4.1, the tags themselves in 2.2).
 std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& path,
                                        MeshFormat format = MeshFormat::Auto);
 

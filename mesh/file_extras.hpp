@@ -35,6 +35,12 @@ struct FileExtras {
   std::vector<int> node_markers;
   int node_attribute_count = 0;
   std::vector<double> node_attributes;
+  // TetGen .ele attributes (tet_attribute_count per tet, row-major), kept
+  // when tet_tags cannot give them back: more than one per tet, or a region
+  // attribute (the first) that is not a whole number in int range. Empty
+  // otherwise, tet_tags then holding the region attribute itself.
+  int tet_attribute_count = 0;
+  std::vector<double> tet_attributes;
   // Gmsh MSH 4.1: the model entity (dimension, tag) each node is classified
   // on, one pair per node, or empty. Medit vertex references go to
   // node_markers, the same per-node label as TetGen's boundary markers.

@@ -40,6 +40,10 @@ void check_shapes(const TetMesh& mesh, const std::string& source) {
   if (mesh.extras.node_attributes.size() != attrs * mesh.num_nodes() && !mesh.extras.node_attributes.empty())
     fail(source, "node attribute array has " + std::to_string(mesh.extras.node_attributes.size()) +
                      " values, expected " + std::to_string(attrs) + " per node");
+  const std::size_t tet_attrs = static_cast<std::size_t>(std::max(mesh.extras.tet_attribute_count, 0));
+  if (mesh.extras.tet_attributes.size() != tet_attrs * mesh.num_tets() && !mesh.extras.tet_attributes.empty())
+    fail(source, "tet attribute array has " + std::to_string(mesh.extras.tet_attributes.size()) +
+                     " values, expected " + std::to_string(tet_attrs) + " per tet");
   per_tet(mesh.extras.tet_tags.size(), "the tet tag array");
   per_tet(mesh.extras.tet_entity_tags.size(), "the tet entity tag array");
   per_tet(mesh.extras.tet_element_tags.size(), "the tet element tag array");

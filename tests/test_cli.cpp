@@ -392,6 +392,16 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   const CliRun vtu = run({"convert", path("attrs.node"), path("attrs.vtu")});
   EXPECT_NE(vtu.err.find("the node attributes (1 per node) will not be written: vtu has no place for them"), std::string::npos)
       << vtu.err;
+  std::ofstream(path("ranked.node")) << "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  std::ofstream(path("ranked.ele")) << "1 4 2\n1 1 2 3 4 0.5 9\n";
+  const CliRun ranked = run({"convert", path("ranked.node"), path("ranked.mesh")});
+  EXPECT_EQ(ranked.code, kExitOk) << ranked.err;
+  EXPECT_NE(ranked.err.find("region attribute 0.5 is not a whole number"), std::string::npos) << ranked.err;
+  EXPECT_NE(ranked.err.find("the TetGen tet attributes (2 per tet) will not be written: medit keeps only the region "
+                            "tags, numbered from the first attribute"),
+            std::string::npos)
+      << ranked.err;
+  EXPECT_EQ(read_mesh(path("ranked.mesh")).extras.tet_tags, (std::vector<int>{1}));
 
   // Gmsh element ids that are not just positions survive only in MSH.
   TetMesh ids = testing::cube_with_centre();

@@ -186,7 +186,7 @@ TEST(TetGenErrors, BadHeaders) {
   EXPECT_NE(read_error("5 2 0 0\n", kEle).find("box.node:1: dimension 2"), std::string::npos);
   EXPECT_NE(read_error("-5 3 0 0\n", kEle).find("box.node:1"), std::string::npos);
   EXPECT_NE(read_error(kNode, "2 10 0\n").find("box.ele:1: second-order"), std::string::npos);
-  EXPECT_NE(read_error(kNode, "2 4 2\n").find("box.ele:1"), std::string::npos);
+  EXPECT_NE(read_error(kNode, "2 4 -1\n").find("box.ele:1"), std::string::npos);
   EXPECT_NE(read_error(kNode, "0 4 0\n").find("box.ele:1"), std::string::npos);
 }
 
@@ -197,10 +197,55 @@ TEST(TetGenErrors, NodeNumbering) {
             std::string::npos);
 }
 
-TEST(TetGenErrors, NonIntegerRegionAttribute) {
-  const std::string msg = read_error(kNode, "2 4 1\n0 0 1 2 3 1\n1 1 2 3 4 1.5\n");
+// TetGen's region attributes are reals. Where one is not a whole number in
+// int range, the regions are tagged by rank of value, and the attributes
+// themselves are kept for TetGen output.
+TEST_F(TetGenIo, RegionAttributesThatAreNotWholeAreRankedAndWrittenBack) {
+  for (const auto& [first, why] : {std::pair{"1.5", "region attribute 1.5 is not a whole number"},
+                                   std::pair{"3e9", "region attribute 3e+09 is not a whole number in int range"}}) {
+    std::istringstream n(kNode), e("3 4 1\n0 0 1 2 3 " + std::string(first) + "\n1 1 2 3 4 -0.25\n2 0 1 2 4 " +
+                                   first + "\n");
+    const TetMesh mesh = read_tetgen(n, "box.node", e, "box.ele");
+    EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2, 1, 2})) << first;
+    ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
+    EXPECT_NE(mesh.extras.read_notes[0].find(why), std::string::npos) << mesh.extras.read_notes[0];
+    EXPECT_NE(mesh.extras.read_notes[0].find("the 2 regions are tagged 1, 2, ..."), std::string::npos);
+    EXPECT_EQ(mesh.extras.tet_attribute_count, 1);
+    write_tetgen(mesh, path("ranked"));
+    const TetMesh back = read_tetgen(path("ranked"));
+    EXPECT_EQ(back.extras.tet_attributes, mesh.extras.tet_attributes);
+    EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  }
+}
+
+// Several attributes a tet (TetGen keeps an input's on refinement): the
+// first is the region, and all of them are written back.
+TEST_F(TetGenIo, SeveralTetAttributesAreKept) {
+  std::istringstream n(kNode), e("2 4 3\n0 0 1 2 3 7 0.5 1e-3\n1 1 2 3 4 -3 2 -1e300\n");
+  const TetMesh mesh = read_tetgen(n, "box.node", e, "box.ele");
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, -3}));
+  EXPECT_TRUE(mesh.extras.read_notes.empty());
+  EXPECT_EQ(mesh.extras.tet_attribute_count, 3);
+  EXPECT_EQ(mesh.extras.tet_attributes, (std::vector<double>{7, 0.5, 1e-3, -3, 2, -1e300}));
+  write_tetgen(mesh, path("three"));
+  std::ifstream ele(path("three.ele"));
+  std::string line;
+  std::getline(ele, line);
+  EXPECT_EQ(line, "2 4 3");
+  std::getline(ele, line);
+  EXPECT_EQ(line, "1 1 2 3 4 7 0.5 0.001");
+  EXPECT_EQ(read_tetgen(path("three")).extras.tet_attributes, mesh.extras.tet_attributes);
+  // One whole region attribute needs no copy: the tags give it back.
+  std::istringstream n1(kNode), e1("2 4 1\n0 0 1 2 3 7\n1 1 2 3 4 -3\n");
+  const TetMesh one = read_tetgen(n1, "box.node", e1, "box.ele");
+  EXPECT_TRUE(one.extras.tet_attributes.empty());
+  EXPECT_EQ(one.extras.tet_attribute_count, 0);
+}
+
+TEST(TetGenErrors, MissingTetAttributeNamesTheLine) {
+  const std::string msg = read_error(kNode, "2 4 2\n0 0 1 2 3 1 4\n1 1 2 3 4 1\n");
   EXPECT_NE(msg.find("box.ele:3"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("1.5"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("tet attribute"), std::string::npos) << msg;
 }
 
 TEST(TetGenErrors, ReadsRegionAttributesWrittenAsReals) {

@@ -97,6 +97,11 @@ TEST(Validate, RejectsWrongArrayShapes) {
   TetMesh tags = testing::regular_tet();
   tags.extras.tet_tags = {1, 2};
   EXPECT_NE(validation_error(tags).find("tet tag"), std::string::npos);
+
+  TetMesh attrs = testing::regular_tet();
+  attrs.extras.tet_attribute_count = 2;
+  attrs.extras.tet_attributes = {0.5, 1, 2};
+  EXPECT_NE(validation_error(attrs).find("tet attribute array has 3 values, expected 2 per tet"), std::string::npos);
 }
 
 TEST(Validate, RejectsMeshWithoutTets) {

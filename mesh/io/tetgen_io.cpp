@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/atomic_file.hpp"
@@ -36,6 +37,44 @@ std::size_t capped(std::size_t n) { return std::min<std::size_t>(n, std::size_t{
 void expect_end(TextLines& lines, std::size_t count, const char* what) {
   if (lines.next_line())
     lines.fail("more data than the " + std::to_string(count) + " " + what + " the header declares");
+}
+
+// The region attribute of each tet (the first of `attrs` a tet) becomes its
+// tag: the value itself where all are whole numbers in int range, else its
+// rank among the distinct values (1 for the lowest), with a note. What the
+// tags cannot give back stays in tet_attributes.
+void take_tet_attributes(std::vector<double> values, std::size_t attrs, FileExtras& extras) {
+  extras.tet_tags.clear();
+  extras.tet_attributes.clear();
+  extras.tet_attribute_count = 0;
+  if (attrs == 0) return;
+  const std::size_t tets = values.size() / attrs;
+  std::vector<double> regions(tets);
+  for (std::size_t t = 0; t < tets; ++t) regions[t] = values[t * attrs];
+  const auto not_whole = std::find_if(regions.begin(), regions.end(), [](double v) {
+    return v != std::floor(v) || std::abs(v) > std::numeric_limits<int>::max();
+  });
+  extras.tet_tags.reserve(tets);
+  if (not_whole == regions.end()) {
+    for (double v : regions) extras.tet_tags.push_back(static_cast<int>(v));
+  } else {
+    std::ostringstream example;
+    put_real(example, *not_whole);
+    std::vector<double> distinct = regions;
+    std::sort(distinct.begin(), distinct.end());
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    for (double v : regions)
+      extras.tet_tags.push_back(
+          1 + static_cast<int>(std::lower_bound(distinct.begin(), distinct.end(), v) - distinct.begin()));
+    extras.read_notes.push_back("region attribute " + example.str() +
+                                " is not a whole number in int range: the " + std::to_string(distinct.size()) +
+                                " regions are tagged 1, 2, ... in ascending order of attribute value (TetGen output "
+                                "writes the attributes back as they were)");
+  }
+  if (not_whole != regions.end() || attrs > 1) {
+    extras.tet_attribute_count = static_cast<int>(attrs);
+    extras.tet_attributes = std::move(values);
+  }
 }
 
 }  // namespace
@@ -89,20 +128,19 @@ int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh)
 
 void read_tetgen_ele(std::istream& in, const std::string& source, int first_index, TetMesh& mesh) {
   TextLines lines(in, source);
-  lines.require_line("the .ele header \"<#tets> 4 <region attribute 0|1>\"");
+  lines.require_line("the .ele header \"<#tets> 4 <#attributes>\"");
   const std::size_t count = count_field(lines, 0, "tet count");
   if (count == 0) lines.fail("the .ele file declares no tets");
   const long long per_tet = lines.size() > 1 ? lines.integer(1, "nodes per tet") : 4;
   if (per_tet == 10) lines.fail("second-order tets (10 nodes per tet) are not supported");
   if (per_tet != 4) lines.fail("nodes per tet must be 4, found " + std::to_string(per_tet));
-  const long long attrs = lines.size() > 2 ? lines.integer(2, "region attribute count") : 0;
-  if (attrs != 0 && attrs != 1)
-    lines.fail("at most one region attribute per tet is supported, found " + std::to_string(attrs));
+  const std::size_t attrs = lines.size() > 2 ? count_field(lines, 2, "attribute count") : 0;
 
   const long long num_nodes = static_cast<long long>(mesh.num_nodes());
   mesh.tets.clear();
   mesh.tets.reserve(4 * capped(count));
-  mesh.extras.tet_tags.clear();
+  std::vector<double> attributes;
+  attributes.reserve(capped(capped(count) * attrs));
   for (std::size_t t = 0; t < count; ++t) {
     lines.require_line("tet " + std::to_string(t + 1) + " of " + std::to_string(count));
     lines.integer(0, "tet number");
@@ -113,14 +151,11 @@ void read_tetgen_ele(std::istream& in, const std::string& source, int first_inde
                    std::to_string(num_nodes + first_index) + ")");
       mesh.tets.push_back(static_cast<index_t>(node - first_index));
     }
-    if (attrs == 1) {
-      const double region = lines.real(5, "region attribute");
-      if (region != std::floor(region) || std::abs(region) > std::numeric_limits<int>::max())
-        lines.fail("region attribute " + std::string(lines.token(5, "")) + " is not an integer");
-      mesh.extras.tet_tags.push_back(static_cast<int>(region));
-    }
+    for (std::size_t k = 0; k < attrs; ++k)
+      attributes.push_back(lines.real(5 + k, k == 0 ? "region attribute" : "tet attribute"));
   }
   expect_end(lines, count, "tets");
+  take_tet_attributes(std::move(attributes), attrs, mesh.extras);
 }
 
 TetMesh read_tetgen(std::istream& node, const std::string& node_source, std::istream& ele,
@@ -167,17 +202,24 @@ void write_tetgen_node(const TetMesh& mesh, std::ostream& out) {
 
 void write_tetgen_ele(const TetMesh& mesh, std::ostream& out) {
   const std::size_t t = mesh.num_tets();
-  const bool has_tags = mesh.extras.tet_tags.size() == t;
-  out << t << " 4 " << (has_tags ? 1 : 0) << '\n';
+  const FileExtras& ex = mesh.extras;
+  const std::size_t attrs = static_cast<std::size_t>(std::max(ex.tet_attribute_count, 0));
+  const bool has_attrs = attrs > 0 && ex.tet_attributes.size() == attrs * t;
+  const bool has_tags = !has_attrs && ex.tet_tags.size() == t;
+  out << t << " 4 " << (has_attrs ? attrs : has_tags ? 1 : 0) << '\n';
   for (std::size_t e = 0; e < t; ++e) {
     put_integer(out, static_cast<long long>(e) + 1);
     for (int k = 0; k < 4; ++k) {
       out << ' ';
       put_integer(out, static_cast<long long>(mesh.tets[4 * e + k]) + 1);
     }
+    for (std::size_t k = 0; has_attrs && k < attrs; ++k) {
+      out << ' ';
+      put_real(out, ex.tet_attributes[attrs * e + k]);
+    }
     if (has_tags) {
       out << ' ';
-      put_integer(out, mesh.extras.tet_tags[e]);
+      put_integer(out, ex.tet_tags[e]);
     }
     out << '\n';
   }

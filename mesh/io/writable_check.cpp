@@ -116,6 +116,11 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (f != MeshFormat::TetGen && e.node_attribute_count > 0 && !e.node_attributes.empty())
     notes.push_back("the node attributes (" + std::to_string(e.node_attribute_count) +
                     " per node) will not be written: " + name + " has no place for them");
+  if (f != MeshFormat::TetGen && e.tet_attribute_count > 0 && !e.tet_attributes.empty())
+    notes.push_back("the TetGen tet attributes (" + std::to_string(e.tet_attribute_count) +
+                    " per tet) will not be written: " + name +
+                    (f == MeshFormat::Cache ? " has no place for them"
+                                            : " keeps only the region tags, numbered from the first attribute"));
   const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
   const bool node_ids = !positional(e.node_tags), element_ids = !positional(e.tet_element_tags);
   if (!msh && (node_ids || element_ids))

@@ -402,6 +402,12 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
             std::string::npos)
       << ranked.err;
   EXPECT_EQ(read_mesh(path("ranked.mesh")).extras.tet_tags, (std::vector<int>{1}));
+  // Medit-only sections are named when the output has no place for them.
+  const CliRun ridges = run({"convert", testing::data_path("medit_bipyramid.mesh"), path("bipyramid.vtu")});
+  EXPECT_EQ(ridges.code, kExitOk) << ridges.err;
+  EXPECT_NE(ridges.err.find("the Medit section Ridges will not be written: vtu has no place for it"),
+            std::string::npos)
+      << ridges.err;
 
   // Gmsh element ids that are not just positions survive only in MSH.
   TetMesh ids = testing::cube_with_centre();

@@ -107,6 +107,25 @@ TEST(MeditIo, GmshPointsBecomeRequiredVertices) {
   EXPECT_EQ(back.fixed, gmsh.fixed);
 }
 
+// Identifier and Geometry hold one string each: kept and written back after
+// Dimension, whatever section they followed.
+TEST(MeditIo, StringSectionsAreKept) {
+  const TetMesh mesh = read_text(
+      replaced(replaced(kMinimal, "Vertices\n", "Identifier\n\"slope   model, v2\"\nVertices\n"), "End\n",
+               "Geometry\nsupport.mesh\nEnd\n"));
+  EXPECT_EQ(mesh.num_tets(), 1u);
+  ASSERT_EQ(mesh.extras.raw_sections.size(), 2u);
+  EXPECT_EQ(mesh.extras.raw_sections[0],
+            (std::pair<std::string, std::string>{"Identifier", "\"slope model, v2\"\n"}));
+  EXPECT_EQ(mesh.extras.raw_sections[1], (std::pair<std::string, std::string>{"Geometry", "support.mesh\n"}));
+  const std::string text = write_text(mesh);
+  EXPECT_EQ(text.substr(0, text.find("\nVertices")),
+            "MeshVersionFormatted 2\n\nDimension 3\n\nIdentifier\n\"slope model, v2\"\n\nGeometry\nsupport.mesh\n");
+  EXPECT_EQ(read_text(text).extras.raw_sections, mesh.extras.raw_sections);
+  const std::string open = read_error(replaced(kMinimal, "End\n", "Identifier \"no end\nEnd\n"));
+  EXPECT_NE(open.find("expected the closing quote of the string"), std::string::npos) << open;
+}
+
 struct BadText {
   const char* from;
   const char* to;

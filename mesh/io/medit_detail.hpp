@@ -1,5 +1,7 @@
 #pragma once
 // Medit keywords shared by the .mesh reader and writer (not a public API).
+#include <string_view>
+
 namespace tetsmooth::medit {
 
 // Element sections other than Tetrahedra: each entry is `nodes` 1-based
@@ -36,5 +38,20 @@ inline constexpr KeptKeyword kKeptKeywords[] = {
     {"NormalAtTriangleVertices", 3, 0},
     {"NormalAtQuadrilateralVertices", 3, 0},
 };
+
+// Sections that hold one string, quoted where it has spaces: the mesh's name
+// and the file of its geometric support. Reproduced as read (as one line, its
+// words joined by single spaces) through FileExtras::raw_sections, after
+// Dimension.
+inline constexpr const char* kStringKeywords[] = {"Identifier", "Geometry"};
+
+// Whether a raw section of that name is one of the two lists above.
+inline bool is_medit_section(std::string_view name) {
+  for (const KeptKeyword& kw : kKeptKeywords)
+    if (name == kw.keyword) return true;
+  for (const char* kw : kStringKeywords)
+    if (name == kw) return true;
+  return false;
+}
 
 }  // namespace tetsmooth::medit

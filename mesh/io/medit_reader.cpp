@@ -38,6 +38,7 @@ class MeditReader {
   void elements(const medit::ElementKeyword& kw);
   void vertex_list(std::vector<std::int32_t>& out);
   void kept(const medit::KeptKeyword& kw);
+  void string_section(const char* keyword);
   void section(const std::string& keyword);
   void need_vertices(const std::string& keyword) const {
     if (!has_vertices_) lines_.fail(keyword + " before Vertices: element sections must follow the vertices");
@@ -155,6 +156,16 @@ void MeditReader::kept(const medit::KeptKeyword& kw) {
   mesh_.extras.raw_sections.emplace_back(kw.keyword, std::move(body));
 }
 
+void MeditReader::string_section(const char* keyword) {
+  std::string text(lines_.next_token("a string"));
+  if (text.front() == '"')
+    while (text.size() < 2 || text.back() != '"') {
+      text += ' ';
+      text += lines_.next_token("the closing quote of the string");
+    }
+  mesh_.extras.raw_sections.emplace_back(keyword, text + "\n");
+}
+
 void MeditReader::section(const std::string& keyword) {
   if (same_keyword(keyword, "Vertices")) return vertices();
   if (same_keyword(keyword, "Tetrahedra")) return tetrahedra();
@@ -164,6 +175,8 @@ void MeditReader::section(const std::string& keyword) {
     if (same_keyword(keyword, kw.keyword)) return elements(kw);
   for (const medit::KeptKeyword& kw : medit::kKeptKeywords)
     if (same_keyword(keyword, kw.keyword)) return kept(kw);
+  for (const char* kw : medit::kStringKeywords)
+    if (same_keyword(keyword, kw)) return string_section(kw);
   const char c = keyword[0];
   if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.')
     lines_.fail("unexpected number '" + keyword.substr(0, 40) +

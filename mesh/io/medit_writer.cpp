@@ -69,8 +69,16 @@ void check(const TetMesh& mesh) {
   }
 }
 
+// The sections read under `keyword` (FileExtras::raw_sections), as read.
+void write_kept(std::ostream& out, const TetMesh& mesh, const char* keyword) {
+  for (const auto& [name, body] : mesh.extras.raw_sections)
+    if (name == keyword) out << '\n' << name << '\n' << body;
+}
+
 void write_body(const TetMesh& mesh, std::ostream& out) {
-  out << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << mesh.num_nodes() << '\n';
+  out << "MeshVersionFormatted 2\n\nDimension 3\n";
+  for (const char* keyword : medit::kStringKeywords) write_kept(out, mesh, keyword);
+  out << "\nVertices\n" << mesh.num_nodes() << '\n';
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
     for (int c = 0; c < 3; ++c) {
       put_real(out, mesh.xyz[3 * i + c]);
@@ -98,9 +106,7 @@ void write_body(const TetMesh& mesh, std::ostream& out) {
   }
   write_vertex_list(out, "Corners", mesh.extras.corner_nodes);
   write_vertex_list(out, "RequiredVertices", required_nodes(mesh));
-  for (const medit::KeptKeyword& kw : medit::kKeptKeywords)
-    for (const auto& [name, body] : mesh.extras.raw_sections)
-      if (name == kw.keyword) out << '\n' << name << '\n' << body;
+  for (const medit::KeptKeyword& kw : medit::kKeptKeywords) write_kept(out, mesh, kw.keyword);
   out << "\nEnd\n";
 }
 

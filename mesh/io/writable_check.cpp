@@ -7,6 +7,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
+#include "mesh/io/medit_detail.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
 #include "mesh/io/tsm_cache.hpp"
@@ -116,6 +117,15 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (f != MeshFormat::TetGen && e.node_attribute_count > 0 && !e.node_attributes.empty())
     notes.push_back("the node attributes (" + std::to_string(e.node_attribute_count) +
                     " per node) will not be written: " + name + " has no place for them");
+  if (f != MeshFormat::Medit) {
+    std::string sections;
+    std::size_t count = 0;
+    for (const auto& [section, body] : e.raw_sections)
+      if (medit::is_medit_section(section)) sections += (count++ == 0 ? "" : ", ") + section;
+    if (count > 0)
+      notes.push_back(std::string("the Medit section") + (count == 1 ? " " : "s ") + sections +
+                      " will not be written: " + name + " has no place for " + (count == 1 ? "it" : "them"));
+  }
   if (f != MeshFormat::TetGen && e.tet_attribute_count > 0 && !e.tet_attributes.empty())
     notes.push_back("the TetGen tet attributes (" + std::to_string(e.tet_attribute_count) +
                     " per tet) will not be written: " + name +

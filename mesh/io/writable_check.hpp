@@ -21,7 +21,8 @@ void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat for
 // tets (TetGen and .tsm hold tets only), the pins of fixed nodes (MSH keeps
 // a pin only through an element on the node, TetGen and .tsm not at all;
 // a later run would move such nodes), TetGen node markers, node attributes
-// and tet attributes (what tet_tags cannot give back),
+// and tet attributes (what tet_tags cannot give back), Medit-only sections
+// (Ridges, Normals, Identifier, ...),
 // region tags (.tsm), Gmsh node and element tags (formats other than MSH),
 // and what Gmsh node tags past the 32-bit ints of field data cost in MSH
 // (their node fields in 4.1, the tags themselves in 2.2).

@@ -31,7 +31,9 @@ What it does with the file (google/benchmark 1.7.x JSON, --benchmark_out):
     (written as strings by AddCustomContext) are parsed as numbers on request.
   * an empty file (bench_smooth writes one when no benchmark was selected) and
     a file with an empty "benchmarks" list raise BenchInputError, so every
-    script exits 2 with a message instead of a traceback or empty tables.
+    script exits 2 with a message instead of a traceback or empty tables; so
+    does a file whose every benchmark reported an error, for the scripts that
+    render it (load_result's need_runs).
 """
 
 import json
@@ -392,8 +394,13 @@ def parse_result(document, path="<memory>"):
     return BenchResult(path, _canonical_context(context), runs, errors)
 
 
-def load_result(path):
-    """Read a bench_smooth JSON file; raises BenchInputError with a clear message."""
+def load_result(path, need_runs=False):
+    """Read a bench_smooth JSON file; raises BenchInputError with a clear message.
+
+    need_runs: refuse a file whose every benchmark reported an error, as the
+    table and figure scripts do (they would render blanks); compare_results
+    reads one as a regression instead.
+    """
     if not os.path.isfile(path):
         raise BenchInputError(f"{path}: no such file")
     try:
@@ -406,7 +413,12 @@ def load_result(path):
         raise BenchInputError(f"{path}: bad JSON at line {error.lineno}, column {error.colno}: {error.msg}") from error
     except (OSError, UnicodeDecodeError) as error:
         raise BenchInputError(f"{path}: cannot read: {error}") from error
-    return parse_result(document, path)
+    result = parse_result(document, path)
+    if need_runs and not result.runs:
+        name, message = next(iter(result.errors.items()))
+        raise BenchInputError(f"{path}: every benchmark reported an error ({len(result.errors)}; "
+                              f"the first, {name}: {message})")
+    return result
 
 
 def ratio(numerator, denominator):

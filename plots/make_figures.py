@@ -425,7 +425,7 @@ def parse_args(argv):
 def main(argv=None):
     args = parse_args(argv)
     try:
-        result = bj.load_result(args.result)
+        result = bj.load_result(args.result, need_runs=True)
     except bj.BenchInputError as error:
         print(f"make_figures: {error}", file=sys.stderr)
         return 2

@@ -40,7 +40,7 @@ def parse_args(argv):
 def main(argv=None):
     args = parse_args(argv)
     try:
-        result = bj.load_result(args.result)
+        result = bj.load_result(args.result, need_runs=True)
     except bj.BenchInputError as error:
         print(f"report: {error}", file=sys.stderr)
         return 2

@@ -239,6 +239,22 @@ class LoaderTests(unittest.TestCase):
                 self.assertIn("check --benchmark_filter/--models", str(caught.exception))
             self.assertIn("empty file", str(self.load_error(paths[0])))
 
+    def test_every_benchmark_errored(self):
+        # Tables of nothing but blanks would hide the failure: the file is refused.
+        entry = {"name": "Serial/FormB/5k/real_time", "run_type": "iteration", "error_occurred": True,
+                 "error_message": "mesh not found"}
+        with tempfile.TemporaryDirectory() as folder:
+            path = write_result(folder, {"context": {}, "benchmarks": [entry]}, "errored")
+            self.assertEqual(bj.load_result(path).errors, {"Serial/FormB/5k": "mesh not found"})
+            try:
+                bj.load_result(path, need_runs=True)
+                error = None
+            except bj.BenchInputError as caught:
+                error = caught
+            self.assertIsNotNone(error)
+            self.assertIn("every benchmark reported an error (1; the first, Serial/FormB/5k: mesh not found)",
+                          str(error))
+
     @staticmethod
     def load_error(path):
         try:
@@ -509,11 +525,15 @@ class OptionAndEdgeTests(unittest.TestCase):
         with tempfile.TemporaryDirectory() as out:
             empty = os.path.join(out, "empty.json")
             open(empty, "w", encoding="utf-8").close()
+            errored = write_result(out, {"context": {}, "benchmarks": [
+                {"name": "Serial/FormB/5k/real_time", "run_type": "iteration", "error_occurred": True,
+                 "error_message": "mesh not found"}]}, "errored")
             for script in ("report.py", "make_tables.py", "make_figures.py"):
-                completed = run_script(script, empty, os.path.join(out, "x"))
-                self.assertEqual(completed.returncode, 2, script)
-                self.assertIn(f"{empty}: empty file", completed.stderr)
-                self.assertNotIn("Traceback", completed.stderr)
+                for path, why in ((empty, "empty file"), (errored, "every benchmark reported an error")):
+                    completed = run_script(script, path, os.path.join(out, "x"))
+                    self.assertEqual(completed.returncode, 2, script)
+                    self.assertIn(f"{path}: {why}", completed.stderr)
+                    self.assertNotIn("Traceback", completed.stderr)
             self.assertFalse(os.path.exists(os.path.join(out, "x")))
 
     def test_slope_77k_run_fills_the_tables(self):

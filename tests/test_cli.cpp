@@ -384,6 +384,30 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   EXPECT_NE(msh.err.find("1 pinned node will not be pinned in the msh41 output"), std::string::npos) << msh.err;
   const CliRun medit = run({"convert", path("pinned.mesh"), path("same.mesh")});
   EXPECT_EQ(medit.err.find("will not be"), std::string::npos) << medit.err;  // Medit keeps them
+  // A VTU pin (tetsmooth:fixed) becomes a Medit RequiredVertex, so it holds
+  // through a second conversion; all-zero vertex references are no loss.
+  TetMesh vtu_pin = testing::cube_with_centre();
+  vtu_pin.fixed.assign(9, 0);
+  vtu_pin.fixed[8] = 1;
+  write_mesh(vtu_pin, path("pin.vtu"));
+  const CliRun to_medit = run({"convert", path("pin.vtu"), path("pin.mesh")});
+  EXPECT_EQ(to_medit.err.find("will not be"), std::string::npos) << to_medit.err;
+  EXPECT_EQ(read_mesh(path("pin.mesh")).fixed, vtu_pin.fixed);
+  const CliRun back_to_vtu = run({"convert", path("pin.mesh"), path("pin2.vtu")});
+  EXPECT_EQ(back_to_vtu.err.find("will not be"), std::string::npos) << back_to_vtu.err;
+  EXPECT_EQ(read_mesh(path("pin2.vtu")).fixed, vtu_pin.fixed);
+  // Pins of boundary nodes are no loss to TetGen: the boundary stays fixed.
+  TetMesh skin = testing::cube_with_centre();
+  skin.fixed.assign(9, 1);
+  skin.fixed[8] = 0;
+  write_mesh(skin, path("skin.vtu"));
+  const CliRun skin_tetgen = run({"convert", path("skin.vtu"), path("skin.node")});
+  EXPECT_EQ(skin_tetgen.err.find("pinned"), std::string::npos) << skin_tetgen.err;
+  skin.fixed[8] = 1;
+  write_mesh(skin, path("skin.vtu"));
+  const CliRun centre_tetgen = run({"convert", path("skin.vtu"), path("skin.node")});
+  EXPECT_NE(centre_tetgen.err.find("1 pinned node will not be pinned in the tetgen output"), std::string::npos)
+      << centre_tetgen.err;
 
   TetMesh attrs = testing::cube_with_centre();
   attrs.extras.node_attribute_count = 1;
@@ -439,6 +463,24 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
             std::string::npos)
       << wide22.err;
   EXPECT_EQ(read_mesh(path("wide22.msh")).extras.node_tags, (std::vector<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9}));
+  // Gmsh physical names, and entity tags that split a region, have no place
+  // in VTU; entity tags that follow the regions lose nothing.
+  TetMesh named = testing::cube_with_centre();
+  named.extras.tet_tags = {5, 5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6};
+  named.extras.tet_entity_tags = {1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2};
+  named.extras.raw_sections.emplace_back("$PhysicalNames", "2\n3 5 \"soil\"\n3 6 \"rock\"\n");
+  write_mesh(named, path("named.msh"));
+  const CliRun names = run({"convert", path("named.msh"), path("named.vtu")});
+  EXPECT_NE(names.err.find("the Gmsh physical names will not be written: vtu has no place for them"),
+            std::string::npos)
+      << names.err;
+  EXPECT_EQ(names.err.find("entity tags"), std::string::npos) << names.err;
+  named.extras.raw_sections.clear();
+  named.extras.tet_entity_tags = {1, 1, 1, 1, 1, 3, 2, 2, 2, 2, 2, 2};
+  write_mesh(named, path("split.msh"));
+  const CliRun split = run({"convert", path("split.msh"), path("split.vtu")});
+  EXPECT_NE(split.err.find("the Gmsh entity tags will not be written: vtu has no place for them"), std::string::npos)
+      << split.err;
   // Our own MSH numbers nodes and elements 1, 2, ...: nothing to lose.
   write_mesh(testing::cube_with_centre(), path("plain.msh"));
   const CliRun positional = run({"convert", path("plain.msh"), path("plain.vtu")});

@@ -39,14 +39,27 @@ void write_vertex_list(std::ostream& out, const char* keyword, const std::vector
   }
 }
 
-// Medit has no point elements: the nodes of "vertex" blocks (Gmsh points)
-// join RequiredVertices, which pins them just the same on reading.
+// RequiredVertices: the file's own, then the nodes of "vertex" blocks (Gmsh
+// points: Medit has no point elements), then every other pinned node that
+// no element or corner pins (a VTU's tetsmooth:fixed, say), so that each
+// pin survives the next read. Indices are checked in range first (check()).
 std::vector<std::int32_t> required_nodes(const TetMesh& mesh) {
-  std::vector<std::int32_t> nodes = mesh.extras.required_nodes;
+  std::vector<std::uint8_t> pinned(mesh.num_nodes(), 0);
+  std::vector<std::int32_t> nodes;
+  const auto add = [&](index_t n) {
+    if (pinned[static_cast<std::size_t>(n)]) return;
+    pinned[static_cast<std::size_t>(n)] = 1;
+    nodes.push_back(n);
+  };
+  for (index_t n : mesh.extras.required_nodes) add(n);
   for (const PassThroughBlock& block : mesh.extras.blocks)
     if (block.kind == "vertex")
-      for (index_t n : block.connectivity)
-        if (std::find(nodes.begin(), nodes.end(), n) == nodes.end()) nodes.push_back(n);
+      for (index_t n : block.connectivity) add(n);
+  for (index_t n : mesh.extras.corner_nodes) pinned[static_cast<std::size_t>(n)] = 1;
+  for (const PassThroughBlock& block : mesh.extras.blocks)
+    for (index_t n : block.connectivity) pinned[static_cast<std::size_t>(n)] = 1;
+  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i)
+    if (mesh.fixed[i]) add(static_cast<index_t>(i));
   return nodes;
 }
 

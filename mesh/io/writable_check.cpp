@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <ostream>
 #include <streambuf>
+#include <unordered_map>
 
 #include "mesh/errors.hpp"
+#include "mesh/region_interfaces.hpp"
+#include "mesh/topology.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_detail.hpp"
@@ -66,20 +69,26 @@ std::string count_of(std::size_t n, const std::string& what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
-// Pinned nodes whose pin the format keeps: VTU and VTK write every pin; Medit
-// its RequiredVertices, Corners and element nodes; MSH only element nodes.
+// Pinned nodes that the format loses and that a later run would move: VTU,
+// VTK and Medit (RequiredVertices) write every pin, MSH only element nodes,
+// TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
+// an interface between regions where the format keeps the region tags (MSH
+// and TetGen do, .tsm not).
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
-  if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk) return 0;
+  if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit)
+    return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
-  const bool elements_pin = format != MeshFormat::TetGen && format != MeshFormat::Cache;
-  if (elements_pin)
+  if (format != MeshFormat::TetGen && format != MeshFormat::Cache)
     for (const PassThroughBlock& b : mesh.extras.blocks)
       for (index_t n : b.connectivity) kept[static_cast<std::size_t>(n)] = 1;
-  if (format == MeshFormat::Medit)
-    for (const auto* list : {&mesh.extras.required_nodes, &mesh.extras.corner_nodes})
-      for (index_t n : *list) kept[static_cast<std::size_t>(n)] = 1;
+  std::size_t candidates = 0;
+  for (std::size_t i = 0; i < mesh.fixed.size(); ++i) candidates += mesh.fixed[i] && !kept[i];
+  if (candidates == 0) return 0;  // spares the topology below
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes());
+  const std::vector<std::uint8_t> interface =
+      format == MeshFormat::Cache ? std::vector<std::uint8_t>(mesh.num_nodes(), 0) : region_interface_nodes(mesh);
   std::size_t lost = 0;
-  for (std::size_t i = 0; i < mesh.fixed.size(); ++i) lost += mesh.fixed[i] && !kept[i];
+  for (std::size_t i = 0; i < mesh.fixed.size(); ++i) lost += mesh.fixed[i] && !kept[i] && !boundary[i] && !interface[i];
   return lost;
 }
 
@@ -89,6 +98,20 @@ bool positional(const std::vector<long long>& tags) {
   for (std::size_t i = 0; i < tags.size(); ++i)
     if (tags[i] != static_cast<long long>(i) + 1) return false;
   return true;
+}
+
+// Whether the tets' Gmsh entity tags tell apart tets of one region (or,
+// without region tags, of the whole mesh): only then does their loss lose
+// anything that the region tags do not carry.
+bool entities_split_regions(const FileExtras& e) {
+  if (e.tet_entity_tags.empty()) return false;
+  const bool tagged = e.tet_tags.size() == e.tet_entity_tags.size();
+  std::unordered_map<int, int> entity_of_region;
+  for (std::size_t t = 0; t < e.tet_entity_tags.size(); ++t)
+    if (entity_of_region.try_emplace(tagged ? e.tet_tags[t] : 0, e.tet_entity_tags[t]).first->second !=
+        e.tet_entity_tags[t])
+      return true;
+  return false;
 }
 
 }  // namespace
@@ -112,7 +135,8 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (const std::size_t lost = pins_lost(mesh, f); lost > 0)
     notes.push_back(count_of(lost, "pinned node") + " will not be pinned in the " + name +
                     " output, so a later run may move them");
-  if (f != MeshFormat::TetGen && f != MeshFormat::Medit && !e.node_markers.empty())
+  const bool any_marker = std::any_of(e.node_markers.begin(), e.node_markers.end(), [](int m) { return m != 0; });
+  if (f != MeshFormat::TetGen && f != MeshFormat::Medit && any_marker)
     notes.push_back("the node markers will not be written: " + name + " has no place for them");
   if (f != MeshFormat::TetGen && e.node_attribute_count > 0 && !e.node_attributes.empty())
     notes.push_back("the node attributes (" + std::to_string(e.node_attribute_count) +
@@ -136,6 +160,14 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (!msh && (node_ids || element_ids))
     notes.push_back(std::string("the Gmsh ") + (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
                     " tags will not be written: " + name + " numbers them by position");
+  if (!msh) {
+    const bool names = std::any_of(e.raw_sections.begin(), e.raw_sections.end(),
+                                   [](const auto& section) { return section.first == "$PhysicalNames"; });
+    const bool entities = entities_split_regions(e);
+    if (names || entities)
+      notes.push_back(std::string("the Gmsh ") + (names && entities ? "physical names and entity tags" : names ? "physical names" : "entity tags") +
+                      " will not be written: " + name + " has no place for them");
+  }
   if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
     const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));
     notes.push_back(f == MeshFormat::Msh22

@@ -17,15 +17,19 @@ namespace tetsmooth {
 void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat format = MeshFormat::Auto);
 
 // What `format` (Auto: from the name) will not carry of what the mesh holds,
-// one sentence each, for a warning before the work: elements other than
-// tets (TetGen and .tsm hold tets only), the pins of fixed nodes (MSH keeps
-// a pin only through an element on the node, TetGen and .tsm not at all;
-// a later run would move such nodes), TetGen node markers, node attributes
-// and tet attributes (what tet_tags cannot give back), Medit-only sections
-// (Ridges, Normals, Identifier, ...),
-// region tags (.tsm), Gmsh node and element tags (formats other than MSH),
-// and what Gmsh node tags past the 32-bit ints of field data cost in MSH
-// (their node fields in 4.1, the tags themselves in 2.2).
+// one sentence each, for a warning before the work:
+//  * elements other than tets (TetGen and .tsm hold tets only);
+//  * pins that a later run would lose: MSH keeps a pin only through an
+//    element on the node, TetGen and .tsm not at all, and boundary nodes
+//    and (where the format keeps region tags) interface nodes stay fixed
+//    anyway; VTU, VTK and Medit keep every pin;
+//  * TetGen node markers (non-zero ones), node attributes and tet
+//    attributes (what tet_tags cannot give back);
+//  * Medit-only sections (Ridges, Normals, Identifier, ...);
+//  * region tags (.tsm);
+//  * Gmsh node and element tags, physical names and entity tags (formats
+//    other than MSH), and what node tags past the 32-bit ints of field
+//    data cost in MSH (the node fields in 4.1, the tags themselves in 2.2).
 std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& path,
                                        MeshFormat format = MeshFormat::Auto);
 

@@ -12,19 +12,6 @@
 
 namespace tetsmooth::cli {
 
-void check_output_location(const std::string& path) {
-  namespace fs = std::filesystem;
-  const auto fail = [&](const std::string& why) { throw OutputError("cannot write '" + path + "': " + why); };
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) fail("it is a directory");
-  const fs::path parent = fs::path(path).parent_path();
-  const std::string dir = parent.empty() ? "." : parent.string();
-  const fs::file_status status = fs::status(dir, ec);
-  if (!fs::exists(status)) fail("directory '" + dir + "' does not exist");
-  if (!fs::is_directory(status)) fail("'" + dir + "' is not a directory");
-  if (::access(dir.c_str(), W_OK | X_OK) != 0) fail("directory '" + dir + "': " + std::strerror(errno));
-}
-
 namespace {
 
 // The files a mesh path stands for in its format.
@@ -45,6 +32,23 @@ bool same_file(const std::string& a, const std::string& b) {
 }
 
 }  // namespace
+
+void check_output_location(const std::string& path) {
+  namespace fs = std::filesystem;
+  const auto fail = [&](const std::string& why) { throw OutputError("cannot write '" + path + "': " + why); };
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) fail("it is a directory");
+  const fs::path parent = fs::path(path).parent_path();
+  const std::string dir = parent.empty() ? "." : parent.string();
+  const fs::file_status status = fs::status(dir, ec);
+  if (!fs::exists(status)) fail("directory '" + dir + "' does not exist");
+  if (!fs::is_directory(status)) fail("'" + dir + "' is not a directory");
+  if (::access(dir.c_str(), W_OK | X_OK) != 0) fail("directory '" + dir + "': " + std::strerror(errno));
+}
+
+void check_mesh_output_location(const std::string& path, MeshFormat format) {
+  for (const std::string& file : mesh_files(path, format_from_path(path, format))) check_output_location(file);
+}
 
 void check_report_path(const std::string& report, const std::string& input, MeshFormat input_format,
                        const std::string& output, MeshFormat output_format) {

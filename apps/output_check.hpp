@@ -12,6 +12,10 @@ namespace tetsmooth::cli {
 // directory or is not writable, or when `path` itself is a directory.
 void check_output_location(const std::string& path);
 
+// The same for each file a mesh output stands for: both of TetGen's
+// base.node and base.ele, one file in any other format.
+void check_mesh_output_location(const std::string& path, MeshFormat format);
+
 // Throws UsageError when the report at `report` would be written over the
 // mesh that was read (`input` in `input_format`) or the one to be written
 // (`output` in `output_format`): a file of the TetGen pair counts for both.

@@ -12,9 +12,9 @@
 namespace tetsmooth::cli {
 
 void run_convert(const ConvertCommand& c, const Console& console) {
-  const MeshFormat input_format = format_from_path(c.input, c.input_format);
+  const MeshFormat input_format = input_format_of(c.input, c.input_format);
   const MeshFormat output_format = format_from_path(c.output, c.output_format);
-  check_output_location(c.output);
+  check_mesh_output_location(c.output, output_format);
   const TetMesh mesh = read_mesh(c.input, input_format);
   check_writable(mesh, c.output, output_format);
   for (const std::string& loss : output_losses(mesh, c.output, output_format)) console.warn(c.output + ": " + loss);

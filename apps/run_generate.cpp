@@ -11,7 +11,7 @@ namespace tetsmooth::cli {
 
 void run_generate(const GenerateCommand& c, const Console& console) {
   const MeshFormat format = format_from_path(c.output, c.output_format);
-  check_output_location(c.output);
+  check_mesh_output_location(c.output, format);
   const TetMesh mesh = generate_model(c.model, c.seed);
   write_mesh_with_fields(mesh, c.output, format);
   if (console.quiet) return;

@@ -14,7 +14,7 @@ namespace tetsmooth::cli {
 
 void run_quality(const QualityCommand& c, const Console& console) {
   QualityRecord record;
-  record.format = format_from_path(c.input, c.input_format);
+  record.format = input_format_of(c.input, c.input_format);
   TetMesh mesh = read_mesh(c.input, record.format);
   record.mesh = inspect_input(mesh, c.input);
   for (const std::string& w : input_warnings(mesh, record.mesh, c.input)) console.warn(w);

@@ -95,11 +95,11 @@ void print_report(const Console& console, const SmoothRecord& record) {
 void run_smooth(const SmoothCommand& c, const Console& console) {
   const Clock::time_point start = Clock::now();
   SmoothRecord record;
-  record.input_format = format_from_path(c.input, c.input_format);
+  record.input_format = input_format_of(c.input, c.input_format);
   record.output_format = format_from_path(c.output, c.output_format);
   std::string why_not_cuda;
   record.device = choose_device(c.device, why_not_cuda);
-  check_output_location(c.output);
+  check_mesh_output_location(c.output, record.output_format);
   if (!c.report_path.empty()) {
     check_report_path(c.report_path, c.input, record.input_format, c.output, record.output_format);
     check_output_location(c.report_path);

@@ -289,6 +289,23 @@ TEST_F(CliFiles, MissingInputExitsWith3) {
   EXPECT_NE(r.err.find("absent.vtu"), std::string::npos) << r.err;
 }
 
+// The command line takes a TetGen base name as the library does.
+TEST_F(CliFiles, TetGenBaseNameAsInput) {
+  write_mesh(testing::cube_with_centre(), path("box.node"));
+  const CliRun r = run({"convert", path("box"), path("box.vtu")});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_EQ(read_mesh(path("box.vtu")).tets, testing::cube_with_centre().tets);
+  EXPECT_EQ(run({"convert", path("nothing"), path("x.vtu")}).code, kExitUsage);
+}
+
+// A name of up to NAME_MAX bytes is written, though its temporary's is longer.
+TEST_F(CliFiles, LongestFileNameIsWritten) {
+  const std::string name = std::string(251, 'x') + ".vtu";
+  const CliRun r = run({"convert", lattice(2), path(name)});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(path(name)));
+}
+
 TEST_F(CliFiles, DirectoryAsInputIsNamedAsSuch) {
   fs::create_directory(path("dir.msh"));
   const CliRun r = run({"quality", path("dir.msh")});
@@ -317,9 +334,16 @@ TEST_F(CliFiles, UnwritableOutputExitsWith4AndWritesNothing) {
   EXPECT_EQ(is_dir.code, kExitOutput) << is_dir.err;
   const CliRun report = run({"smooth", in, "-o", path("ok.vtu"), "--report", path("no/dir/r.json")});
   EXPECT_EQ(report.code, kExitOutput) << report.err;
+  // TetGen's second file is checked as well as the one named.
+  fs::create_directory(path("pair.ele"));
+  const CliRun pair = run({"smooth", in, "-o", path("pair.node"), "--device", "cpu"});
+  EXPECT_EQ(pair.code, kExitOutput) << pair.err;
+  EXPECT_NE(pair.err.find("pair.ele': it is a directory"), std::string::npos) << pair.err;
+  EXPECT_EQ(pair.err.find("done:"), std::string::npos) << "checked only after smoothing:\n" << pair.err;
   // The report's location is checked before smoothing, so not even the mesh
   // was written.
   std::vector<std::string> expected = before;
+  expected.push_back("pair.ele");
   expected.push_back("taken.vtu");
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(files(), expected);
@@ -390,12 +414,11 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   vtu_pin.fixed.assign(9, 0);
   vtu_pin.fixed[8] = 1;
   write_mesh(vtu_pin, path("pin.vtu"));
-  const CliRun to_medit = run({"convert", path("pin.vtu"), path("pin.mesh")});
-  EXPECT_EQ(to_medit.err.find("will not be"), std::string::npos) << to_medit.err;
-  EXPECT_EQ(read_mesh(path("pin.mesh")).fixed, vtu_pin.fixed);
-  const CliRun back_to_vtu = run({"convert", path("pin.mesh"), path("pin2.vtu")});
-  EXPECT_EQ(back_to_vtu.err.find("will not be"), std::string::npos) << back_to_vtu.err;
-  EXPECT_EQ(read_mesh(path("pin2.vtu")).fixed, vtu_pin.fixed);
+  for (const auto& [from, to] : {std::pair{"pin.vtu", "pin.mesh"}, std::pair{"pin.mesh", "pin2.vtu"}}) {
+    const CliRun converted = run({"convert", path(from), path(to)});
+    EXPECT_EQ(converted.err.find("will not be"), std::string::npos) << converted.err;
+    EXPECT_EQ(read_mesh(path(to)).fixed, vtu_pin.fixed) << to;
+  }
   // Pins of boundary nodes are no loss to TetGen: the boundary stays fixed.
   TetMesh skin = testing::cube_with_centre();
   skin.fixed.assign(9, 1);

@@ -436,6 +436,20 @@ INSTANTIATE_TEST_SUITE_P(Flavours, GmshRoundTrip,
                            return std::string("unknown");
                          });
 
+// Parametric coordinates (Mesh.SaveParametric) are read past, with a note:
+// moved nodes would leave them stale, so the output has none.
+TEST(GmshIo, ParametricCoordinatesAreNotedAndDropped) {
+  const std::string text = replaced(kMinimal, "1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+                                    "2 4 1 4\n2 1 1 3\n1\n2\n3\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n"
+                                    "3 1 0 1\n4\n0 0 1\n");
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
+  EXPECT_EQ(mesh.extras.read_notes[0],
+            "the parametric coordinates of 3 nodes on curves and surfaces are not kept (the MSH output has none)");
+  EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
+}
+
 TEST(GmshIo, HugeSparseNodeTagsAreKept) {
   std::string text = kMinimal;
   text = replaced(text, "1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n", "1 4 7 1000000000000\n3 1 0 4\n1000000000000\n7\n3\n4\n");

@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <memory>
 #include <streambuf>
@@ -112,7 +113,10 @@ class TempFile {
     // target never share a temporary. Mode 0666 lets the umask decide, as for
     // any newly created file; a file that is replaced keeps its own mode.
     for (int attempt = 0; attempt < 100; ++attempt) {
-      path_ = dir + "." + base + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+      // Cut to the target's own limit (NAME_MAX bytes): a legal long name
+      // must not fail for its temporary's longer one.
+      const std::string suffix = ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);
+      path_ = dir + "." + base.substr(0, NAME_MAX - 1 - suffix.size()) + suffix;
       fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
       if (fd_ >= 0) break;
       if (errno != EEXIST) break;

@@ -68,6 +68,7 @@ void read_nodes_v41(Source& src, ReadState& state) {
   extras.node_entity_dims.reserve(expected);
   extras.node_entity_tags.reserve(expected);
 
+  std::uint64_t parametric_nodes = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const int dim = src.int_value("entity dimension");
     const int entity = src.int_value("entity tag");
@@ -81,6 +82,7 @@ void read_nodes_v41(Source& src, ReadState& state) {
     // Parametric coordinates (u, v, w up to the entity dimension) follow the
     // coordinates; they are dropped: nodes that move leave them stale.
     const int extra_values = parametric != 0 ? dim : 0;
+    if (extra_values > 0) parametric_nodes += count;
     src.reservable(count, 8 + 24 + 8 * static_cast<std::size_t>(extra_values));
     for (std::uint64_t i = 0; i < count; ++i) extras.node_tags.push_back(tag_value(src, "node tag"));
     for (std::uint64_t i = 0; i < count; ++i) {
@@ -95,6 +97,9 @@ void read_nodes_v41(Source& src, ReadState& state) {
              std::to_string(total) + " announced");
   const long long repeated = state.lookup.build(extras.node_tags);
   if (repeated >= 0) src.fail("node tag " + std::to_string(repeated) + " occurs twice in $Nodes");
+  if (parametric_nodes > 0)
+    extras.read_notes.push_back("the parametric coordinates of " + std::to_string(parametric_nodes) +
+                                " nodes on curves and surfaces are not kept (the MSH output has none)");
 }
 
 template <class Source>
@@ -109,6 +114,7 @@ void read_elements_v41(Source& src, ReadState& state) {
   TetMesh& mesh = state.mesh;
   std::uint64_t seen = 0;
   std::vector<index_t> nodes;
+  std::uint64_t parametric_nodes = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const int dim = src.int_value("entity dimension");
     const int entity = src.int_value("entity tag");

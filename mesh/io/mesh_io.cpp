@@ -85,10 +85,14 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
                    "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh or .tsm, or give the format");
 }
 
-TetMesh read_mesh(const std::string& path, MeshFormat format) {
+MeshFormat input_format_of(const std::string& path, MeshFormat requested) {
   // A TetGen base name ("box" for box.node + box.ele) has no extension.
-  if (format == MeshFormat::Auto && extension_of(path).empty() && is_file(path + ".node")) format = MeshFormat::TetGen;
-  switch (format_from_path(path, format)) {
+  if (requested == MeshFormat::Auto && extension_of(path).empty() && is_file(path + ".node")) return MeshFormat::TetGen;
+  return format_from_path(path, requested);
+}
+
+TetMesh read_mesh(const std::string& path, MeshFormat format) {
+  switch (input_format_of(path, format)) {
     case MeshFormat::TetGen:
       return read_tetgen(path);
     case MeshFormat::Vtu:

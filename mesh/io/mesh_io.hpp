@@ -32,6 +32,10 @@ const char* format_name(MeshFormat f);
 // Resolves Auto from the extension; throws UsageError for an unknown one.
 MeshFormat format_from_path(const std::string& path, MeshFormat requested = MeshFormat::Auto);
 
+// The same for a file to be read, which may also be a TetGen base name: a
+// path without extension beside which path.node exists is TetGen.
+MeshFormat input_format_of(const std::string& path, MeshFormat requested = MeshFormat::Auto);
+
 // Per-node and per-tet scalar fields for writers that can carry them (VTU, VTK,
 // MSH as $NodeData/$ElementData); others ignore them.
 struct MeshFields {

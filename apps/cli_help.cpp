@@ -99,6 +99,7 @@ Options:
   --tol X                   stop when no node moves farther than X times the mean edge
                             length in a sweep (default 1e-4)
   --report FILE.json        write options, per-sweep counts, timings and quality before/after
+                            (- for standard output)
   --format F                read IN as format F
   --output-format F         write OUT as format F
   -q, --quiet               print nothing but errors

@@ -100,7 +100,9 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   std::string why_not_cuda;
   record.device = choose_device(c.device, why_not_cuda);
   check_mesh_output_location(c.output, record.output_format);
-  if (!c.report_path.empty()) {
+  // "-" sends the report to standard output, which smoothing leaves free.
+  const bool report_to_stdout = c.report_path == "-";
+  if (!c.report_path.empty() && !report_to_stdout) {
     check_report_path(c.report_path, c.input, record.input_format, c.output, record.output_format);
     check_output_location(c.report_path);
   }
@@ -151,8 +153,13 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   console.note("wrote " + c.output + " (" + format_name(record.output_format) + ")");
   if (!c.report_path.empty()) {
     record.total_ms = ms_since(start);
-    write_json_file(smooth_report_json(c, record), c.report_path);
-    console.note("wrote report " + c.report_path);
+    if (report_to_stdout) {
+      console.out << json_text(smooth_report_json(c, record)) << '\n' << std::flush;
+      if (!console.out) throw OutputError("cannot write the report to standard output");
+    } else {
+      write_json_file(smooth_report_json(c, record), c.report_path);
+      console.note("wrote report " + c.report_path);
+    }
   }
 }
 

@@ -522,6 +522,18 @@ TEST_F(CliFiles, CudaWithoutAGpuExitsWith5) {
 
 // --- reports ---------------------------------------------------------------
 
+// "--report -" puts the JSON, alone, on standard output; no file "-".
+TEST_F(CliFiles, ReportToStandardOutput) {
+  const CliRun r = run({"smooth", lattice(3), "-o", path("out.vtu"), "--device", "cpu", "--report", "-"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["command"], "smooth");
+  EXPECT_EQ(j["input"]["nodes"], 64);
+  EXPECT_NE(r.err.find("wrote"), std::string::npos) << r.err;  // the summary stays on stderr
+  EXPECT_FALSE(fs::exists("-"));
+  EXPECT_FALSE(fs::exists(path("-")));
+}
+
 TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
   const std::string in = lattice(4);
   const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--threads", "2", "--max-iter", "50",

@@ -157,7 +157,12 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
       console.out << json_text(smooth_report_json(c, record)) << '\n' << std::flush;
       if (!console.out) throw OutputError("cannot write the report to standard output");
     } else {
-      write_json_file(smooth_report_json(c, record), c.report_path);
+      try {
+        write_json_file(smooth_report_json(c, record), c.report_path);
+      } catch (const OutputError& e) {
+        // Even with -q, say that the mesh itself is done.
+        throw OutputError(std::string(e.what()) + " (the smoothed mesh was written to '" + c.output + "')");
+      }
       console.note("wrote report " + c.report_path);
     }
   }

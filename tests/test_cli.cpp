@@ -534,6 +534,18 @@ TEST_F(CliFiles, ReportToStandardOutput) {
   EXPECT_FALSE(fs::exists(path("-")));
 }
 
+// A report that fails after the mesh was written says so, even with -q:
+// the run's result is on disk, only the report is missing.
+TEST_F(CliFiles, FailedReportSaysTheMeshWasWritten) {
+  if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full to fail a write";
+  fs::create_symlink("/dev/full", path("full.json"));
+  const CliRun r = run({"smooth", lattice(3), "-o", path("out.vtu"), "--device", "cpu", "-q", "--report",
+                        path("full.json")});
+  EXPECT_EQ(r.code, kExitOutput) << r.err;
+  EXPECT_NE(r.err.find("(the smoothed mesh was written to '" + path("out.vtu") + "')"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(path("out.vtu")));
+}
+
 TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
   const std::string in = lattice(4);
   const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--threads", "2", "--max-iter", "50",

@@ -153,17 +153,17 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   console.note("wrote " + c.output + " (" + format_name(record.output_format) + ")");
   if (!c.report_path.empty()) {
     record.total_ms = ms_since(start);
-    if (report_to_stdout) {
-      console.out << json_text(smooth_report_json(c, record)) << '\n' << std::flush;
-      if (!console.out) throw OutputError("cannot write the report to standard output");
-    } else {
-      try {
+    try {
+      if (report_to_stdout) {
+        console.out << json_text(smooth_report_json(c, record)) << '\n' << std::flush;
+        if (!console.out) throw OutputError("cannot write the report to standard output");
+      } else {
         write_json_file(smooth_report_json(c, record), c.report_path);
-      } catch (const OutputError& e) {
-        // Even with -q, say that the mesh itself is done.
-        throw OutputError(std::string(e.what()) + " (the smoothed mesh was written to '" + c.output + "')");
+        console.note("wrote report " + c.report_path);
       }
-      console.note("wrote report " + c.report_path);
+    } catch (const OutputError& e) {
+      // Even with -q, say that the mesh itself is done.
+      throw OutputError(std::string(e.what()) + " (the smoothed mesh was written to '" + c.output + "')");
     }
   }
 }

@@ -1,8 +1,10 @@
 #pragma once
 // What a mesh file carries besides node coordinates and tets, kept so that a
 // read-smooth-write round trip loses nothing. The smoother never looks here.
+#include <cstddef>
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tetsmooth {
@@ -56,5 +58,25 @@ struct FileExtras {
   // without the file's name; the command line prints them as warnings.
   std::vector<std::string> read_notes;
 };
+
+// The body of the raw section `name`, or nullptr when the file had none.
+inline const std::string* raw_section(const FileExtras& extras, std::string_view name) {
+  for (const auto& [key, body] : extras.raw_sections)
+    if (key == name) return &body;
+  return nullptr;
+}
+
+// Whether the extras hold TetGen tet attributes for each of `tets` tets.
+inline bool has_tet_attributes(const FileExtras& extras, std::size_t tets) {
+  return extras.tet_attribute_count > 0 &&
+         extras.tet_attributes.size() == static_cast<std::size_t>(extras.tet_attribute_count) * tets;
+}
+
+// Sets flags[n] for every node of a pass-through element (`flags` holds one
+// per node): the nodes that the elements pin.
+inline void mark_element_nodes(const std::vector<PassThroughBlock>& blocks, std::vector<std::uint8_t>& flags) {
+  for (const PassThroughBlock& block : blocks)
+    for (std::int32_t n : block.connectivity) flags[static_cast<std::size_t>(n)] = 1;
+}
 
 }  // namespace tetsmooth

@@ -399,7 +399,8 @@ def load_result(path, need_runs=False):
 
     need_runs: refuse a file whose every benchmark reported an error, as the
     table and figure scripts do (they would render blanks); compare_results
-    reads one as a regression instead.
+    reads one as a regression instead. The copy-bandwidth run alone is
+    nothing to render either.
     """
     if not os.path.isfile(path):
         raise BenchInputError(f"{path}: no such file")
@@ -414,10 +415,12 @@ def load_result(path, need_runs=False):
     except (OSError, UnicodeDecodeError) as error:
         raise BenchInputError(f"{path}: cannot read: {error}") from error
     result = parse_result(document, path)
-    if need_runs and not result.runs:
-        name, message = next(iter(result.errors.items()))
-        raise BenchInputError(f"{path}: every benchmark reported an error ({len(result.errors)}; "
-                              f"the first, {name}: {message})")
+    if need_runs and not any(parse_name(name)["kind"] != "copy" for name in result.runs):
+        if result.errors:
+            name, message = next(iter(result.errors.items()))
+            raise BenchInputError(f"{path}: every smoothing benchmark reported an error ({len(result.errors)}; "
+                                  f"the first, {name}: {message})")
+        raise BenchInputError(f"{path}: no smoothing benchmark with a result: {NO_BENCHMARK_HINT}")
     return result
 
 

@@ -431,6 +431,29 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   const CliRun centre_tetgen = run({"convert", path("skin.vtu"), path("skin.node")});
   EXPECT_NE(centre_tetgen.err.find("1 pinned node will not be pinned in the tetgen output"), std::string::npos)
       << centre_tetgen.err;
+  // Pins on an interface between regions are no loss where the regions
+  // stay apart: TetGen and MSH (negative tags renumbered, and named), not
+  // .tsm, which keeps no regions.
+  TetMesh halves = testing::cube_grid(2);
+  halves.fixed.assign(halves.num_nodes(), 1);
+  for (std::size_t t = 0; t < halves.num_tets(); ++t) {
+    double x = 0;
+    for (int k = 0; k < 4; ++k) x += halves.xyz[3 * static_cast<std::size_t>(halves.tets[4 * t + k])];
+    halves.extras.tet_tags.push_back(x < 4.0 ? -1 : -2);  // the two halves of the cube, by centroid
+  }
+  write_mesh(halves, path("halves.vtu"));
+  for (const char* kept_regions : {"halves.node", "halves.msh"}) {
+    const CliRun r = run({"convert", path("halves.vtu"), path(kept_regions)});
+    EXPECT_EQ(r.err.find("pinned"), std::string::npos) << kept_regions << ": " << r.err;
+  }
+  const CliRun halves_msh = run({"convert", path("halves.vtu"), path("halves2.msh")});
+  EXPECT_NE(halves_msh.err.find("negative region tags are written as new positive ones (-2 as 2, -1 as 1): MSH "
+                                "physical tags are positive"),
+            std::string::npos)
+      << halves_msh.err;
+  EXPECT_EQ(read_mesh(path("halves2.msh")).extras.tet_tags.front(), 1);
+  const CliRun tsm = run({"convert", path("halves.vtu"), path("halves.tsm")});
+  EXPECT_NE(tsm.err.find("pinned node"), std::string::npos) << tsm.err;
 
   TetMesh attrs = testing::cube_with_centre();
   attrs.extras.node_attribute_count = 1;
@@ -445,7 +468,7 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   EXPECT_EQ(ranked.code, kExitOk) << ranked.err;
   EXPECT_NE(ranked.err.find("region attribute 0.5 is not a whole number"), std::string::npos) << ranked.err;
   EXPECT_NE(ranked.err.find("the TetGen tet attributes (2 per tet) will not be written: medit keeps only the region "
-                            "tags, numbered from the first attribute"),
+                            "tags (the first attribute's values where whole, else their ranks)"),
             std::string::npos)
       << ranked.err;
   EXPECT_EQ(read_mesh(path("ranked.mesh")).extras.tet_tags, (std::vector<int>{1}));
@@ -504,6 +527,12 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   const CliRun split = run({"convert", path("split.msh"), path("split.vtu")});
   EXPECT_NE(split.err.find("the Gmsh entity tags will not be written: vtu has no place for them"), std::string::npos)
       << split.err;
+  // Boundary patches told apart only by their entity tags are named too.
+  TetMesh patches = testing::cube_with_centre();
+  patches.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 2, 3, 0, 3, 1}, {}, {7, 8}, {}});
+  write_mesh(patches, path("patches.msh"));
+  const CliRun patch_vtu = run({"convert", path("patches.msh"), path("patches.vtu")});
+  EXPECT_NE(patch_vtu.err.find("the Gmsh entity tags will not be written"), std::string::npos) << patch_vtu.err;
   // Our own MSH numbers nodes and elements 1, 2, ...: nothing to lose.
   write_mesh(testing::cube_with_centre(), path("plain.msh"));
   const CliRun positional = run({"convert", path("plain.msh"), path("plain.vtu")});
@@ -532,6 +561,16 @@ TEST_F(CliFiles, ReportToStandardOutput) {
   EXPECT_NE(r.err.find("wrote"), std::string::npos) << r.err;  // the summary stays on stderr
   EXPECT_FALSE(fs::exists("-"));
   EXPECT_FALSE(fs::exists(path("-")));
+  // Standard output that fails is an output error that names the mesh written.
+  std::ostringstream closed, err;
+  closed.setstate(std::ios::badbit);
+  const int code = run_cli({"smooth", lattice(3), "-o", path("again.vtu"), "--device", "cpu", "-q", "--report", "-"},
+                           closed, err, false);
+  EXPECT_EQ(code, kExitOutput) << err.str();
+  EXPECT_NE(err.str().find("cannot write the report to standard output (the smoothed mesh was written to '" +
+                           path("again.vtu") + "')"),
+            std::string::npos)
+      << err.str();
 }
 
 // A report that fails after the mesh was written says so, even with -q:

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -446,7 +447,8 @@ TEST(GmshIo, ParametricCoordinatesAreNotedAndDropped) {
   EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}));
   ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
   EXPECT_EQ(mesh.extras.read_notes[0],
-            "the parametric coordinates of 3 nodes on curves and surfaces are not kept (the MSH output has none)");
+            "the parametric coordinates of 3 nodes on curves and surfaces are not kept: the nodes that move would leave "
+            "them stale");
   EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
 }
 
@@ -680,6 +682,22 @@ TEST(GmshIo, NodeTagsPastTheIntRangeCostFieldsOrTags) {
     const std::string text = write_text(sparse, flavour, fields);
     EXPECT_NE(text.find("$NodeData"), std::string::npos);
     EXPECT_EQ(read_text(text).extras.node_tags, sparse.extras.node_tags);
+  }
+}
+
+// MSH physical tags are positive: negative region tags (TetGen, VTU) get the
+// next free positive ones, -1 first, so that regions stay apart in every
+// flavour; a boundary block's tags share the numbering.
+TEST(GmshIo, NegativeRegionTagsBecomeNewPositiveOnes) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.extras.tet_tags = {-1, -1, 3, 3, -7, -7, 0, 0, 3, 3, -1, -1};
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 2, 3}, {-7}, {}, {}});
+  EXPECT_EQ(gmsh::negative_tag_renumbering(mesh.extras), (std::map<int, int>{{-7, 5}, {-1, 4}}));
+  for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V41Binary, MshFlavour::V22Ascii}) {
+    const TetMesh back = read_text(write_text(mesh, flavour));
+    EXPECT_EQ(back.extras.tet_tags, (std::vector<int>{4, 4, 3, 3, 5, 5, 0, 0, 3, 3, 4, 4}));
+    ASSERT_EQ(back.extras.blocks.size(), 1u);
+    EXPECT_EQ(back.extras.blocks[0].tags, (std::vector<int>{5}));
   }
 }
 

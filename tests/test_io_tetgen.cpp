@@ -221,19 +221,19 @@ TEST_F(TetGenIo, RegionAttributesThatAreNotWholeAreRankedAndWrittenBack) {
 // Several attributes a tet (TetGen keeps an input's on refinement): the
 // first is the region, and all of them are written back.
 TEST_F(TetGenIo, SeveralTetAttributesAreKept) {
-  std::istringstream n(kNode), e("2 4 3\n0 0 1 2 3 7 0.5 1e-3\n1 1 2 3 4 -3 2 -1e300\n");
+  std::istringstream n(kNode), e("2 4 3\n0 0 1 2 3 1e6 0.5 1e-3\n1 1 2 3 4 -3 2 -1e300\n");
   const TetMesh mesh = read_tetgen(n, "box.node", e, "box.ele");
-  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, -3}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1000000, -3}));
   EXPECT_TRUE(mesh.extras.read_notes.empty());
   EXPECT_EQ(mesh.extras.tet_attribute_count, 3);
-  EXPECT_EQ(mesh.extras.tet_attributes, (std::vector<double>{7, 0.5, 1e-3, -3, 2, -1e300}));
+  EXPECT_EQ(mesh.extras.tet_attributes, (std::vector<double>{1e6, 0.5, 1e-3, -3, 2, -1e300}));
   write_tetgen(mesh, path("three"));
   std::ifstream ele(path("three.ele"));
   std::string line;
   std::getline(ele, line);
   EXPECT_EQ(line, "2 4 3");
   std::getline(ele, line);
-  EXPECT_EQ(line, "1 1 2 3 4 7 0.5 0.001");
+  EXPECT_EQ(line, "1 1 2 3 4 1000000 0.5 0.001");  // whole numbers as integers, as meshio reads them
   EXPECT_EQ(read_tetgen(path("three")).extras.tet_attributes, mesh.extras.tet_attributes);
   // One whole region attribute needs no copy: the tags give it back.
   std::istringstream n1(kNode), e1("2 4 1\n0 0 1 2 3 7\n1 1 2 3 4 -3\n");

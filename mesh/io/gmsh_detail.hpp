@@ -84,6 +84,12 @@ inline constexpr long long kLargestIntTag = INT32_MAX - 1024;
 // nodes are numbered 1, 2, ...).
 bool node_tags_fit_int(const std::vector<long long>& node_tags);
 
+// MSH physical tags are positive (0 is "none"). Negative region tags (a
+// TetGen or VTU mesh's) are written as the next free positive tags, -1 the
+// first, so that the regions stay apart: old tag -> written tag, empty when
+// no tag of the tets or the pass-through blocks is negative.
+std::map<int, int> negative_tag_renumbering(const FileExtras& extras);
+
 // Every element's tag from the file, tets first and then each pass-through
 // block, or empty when any element has none.
 std::vector<long long> file_element_tags(const FileExtras& extras, std::size_t tets);

@@ -17,6 +17,10 @@ enum class MshFlavour { V41Ascii, V41Binary, V22Ascii };
 TetMesh read_gmsh(std::istream& in, const std::string& source);
 TetMesh read_gmsh_file(const std::string& path);
 
+// Fields go out as $NodeData/$ElementData, whose tags are 32-bit ints: node
+// fields are left out where a kept node tag exceeds gmsh::kLargestIntTag
+// (MSH 4.1 only; MSH 2.2 numbers such nodes 1, 2, ...). Negative region tags
+// become new positive physical tags (gmsh::negative_tag_renumbering).
 void write_gmsh(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, const MeshFields& fields);
 void write_gmsh_file(const TetMesh& mesh, const std::string& path, MshFlavour flavour,
                      const MeshFields& fields);

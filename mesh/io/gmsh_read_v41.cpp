@@ -99,7 +99,7 @@ void read_nodes_v41(Source& src, ReadState& state) {
   if (repeated >= 0) src.fail("node tag " + std::to_string(repeated) + " occurs twice in $Nodes");
   if (parametric_nodes > 0)
     extras.read_notes.push_back("the parametric coordinates of " + std::to_string(parametric_nodes) +
-                                " nodes on curves and surfaces are not kept (the MSH output has none)");
+                                " nodes on curves and surfaces are not kept: the nodes that move would leave them stale");
 }
 
 template <class Source>
@@ -114,7 +114,6 @@ void read_elements_v41(Source& src, ReadState& state) {
   TetMesh& mesh = state.mesh;
   std::uint64_t seen = 0;
   std::vector<index_t> nodes;
-  std::uint64_t parametric_nodes = 0;
   for (std::uint64_t b = 0; b < blocks; ++b) {
     const int dim = src.int_value("entity dimension");
     const int entity = src.int_value("entity tag");

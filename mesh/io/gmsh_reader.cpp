@@ -294,9 +294,10 @@ TetMesh finish(Source& src, ReadState& state, const std::string& source) {
 
   TetMesh& mesh = state.mesh;
   // `fixed` stays empty when no pass-through element pins a node.
-  for (const PassThroughBlock& block : mesh.extras.blocks) {
-    if (!block.connectivity.empty()) mesh.fixed.resize(mesh.num_nodes(), 0);
-    for (index_t n : block.connectivity) mesh.fixed[static_cast<std::size_t>(n)] = 1;
+  if (std::any_of(mesh.extras.blocks.begin(), mesh.extras.blocks.end(),
+                  [](const PassThroughBlock& block) { return !block.connectivity.empty(); })) {
+    mesh.fixed.resize(mesh.num_nodes(), 0);
+    mark_element_nodes(mesh.extras.blocks, mesh.fixed);
   }
   validate_mesh(mesh, source);
   return std::move(mesh);

@@ -2,6 +2,8 @@
 // be positive and distinct (within nodes, and within all elements of every
 // dimension together), and field data names them by 32-bit ints.
 #include <algorithm>
+#include <climits>
+#include <functional>
 
 #include "mesh/file_extras.hpp"
 #include "mesh/io/gmsh_detail.hpp"
@@ -15,6 +17,25 @@ std::optional<long long> unusable_tag(std::vector<long long> tags, long long lar
   const auto repeated = std::adjacent_find(tags.begin(), tags.end());
   if (repeated != tags.end()) return *repeated;
   return std::nullopt;
+}
+
+std::map<int, int> negative_tag_renumbering(const FileExtras& extras) {
+  long long largest = 0;
+  std::vector<int> negative;
+  const auto visit = [&](const std::vector<int>& tags) {
+    for (int tag : tags) {
+      largest = std::max<long long>(largest, tag);
+      if (tag < 0) negative.push_back(tag);
+    }
+  };
+  visit(extras.tet_tags);
+  for (const PassThroughBlock& block : extras.blocks) visit(block.tags);
+  std::sort(negative.begin(), negative.end(), std::greater<int>());
+  negative.erase(std::unique(negative.begin(), negative.end()), negative.end());
+  std::map<int, int> renumbered;
+  for (int tag : negative)
+    renumbered[tag] = ++largest <= INT_MAX ? static_cast<int>(largest) : 0;  // 0: past int, "none"
+  return renumbered;
 }
 
 bool node_tags_fit_int(const std::vector<long long>& node_tags) {

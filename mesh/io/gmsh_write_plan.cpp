@@ -12,12 +12,6 @@
 namespace tetsmooth::gmsh {
 namespace {
 
-const std::string* raw_section(const FileExtras& extras, const char* name) {
-  for (const auto& [key, body] : extras.raw_sections)
-    if (key == name) return &body;
-  return nullptr;
-}
-
 // The file's own tags when they can be written back: one per item,
 // positive, distinct and at most `largest`; otherwise 1..count.
 std::vector<long long> output_tags(std::vector<long long> given, std::size_t count, long long largest) {
@@ -27,17 +21,25 @@ std::vector<long long> output_tags(std::vector<long long> given, std::size_t cou
   return fresh;
 }
 
-// Groups with the entity and physical tags the mesh gives, or empty arrays
-// where it gives none.
+// Groups with the entity and physical tags the mesh gives (negative ones
+// renumbered, see negative_tag_renumbering), or empty arrays where it gives
+// none.
 std::vector<ElementGroup> given_groups(const TetMesh& mesh) {
   const FileExtras& extras = mesh.extras;
+  const std::map<int, int> renumbered = negative_tag_renumbering(extras);
+  const auto physical_of = [&](const std::vector<int>& tags) {
+    std::vector<int> physical = tags;
+    for (int& tag : physical)
+      if (tag < 0) tag = renumbered.at(tag);
+    return physical;
+  };
   std::vector<ElementGroup> groups;
   ElementGroup& tets = groups.emplace_back();
   tets.type = element_type(kTetType);
   tets.connectivity = mesh.tets.data();
   tets.count = mesh.num_tets();
   if (extras.tet_entity_tags.size() == tets.count) tets.entity = extras.tet_entity_tags;
-  if (extras.tet_tags.size() == tets.count) tets.physical = extras.tet_tags;
+  if (extras.tet_tags.size() == tets.count) tets.physical = physical_of(extras.tet_tags);
   for (const PassThroughBlock& block : extras.blocks) {
     const ElementType* type = element_type_of_kind(block.kind);
     if (type == nullptr || type->id == kTetType || type->nodes != block.nodes_per_element)
@@ -48,7 +50,7 @@ std::vector<ElementGroup> given_groups(const TetMesh& mesh) {
     g.connectivity = block.connectivity.data();
     g.count = block.connectivity.size() / static_cast<std::size_t>(type->nodes);
     if (block.entity_tags.size() == g.count) g.entity = block.entity_tags;
-    if (block.tags.size() == g.count) g.physical = block.tags;
+    if (block.tags.size() == g.count) g.physical = physical_of(block.tags);
   }
   return groups;
 }

@@ -56,8 +56,7 @@ std::vector<std::int32_t> required_nodes(const TetMesh& mesh) {
     if (block.kind == "vertex")
       for (index_t n : block.connectivity) add(n);
   for (index_t n : mesh.extras.corner_nodes) pinned[static_cast<std::size_t>(n)] = 1;
-  for (const PassThroughBlock& block : mesh.extras.blocks)
-    for (index_t n : block.connectivity) pinned[static_cast<std::size_t>(n)] = 1;
+  mark_element_nodes(mesh.extras.blocks, pinned);
   for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i)
     if (mesh.fixed[i]) add(static_cast<index_t>(i));
   return nodes;

@@ -66,15 +66,27 @@ void take_tet_attributes(std::vector<double> values, std::size_t attrs, FileExtr
     for (double v : regions)
       extras.tet_tags.push_back(
           1 + static_cast<int>(std::lower_bound(distinct.begin(), distinct.end(), v) - distinct.begin()));
-    extras.read_notes.push_back("region attribute " + example.str() +
-                                " is not a whole number in int range: the " + std::to_string(distinct.size()) +
-                                " regions are tagged 1, 2, ... in ascending order of attribute value (TetGen output "
-                                "writes the attributes back as they were)");
+    const std::string tagged =
+        distinct.size() == 1
+            ? "the one region is tagged 1"
+            : "the " + std::to_string(distinct.size()) + " regions are tagged 1, 2, ... in ascending order of value";
+    extras.read_notes.push_back("region attribute " + example.str() + " is not a whole number in int range: " +
+                                tagged + " (TetGen output writes the attributes back as they were)");
   }
   if (not_whole != regions.end() || attrs > 1) {
     extras.tet_attribute_count = static_cast<int>(attrs);
     extras.tet_attributes = std::move(values);
   }
+}
+
+// A tet attribute as TetGen and meshio read it: whole numbers as integers
+// (meshio reads .ele attributes as ints and fails on "1e+06"), the rest in
+// the shortest form that reads back exactly.
+void put_attribute(std::ostream& out, double v) {
+  if (v == std::floor(v) && std::abs(v) < 0x1p53 && !(v == 0 && std::signbit(v)))
+    put_integer(out, static_cast<long long>(v));
+  else
+    put_real(out, v);
 }
 
 }  // namespace
@@ -203,8 +215,8 @@ void write_tetgen_node(const TetMesh& mesh, std::ostream& out) {
 void write_tetgen_ele(const TetMesh& mesh, std::ostream& out) {
   const std::size_t t = mesh.num_tets();
   const FileExtras& ex = mesh.extras;
-  const std::size_t attrs = static_cast<std::size_t>(std::max(ex.tet_attribute_count, 0));
-  const bool has_attrs = attrs > 0 && ex.tet_attributes.size() == attrs * t;
+  const bool has_attrs = has_tet_attributes(ex, t);
+  const std::size_t attrs = has_attrs ? static_cast<std::size_t>(ex.tet_attribute_count) : 0;
   const bool has_tags = !has_attrs && ex.tet_tags.size() == t;
   out << t << " 4 " << (has_attrs ? attrs : has_tags ? 1 : 0) << '\n';
   for (std::size_t e = 0; e < t; ++e) {
@@ -213,9 +225,9 @@ void write_tetgen_ele(const TetMesh& mesh, std::ostream& out) {
       out << ' ';
       put_integer(out, static_cast<long long>(mesh.tets[4 * e + k]) + 1);
     }
-    for (std::size_t k = 0; has_attrs && k < attrs; ++k) {
+    for (std::size_t k = 0; k < attrs; ++k) {
       out << ' ';
-      put_real(out, ex.tet_attributes[attrs * e + k]);
+      put_attribute(out, ex.tet_attributes[attrs * e + k]);
     }
     if (has_tags) {
       out << ' ';

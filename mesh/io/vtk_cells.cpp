@@ -169,8 +169,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
   }
   if (mesh.extras.blocks.empty()) return;
   mesh.fixed.resize(mesh.num_nodes(), 0);
-  for (const PassThroughBlock& block : mesh.extras.blocks)
-    for (index_t n : block.connectivity) mesh.fixed[static_cast<std::size_t>(n)] = 1;
+  mark_element_nodes(mesh.extras.blocks, mesh.fixed);
 }
 
 }  // namespace tetsmooth

@@ -72,15 +72,13 @@ std::string count_of(std::size_t n, const std::string& what) {
 // Pinned nodes that the format loses and that a later run would move: VTU,
 // VTK and Medit (RequiredVertices) write every pin, MSH only element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
-// an interface between regions where the format keeps the region tags (MSH
-// and TetGen do, .tsm not).
+// an interface between regions where the format keeps the regions apart
+// (MSH and TetGen do, MSH by renumbering negative tags; .tsm not).
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit)
     return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
-  if (format != MeshFormat::TetGen && format != MeshFormat::Cache)
-    for (const PassThroughBlock& b : mesh.extras.blocks)
-      for (index_t n : b.connectivity) kept[static_cast<std::size_t>(n)] = 1;
+  if (format != MeshFormat::TetGen && format != MeshFormat::Cache) mark_element_nodes(mesh.extras.blocks, kept);
   std::size_t candidates = 0;
   for (std::size_t i = 0; i < mesh.fixed.size(); ++i) candidates += mesh.fixed[i] && !kept[i];
   if (candidates == 0) return 0;  // spares the topology below
@@ -100,18 +98,22 @@ bool positional(const std::vector<long long>& tags) {
   return true;
 }
 
-// Whether the tets' Gmsh entity tags tell apart tets of one region (or,
-// without region tags, of the whole mesh): only then does their loss lose
+// Whether Gmsh entity tags tell apart elements of one region (or, without
+// region tags, of one block), in the tets or in a pass-through block (the
+// surface patches of a boundary, say): only then does their loss lose
 // anything that the region tags do not carry.
 bool entities_split_regions(const FileExtras& e) {
-  if (e.tet_entity_tags.empty()) return false;
-  const bool tagged = e.tet_tags.size() == e.tet_entity_tags.size();
-  std::unordered_map<int, int> entity_of_region;
-  for (std::size_t t = 0; t < e.tet_entity_tags.size(); ++t)
-    if (entity_of_region.try_emplace(tagged ? e.tet_tags[t] : 0, e.tet_entity_tags[t]).first->second !=
-        e.tet_entity_tags[t])
-      return true;
-  return false;
+  const auto splits = [](const std::vector<int>& entities, const std::vector<int>& regions) {
+    const bool tagged = regions.size() == entities.size();
+    std::unordered_map<int, int> entity_of_region;
+    for (std::size_t k = 0; k < entities.size(); ++k)
+      if (entity_of_region.try_emplace(tagged ? regions[k] : 0, entities[k]).first->second != entities[k])
+        return true;
+    return false;
+  };
+  return splits(e.tet_entity_tags, e.tet_tags) ||
+         std::any_of(e.blocks.begin(), e.blocks.end(),
+                     [&](const PassThroughBlock& b) { return splits(b.entity_tags, b.tags); });
 }
 
 }  // namespace
@@ -150,23 +152,30 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
       notes.push_back(std::string("the Medit section") + (count == 1 ? " " : "s ") + sections +
                       " will not be written: " + name + " has no place for " + (count == 1 ? "it" : "them"));
   }
-  if (f != MeshFormat::TetGen && e.tet_attribute_count > 0 && !e.tet_attributes.empty())
+  if (f != MeshFormat::TetGen && has_tet_attributes(e, mesh.num_tets()))
     notes.push_back("the TetGen tet attributes (" + std::to_string(e.tet_attribute_count) +
                     " per tet) will not be written: " + name +
                     (f == MeshFormat::Cache ? " has no place for them"
-                                            : " keeps only the region tags, numbered from the first attribute"));
+                                            : " keeps only the region tags (the first attribute's values where "
+                                              "whole, else their ranks)"));
   const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
   const bool node_ids = !positional(e.node_tags), element_ids = !positional(e.tet_element_tags);
   if (!msh && (node_ids || element_ids))
     notes.push_back(std::string("the Gmsh ") + (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
                     " tags will not be written: " + name + " numbers them by position");
   if (!msh) {
-    const bool names = std::any_of(e.raw_sections.begin(), e.raw_sections.end(),
-                                   [](const auto& section) { return section.first == "$PhysicalNames"; });
+    const bool names = raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = entities_split_regions(e);
     if (names || entities)
       notes.push_back(std::string("the Gmsh ") + (names && entities ? "physical names and entity tags" : names ? "physical names" : "entity tags") +
                       " will not be written: " + name + " has no place for them");
+  }
+  if (const std::map<int, int> renumbered = gmsh::negative_tag_renumbering(e); msh && !renumbered.empty()) {
+    std::string pairs;
+    for (const auto& [from, to] : renumbered)
+      pairs += (pairs.empty() ? "" : ", ") + std::to_string(from) + " as " + std::to_string(to);
+    notes.push_back("negative region tags are written as new positive ones (" + pairs +
+                    "): MSH physical tags are positive");
   }
   if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
     const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));

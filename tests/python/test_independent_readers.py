@@ -130,6 +130,39 @@ class IndependentReaders(unittest.TestCase):
                 self.assertEqual(set(m.cells_dict), {"tetra"})
                 self.assert_same_mesh(m.points, m.cells_dict["tetra"])
 
+    def test_meshio_reads_what_tetsmooth_carries_through(self):
+        # Extras tetsmooth keeps and writes back, in files meshio must still
+        # read: several TetGen tet attributes (whole ones, which meshio reads
+        # as ints, written as integers however the input spelled them), and
+        # Medit's Identifier and Geometry sections.
+        tets = self.tets + 1
+        base = self.path("attrs")
+        with open(base + ".node", "w", encoding="utf-8") as handle:
+            handle.write(f"{len(self.xyz)} 3 0 0\n")
+            for i, p in enumerate(self.xyz):
+                handle.write(f"{i + 1} {p[0]!r} {p[1]!r} {p[2]!r}\n")
+        with open(base + ".ele", "w", encoding="utf-8") as handle:
+            handle.write(f"{len(tets)} 4 2\n")
+            for t, tet in enumerate(tets):
+                handle.write(f"{t + 1} {tet[0]} {tet[1]} {tet[2]} {tet[3]} {1e6 + t % 2:e} {t}\n")
+        run("convert", base + ".node", self.path("attrs_out.node"), "-q")
+        m = meshio.read(self.path("attrs_out.node"))
+        self.assert_same_mesh(m.points, m.cells_dict["tetra"])
+        np.testing.assert_array_equal(m.cell_data["tetgen:ref"][0], 1000000 + np.arange(len(tets)) % 2)
+        np.testing.assert_array_equal(m.cell_data["tetgen:ref2"][0], np.arange(len(tets)))
+
+        medit = self.path("named.mesh")
+        run("convert", self.source, medit, "-q")
+        with open(medit, encoding="utf-8") as handle:
+            text = handle.read()
+        with open(medit, "w", encoding="utf-8") as handle:
+            handle.write(text.replace("Dimension 3\n", 'Dimension 3\nIdentifier\n"slope, v2"\nGeometry\nsupport.mesh\n', 1))
+        run("convert", medit, self.path("named_out.mesh"), "-q")
+        with open(self.path("named_out.mesh"), encoding="utf-8") as handle:
+            self.assertIn('Identifier\n"slope, v2"\n', handle.read())
+        m = meshio.read(self.path("named_out.mesh"))
+        self.assert_same_mesh(m.points, m.cells_dict["tetra"])
+
     def test_gmsh_reads_the_msh_files(self):
         gmsh, why = gmsh_module()
         if gmsh is None:

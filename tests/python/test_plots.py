@@ -243,22 +243,25 @@ class LoaderTests(unittest.TestCase):
         # Tables of nothing but blanks would hide the failure: the file is refused.
         entry = {"name": "Serial/FormB/5k/real_time", "run_type": "iteration", "error_occurred": True,
                  "error_message": "mesh not found"}
+        # The copy-bandwidth run beside it is nothing to render either; nor is
+        # a file of aggregates alone, which has neither runs nor errors.
+        copy = {"name": "Memory/CopyBandwidth/manual_time", "run_type": "iteration", "real_time": 0.7,
+                "time_unit": "ms", "bytes_per_s": 2.9e12}
+        aggregate = {"name": "Serial/FormB/5k/real_time_stddev", "run_type": "aggregate", "aggregate_name": "stddev",
+                     "real_time": 1.0, "time_unit": "ms"}
         with tempfile.TemporaryDirectory() as folder:
-            path = write_result(folder, {"context": {}, "benchmarks": [entry]}, "errored")
+            path = write_result(folder, {"context": {}, "benchmarks": [entry, copy]}, "errored")
             self.assertEqual(bj.load_result(path).errors, {"Serial/FormB/5k": "mesh not found"})
-            try:
-                bj.load_result(path, need_runs=True)
-                error = None
-            except bj.BenchInputError as caught:
-                error = caught
-            self.assertIsNotNone(error)
-            self.assertIn("every benchmark reported an error (1; the first, Serial/FormB/5k: mesh not found)",
-                          str(error))
+            self.assertIn("every smoothing benchmark reported an error (1; the first, Serial/FormB/5k: mesh not found)",
+                          str(self.load_error(path, need_runs=True)))
+            bare = write_result(folder, {"context": {}, "benchmarks": [aggregate]}, "aggregates")
+            self.assertIsNone(self.load_error(bare))
+            self.assertIn("no smoothing benchmark with a result", str(self.load_error(bare, need_runs=True)))
 
     @staticmethod
-    def load_error(path):
+    def load_error(path, need_runs=False):
         try:
-            bj.load_result(path)
+            bj.load_result(path, need_runs=need_runs)
         except bj.BenchInputError as error:
             return error
         return None
@@ -528,8 +531,12 @@ class OptionAndEdgeTests(unittest.TestCase):
             errored = write_result(out, {"context": {}, "benchmarks": [
                 {"name": "Serial/FormB/5k/real_time", "run_type": "iteration", "error_occurred": True,
                  "error_message": "mesh not found"}]}, "errored")
+            bare = write_result(out, {"context": {}, "benchmarks": [
+                {"name": "Serial/FormB/5k/real_time_stddev", "run_type": "aggregate", "aggregate_name": "stddev",
+                 "real_time": 1.0, "time_unit": "ms"}]}, "aggregates")
             for script in ("report.py", "make_tables.py", "make_figures.py"):
-                for path, why in ((empty, "empty file"), (errored, "every benchmark reported an error")):
+                for path, why in ((empty, "empty file"), (errored, "every smoothing benchmark reported an error"),
+                                  (bare, "no smoothing benchmark with a result")):
                     completed = run_script(script, path, os.path.join(out, "x"))
                     self.assertEqual(completed.returncode, 2, script)
                     self.assertIn(f"{path}: {why}", completed.stderr)

@@ -36,14 +36,15 @@ void check_shapes(const TetMesh& mesh, const std::string& source) {
   per_node(mesh.fixed.size(), "the fixed-node flag array");
   per_node(mesh.extras.node_tags.size(), "the node tag array");
   per_node(mesh.extras.node_markers.size(), "the node marker array");
-  const std::size_t attrs = static_cast<std::size_t>(std::max(mesh.extras.node_attribute_count, 0));
-  if (mesh.extras.node_attributes.size() != attrs * mesh.num_nodes() && !mesh.extras.node_attributes.empty())
-    fail(source, "node attribute array has " + std::to_string(mesh.extras.node_attributes.size()) +
-                     " values, expected " + std::to_string(attrs) + " per node");
-  const std::size_t tet_attrs = static_cast<std::size_t>(std::max(mesh.extras.tet_attribute_count, 0));
-  if (mesh.extras.tet_attributes.size() != tet_attrs * mesh.num_tets() && !mesh.extras.tet_attributes.empty())
-    fail(source, "tet attribute array has " + std::to_string(mesh.extras.tet_attributes.size()) +
-                     " values, expected " + std::to_string(tet_attrs) + " per tet");
+  // Attribute arrays: `count` values per item, row-major, or empty.
+  const auto rows = [&](const std::vector<double>& values, int count, std::size_t items, const char* item) {
+    const std::size_t per = static_cast<std::size_t>(std::max(count, 0));
+    if (values.size() != per * items && !values.empty())
+      fail(source, std::string(item) + " attribute array has " + std::to_string(values.size()) + " values, expected " +
+                       std::to_string(per) + " per " + item);
+  };
+  rows(mesh.extras.node_attributes, mesh.extras.node_attribute_count, mesh.num_nodes(), "node");
+  rows(mesh.extras.tet_attributes, mesh.extras.tet_attribute_count, mesh.num_tets(), "tet");
   per_tet(mesh.extras.tet_tags.size(), "the tet tag array");
   per_tet(mesh.extras.tet_entity_tags.size(), "the tet entity tag array");
   per_tet(mesh.extras.tet_element_tags.size(), "the tet element tag array");

@@ -275,9 +275,9 @@ void check_element_tags(FileExtras& extras, std::size_t tets) {
   if (!bad) return;
   extras.tet_element_tags.clear();
   for (PassThroughBlock& block : extras.blocks) block.element_tags.clear();
-  const std::string why = *bad <= 0                        ? " is not positive"
+  const std::string why = *bad <= 0                     ? " is not positive"
                           : *bad > gmsh::kLargestIntTag ? " exceeds " + std::to_string(gmsh::kLargestIntTag)
-                                                            : " is used twice";
+                                                        : " is used twice";
   extras.read_notes.push_back("element tag " + std::to_string(*bad) + why +
                               "; MSH output numbers the elements 1, 2, ... instead of keeping their tags");
 }

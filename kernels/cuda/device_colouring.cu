@@ -15,14 +15,19 @@
 // resident group working on it: the wait always ends. (A launch with every
 // block resident is what that needs; the cooperative launch guarantees it.)
 //
-// Classes: the colours (non-movable nodes as the sentinel num_colours) are
-// radix sorted with the node indices as values; the sort is stable, so each
-// class lists its nodes ascending, and only the bits of num_colours are sorted.
+// Classes: the colours (non-movable nodes as a sentinel past the last
+// colour) are radix sorted with the node indices as values; the sort is
+// stable, so each class lists its nodes ascending, and only the sentinel's
+// bits are sorted. The host reads the colour count back only with the
+// classes' offsets (see kQuickColours).
 #include <cooperative_groups.h>
 #include <cub/device/device_radix_sort.cuh>
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
+#include <utility>
+#include <vector>
 
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_topology.hpp"
@@ -57,9 +62,12 @@ struct ColourTotals {
 // Sort keys for the priority order: ascending keys are descending
 // priority, and the stable sort keeps ties in index order, as
 // colours_before breaks them.
+// Thread 0 also starts the totals, so that no copy from the host (whose
+// pageable source would make the stream wait) precedes the launch.
 __global__ void priority_keys(std::size_t n, const std::uint8_t* movable, std::uint32_t* keys, index_t* nodes,
-                              std::uint64_t* word) {
+                              std::uint64_t* word, ColourTotals* totals) {
   const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
+  if (i == 0) *totals = ColourTotals{-1, 0};
   if (i >= n) return;
   keys[i] = ~colouring_priority(static_cast<std::uint32_t>(i));
   nodes[i] = static_cast<index_t>(i);
@@ -178,27 +186,26 @@ NodePairSort node_pair_sort_scratch(DeviceTopology& topo, std::size_t n, int bit
   return s;
 }
 
-void run_dataflow(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
+// Colours the movable nodes; `totals` receives the largest colour and the
+// number of rounds.
+void run_dataflow(DeviceTopology& topo, ColourTotals* totals, cudaStream_t stream, unsigned max_blocks) {
   const std::size_t n = topo.num_nodes;
-  // The published words and the totals go in front of the sort's scratch.
-  const auto carve_front = [n](unsigned char* base, std::uint64_t*& word, ColourTotals*& totals) {
+  // The published words go in front of the sort's scratch.
+  const auto carve_front = [n](unsigned char* base, std::uint64_t*& word) {
     detail::ScratchCarver carver(base);
     word = carver.take<std::uint64_t>(n);
-    totals = carver.take<ColourTotals>(1);
     return carver.used();
   };
   std::uint64_t* word = nullptr;
-  ColourTotals* totals = nullptr;
-  NodePairSort sort = node_pair_sort_scratch(topo, n, 32, carve_front(nullptr, word, totals));
-  carve_front(sort.front, word, totals);
+  NodePairSort sort = node_pair_sort_scratch(topo, n, 32, carve_front(nullptr, word));
+  carve_front(sort.front, word);
   auto& keys = sort.keys;
   auto& nodes = sort.nodes;
 
-  priority_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.movable.data(), keys.Current(), nodes.Current(), word);
+  priority_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.movable.data(), keys.Current(), nodes.Current(), word,
+                                                      totals);
   CUDA_CHECK_LAUNCH();
   CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort.temp, sort.temp_bytes, keys, nodes, n, 0, 32, stream));
-  const ColourTotals start{-1, 0};
-  CUDA_CHECK(cudaMemcpyAsync(totals, &start, sizeof start, cudaMemcpyHostToDevice, stream));
   // Every block resident at once (see the top of the file), or fewer when
   // asked.
   unsigned blocks = std::min(blocks_for(n * kColourLanes), resident_blocks(colour_dataflow_kernel, kBlock));
@@ -212,18 +219,15 @@ void run_dataflow(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks
   CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(colour_dataflow_kernel), dim3(blocks),
                                          dim3(kBlock), params, 0, stream));
   CUDA_CHECK_LAUNCH();
-  ColourTotals host{};
-  CUDA_CHECK(cudaMemcpyAsync(&host, totals, sizeof host, cudaMemcpyDeviceToHost, stream));
-  CUDA_CHECK(cudaStreamSynchronize(stream));
-  topo.colour_rounds = static_cast<int>(host.rounds);
-  topo.num_colours = host.max_colour + 1;
 }
 
+// Colours above `sentinel` share its key; build_classes is then run again
+// with a larger one.
 __global__ void class_keys(std::size_t n, const int* colour, std::uint32_t sentinel, std::uint32_t* keys,
                            index_t* nodes) {
   const std::size_t i = blockIdx.x * static_cast<std::size_t>(blockDim.x) + threadIdx.x;
   if (i >= n) return;
-  keys[i] = colour[i] >= 0 ? static_cast<std::uint32_t>(colour[i]) : sentinel;
+  keys[i] = colour[i] >= 0 ? min(static_cast<std::uint32_t>(colour[i]), sentinel) : sentinel;
   nodes[i] = static_cast<index_t>(i);
 }
 
@@ -234,11 +238,11 @@ struct ColourRows {
   __device__ index_t item(unsigned long long k) const { return nodes[k]; }
 };
 
-void build_classes(DeviceTopology& topo, cudaStream_t stream) {
+// Classes 0 .. sentinel - 1 into class_off[0 .. sentinel]; the nodes that
+// never move (and any of colour sentinel or more) are in none.
+void build_classes(DeviceTopology& topo, std::uint32_t sentinel, cudaStream_t stream) {
   const std::size_t n = topo.num_nodes;
-  const auto nc = static_cast<std::uint32_t>(topo.num_colours);
-  const int bits = detail::bits_for(nc);  // keys run 0..nc, nc being the sentinel
-  topo.class_off.resize(nc + 1);
+  const int bits = detail::bits_for(sentinel);  // keys run 0..sentinel
   topo.class_nodes.resize(topo.movable_count);
 
   NodePairSort sort = node_pair_sort_scratch(topo, n, bits, 0);
@@ -246,26 +250,48 @@ void build_classes(DeviceTopology& topo, cudaStream_t stream) {
   auto& nodes = sort.nodes;
 
   if (n > 0) {
-    class_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.colour.data(), nc, keys.Current(), nodes.Current());
+    class_keys<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.colour.data(), sentinel, keys.Current(),
+                                                     nodes.Current());
     CUDA_CHECK_LAUNCH();
     CUDA_CHECK(cub::DeviceRadixSort::SortPairs(sort.temp, sort.temp_bytes, keys, nodes, n, 0, bits, stream));
   }
   detail::csr_from_sorted<<<blocks_for(n + 1), kBlock, 0, stream>>>(
       ColourRows{keys.Current(), nodes.Current()}, static_cast<const unsigned long long*>(nullptr), n,
-      static_cast<index_t>(nc), topo.class_off.data(), topo.class_nodes.data());
+      static_cast<index_t>(sentinel), topo.class_off.data(), topo.class_nodes.data());
   CUDA_CHECK_LAUNCH();
-  topo.class_off_host = topo.class_off.download(stream);
 }
+
+// The classes are built for up to kQuickColours colours before the colour
+// count is known on the host, so that one read-back (the offsets, with the
+// totals after them) serves both: a one-pass sort of 8-bit keys costs what
+// one of 4 bits does. A colouring with more colours builds them again.
+constexpr std::uint32_t kQuickColours = 255;
 
 }  // namespace
 
 void colour_device(DeviceTopology& topo, cudaStream_t stream, unsigned max_blocks) {
+  static_assert(sizeof(ColourTotals) == 2 * sizeof(index_t) && alignof(ColourTotals) <= alignof(index_t));
   topo.colour.resize(topo.num_nodes);
   if (topo.num_nodes > 0) CUDA_CHECK(cudaMemsetAsync(topo.colour.data(), 0xff, topo.colour.bytes(), stream));
-  topo.num_colours = 0;
-  topo.colour_rounds = 0;
-  if (topo.movable_count > 0) run_dataflow(topo, stream, max_blocks);
-  build_classes(topo, stream);
+  // class_off: the offsets of kQuickColours classes, then the totals.
+  topo.class_off.resize(kQuickColours + 1 + 2);
+  auto* totals = reinterpret_cast<ColourTotals*>(topo.class_off.data() + kQuickColours + 1);
+  if (topo.movable_count > 0) run_dataflow(topo, totals, stream, max_blocks);
+  build_classes(topo, kQuickColours, stream);
+  std::vector<index_t> off = topo.class_off.download(stream);
+  ColourTotals host{-1, 0};
+  if (topo.movable_count > 0) std::memcpy(&host, off.data() + kQuickColours + 1, sizeof host);
+  const auto nc = static_cast<std::uint32_t>(host.max_colour + 1);
+  topo.num_colours = static_cast<int>(nc);
+  topo.colour_rounds = static_cast<int>(host.rounds);
+  if (nc > kQuickColours) {
+    topo.class_off.resize(nc + 1);
+    build_classes(topo, nc, stream);
+    off = topo.class_off.download(stream);
+  }
+  off.resize(nc + 1);
+  topo.class_off.resize(nc + 1);
+  topo.class_off_host = std::move(off);
 }
 
 }  // namespace tetsmooth::cuda

@@ -16,12 +16,23 @@
 //   face      a 32-bit hash of the sorted triple, the face index as value
 //             (device_topology_boundary.cu).
 //
+// Two streams: the neighbour rows on the caller's, and meanwhile the
+// incidence rows and then the boundary on topo.side, joined before the
+// movable flags, which need both. The phases are independent, and the radix
+// sorts of a mesh of ~10^5 nodes leave the GPU room for another: on an H100
+// the 109k model's topology took 0.86 ms with every phase on one stream.
+//
 // Memory, to size a run (bytes per tet T; a lattice has N ~ T / 6):
-//   scratch   two key buffers of 12 keys * 8 B = 192 B/tet, reused by every
-//             phase (the directed edges stay in one of them, the incidence
-//             and face sorts work in the other), plus CUB temp storage for the
-//             DoubleBuffer sorts and the unique pass: bounded, since onesweep
-//             works in portions of 2^28 keys (about 100-200 MB at most).
+//   scratch   two key buffers of 12 keys * 8 B = 192 B/tet. The edges take
+//             the first 6 keys per tet of both (their sort, its unique
+//             copy, then up to 2 * 6 directed keys per tet, whose rows stay
+//             in one of them until the end); the incidence and then the
+//             face sort work in the last 6 of both meanwhile. Directed edges
+//             past the first half (more than 3 unique edges per tet, which
+//             no mesh with shared edges has) wait for the side stream to
+//             finish first. Plus CUB temp storage for each stream's sorts
+//             (and the unique pass): bounded, since onesweep works in
+//             portions of 2^28 keys (about 100-200 MB each at most).
 //             topo.scratch.bytes() gives the exact figure.
 //   results   inc 16 B/tet, nbr 4 B per directed edge (~9 B/tet on a lattice,
 //             14 neighbours per node), offsets 8 B/node, flags 2 B/node.
@@ -30,8 +41,9 @@
 //   later reuses the same scratch (about 24 B/node and CUB temp storage).
 //
 // Two host synchronisations: the unique edge count sizes the second edge
-// sort, and at the end the neighbour count sizes `nbr`, which is only
-// allocated then; everything else is sized from N and T.
+// sort (the side stream keeps the GPU busy meanwhile), and at the end the
+// neighbour count sizes `nbr`, which is only allocated then; everything else
+// is sized from N and T.
 #include <algorithm>
 
 #include <cub/device/device_radix_sort.cuh>
@@ -121,35 +133,67 @@ __global__ void mark_movable(std::size_t num_nodes, const index_t* nbr_off, cons
 // Where the phases keep their data inside topo.scratch.
 struct BuildScratch {
   BuildCounts* counts;
-  std::uint64_t* keys[2];  // 12 keys per tet each
-  void* temp;
-  std::size_t temp_bytes;
+  std::uint64_t* keys[2];  // 12 keys per tet each: the first 6 for the edges, the last 6 for the side stream
+  void* temp;              // CUB storage of the edges' sorts and unique pass
+  void* side_temp;         // and of the side stream's sorts
+  std::size_t temp_bytes, side_temp_bytes;
   std::size_t bytes;  // all of it
 };
 
-BuildScratch carve(unsigned char* base, std::size_t num_tets, std::size_t temp_bytes) {
+BuildScratch carve(unsigned char* base, std::size_t num_tets, std::size_t temp_bytes, std::size_t side_temp_bytes) {
   detail::ScratchCarver carver(base);
   BuildScratch s{};
   s.counts = carver.take<BuildCounts>(1);
   s.keys[0] = carver.take<std::uint64_t>(12 * num_tets);
   s.keys[1] = carver.take<std::uint64_t>(12 * num_tets);
   s.temp = carver.take<unsigned char>(temp_bytes);
+  s.side_temp = carver.take<unsigned char>(side_temp_bytes);
   s.temp_bytes = temp_bytes;
+  s.side_temp_bytes = side_temp_bytes;
   s.bytes = carver.used();
   return s;
 }
 
-// The largest CUB temp storage any phase needs, for the bit widths used.
-std::size_t cub_temp_bytes(std::size_t num_tets, int w, int u) {
-  std::size_t need = detail::face_temp_bytes(num_tets), bytes = 0;
+// The CUB temp storage the edges' phase needs, for the bit widths used.
+std::size_t edge_temp_bytes(std::size_t num_tets, int w) {
+  std::size_t need = 0, bytes = 0;
   cub::DoubleBuffer<std::uint64_t> none(nullptr, nullptr);
   CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 12 * num_tets, 0, 2 * w));
   need = std::max(need, bytes);
   CUDA_CHECK(cub::DeviceSelect::Unique(nullptr, bytes, none.Current(), none.Current(),
                                        static_cast<unsigned long long*>(nullptr), 6 * num_tets));
-  need = std::max(need, bytes);
-  CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, u, w + u));
   return std::max(need, bytes);
+}
+
+// And the side stream's: the incidence sort, then the face sort.
+std::size_t side_temp_bytes(std::size_t num_tets, int w, int u) {
+  std::size_t bytes = 0;
+  cub::DoubleBuffer<std::uint64_t> none(nullptr, nullptr);
+  CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, u, w + u));
+  return std::max(bytes, detail::face_temp_bytes(num_tets));
+}
+
+// Node -> tets on `side`: 4 keys per tet, sorted; row = node, item = tet.
+// Then the boundary flags. Works in `half[0]` and `half[1]`, 6 keys per tet
+// each.
+void build_incidence_and_boundary(DeviceTopology& topo, const index_t* d_tets, std::size_t nt, std::size_t n, int w,
+                                  int u, std::uint64_t* const half[2], void* temp, std::size_t temp_bytes,
+                                  cudaStream_t side) {
+  const auto rows = static_cast<index_t>(n);
+  cub::DoubleBuffer<std::uint64_t> inc(half[0], half[1]);
+  std::size_t temp_size = temp_bytes;
+  if (nt > 0) {
+    emit_incidence<<<blocks_for(4 * nt), kBlock, 0, side>>>(d_tets, nt, n, u, inc.Current());
+    CUDA_CHECK_LAUNCH();
+    // Keys are emitted in tet order and the radix sort is stable, so sorting
+    // the node bits alone leaves each row's tets ascending.
+    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(temp, temp_size, inc, 4 * nt, u, w + u, side));
+  }
+  detail::csr_from_sorted<<<blocks_for(4 * nt + 1), kBlock, 0, side>>>(
+      detail::PackedRows{inc.Current(), u}, static_cast<const unsigned long long*>(nullptr), 4 * nt, rows,
+      topo.inc_off.data(), topo.inc.data());
+  CUDA_CHECK_LAUNCH();
+  detail::mark_boundary_nodes(d_tets, nt, n, half[0], half[1], temp, temp_bytes, topo.boundary.data(), side);
 }
 
 }  // namespace
@@ -168,11 +212,16 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   topo.boundary.resize(n);
   topo.movable.resize(n);
 
-  const std::size_t temp_bytes = cub_temp_bytes(nt, w, u);
-  topo.scratch.resize(carve(nullptr, nt, temp_bytes).bytes);
-  const BuildScratch s = carve(topo.scratch.data(), nt, temp_bytes);
+  const std::size_t temp_bytes = edge_temp_bytes(nt, w), side_bytes = side_temp_bytes(nt, w, u);
+  topo.scratch.resize(carve(nullptr, nt, temp_bytes, side_bytes).bytes);
+  const BuildScratch s = carve(topo.scratch.data(), nt, temp_bytes, side_bytes);
   std::size_t temp_size = s.temp_bytes;
   CUDA_CHECK(cudaMemsetAsync(s.counts, 0, sizeof(BuildCounts), stream));
+
+  std::uint64_t* const side_half[2] = {s.keys[0] + 6 * nt, s.keys[1] + 6 * nt};
+  build_incidence_and_boundary(topo, d_tets, nt, n, w, u, side_half, s.side_temp, s.side_temp_bytes,
+                               topo.side.begin(stream));
+  topo.side.end();
 
   // Neighbours: each tet's 6 edges as (min, max), sorted and made unique;
   // then each unique edge in both directions, sorted by start node; rows
@@ -193,7 +242,9 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
     CUDA_CHECK(cudaStreamSynchronize(stream));
   }
   const std::size_t directed = 2 * static_cast<std::size_t>(counts.unique_edges);
-  // Up to 12 keys per tet (tets that share no edge): a whole buffer each.
+  // Up to 12 keys per tet (tets that share no edge): past the first half,
+  // into the side stream's.
+  if (directed > 6 * nt) topo.side.await(stream);
   cub::DoubleBuffer<std::uint64_t> rows_sorted(edges.Current(), edges.Alternate());
   if (directed > 0) {
     both_directions<<<blocks_for(directed / 2), kBlock, 0, stream>>>(edges.Alternate(), directed / 2, n, w,
@@ -201,31 +252,14 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
     CUDA_CHECK_LAUNCH();
     CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, rows_sorted, directed, w, 2 * w, stream));
   }
+  // The directed edges stay where they are until low_bits reads them.
   const std::uint64_t* directed_edges = rows_sorted.Current();
   detail::csr_from_sorted<<<blocks_for(directed + 1), kBlock, 0, stream>>>(
       detail::PackedRows{directed_edges, w}, static_cast<const unsigned long long*>(nullptr), directed, rows,
       topo.nbr_off.data(), static_cast<index_t*>(nullptr));
   CUDA_CHECK_LAUNCH();
-  // The directed edges stay where they are until low_bits reads them; later
-  // phases work in the other buffer.
-  std::uint64_t* work = rows_sorted.Alternate();
 
-  // Node -> tets: 4 keys per tet, sorted; row = node, item = tet.
-  cub::DoubleBuffer<std::uint64_t> inc(work, work + 4 * nt);
-  if (nt > 0) {
-    emit_incidence<<<blocks_for(4 * nt), kBlock, 0, stream>>>(d_tets, nt, n, u, inc.Current());
-    CUDA_CHECK_LAUNCH();
-    // Keys are emitted in tet order and the radix sort is stable, so sorting
-    // the node bits alone leaves each row's tets ascending.
-    CUDA_CHECK(cub::DeviceRadixSort::SortKeys(s.temp, temp_size, inc, 4 * nt, u, w + u, stream));
-  }
-  detail::csr_from_sorted<<<blocks_for(4 * nt + 1), kBlock, 0, stream>>>(
-      detail::PackedRows{inc.Current(), u}, static_cast<const unsigned long long*>(nullptr), 4 * nt, rows,
-      topo.inc_off.data(), topo.inc.data());
-  CUDA_CHECK_LAUNCH();
-
-  detail::mark_boundary_nodes(d_tets, nt, n, work, s.temp, s.temp_bytes, topo.boundary.data(), stream);
-
+  topo.side.await(stream);  // the boundary flags and the incidence rows
   if (n > 0) {
     mark_movable<<<blocks_for(n), kBlock, 0, stream>>>(n, topo.nbr_off.data(), topo.boundary.data(), d_fixed,
                                                        topo.movable.data(), &s.counts->movable);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kernels/cuda/device_buffer.hpp"
+#include "kernels/cuda/side_stream.hpp"
 #include "kernels/node_update.hpp"
 #include "mesh/tet_mesh.hpp"
 
@@ -26,6 +27,9 @@ struct DeviceTopology {
   std::size_t movable_count = 0;
   // Scratch reused across calls so a benchmark loop allocates once.
   DeviceBuffer<unsigned char> scratch;
+  // Where the incidence rows and the boundary are built while the main
+  // stream builds the neighbour rows (device_topology.cu).
+  SideStream side;
 
   MeshView view(const index_t* d_tets) const {
     return MeshView{d_tets, nbr_off.data(), nbr.data(), inc_off.data(), inc.data()};

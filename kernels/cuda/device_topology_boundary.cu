@@ -108,15 +108,17 @@ std::size_t face_temp_bytes(std::size_t num_tets) {
   return bytes;
 }
 
-void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes, void* work, void* temp,
-                         std::size_t temp_bytes, std::uint8_t* boundary, cudaStream_t stream) {
+void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes, void* hash_work,
+                         void* id_work, void* temp, std::size_t temp_bytes, std::uint8_t* boundary,
+                         cudaStream_t stream) {
   if (num_nodes > 0) CUDA_CHECK(cudaMemsetAsync(boundary, 0, num_nodes, stream));
   if (num_tets == 0) return;
   const std::size_t n = 4 * num_tets;
   if (n > 0xffffffffull)  // far past what the scratch of a GPU holds, but named rather than wrapped
     throw DeviceError("GPU topology: " + std::to_string(num_tets) + " tets give more faces than 32-bit face indices");
-  auto* words = static_cast<std::uint32_t*>(work);
-  cub::DoubleBuffer<std::uint32_t> hashes(words, words + n), ids(words + 2 * n, words + 3 * n);
+  auto* h = static_cast<std::uint32_t*>(hash_work);
+  auto* id = static_cast<std::uint32_t*>(id_work);
+  cub::DoubleBuffer<std::uint32_t> hashes(h, h + n), ids(id, id + n);
   emit_faces<<<blocks_for(n), kBlock, 0, stream>>>(d_tets, n, hashes.Current(), ids.Current());
   CUDA_CHECK_LAUNCH();
   CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp, temp_bytes, hashes, ids, n, kUnsortedBits, 32, stream));

@@ -71,11 +71,12 @@ struct PackedRows {
   }
 };
 
-// Boundary flags from the tets' faces (device_topology_boundary.cu). `work`
-// must hold 2 * 4 (hash, face index) pairs of 8 B per tet (64 B/tet);
-// `temp` is CUB storage of face_temp_bytes().
+// Boundary flags from the tets' faces (device_topology_boundary.cu).
+// `hash_work` and `id_work` must each hold 2 * 4 32-bit words per tet
+// (32 B/tet); `temp` is CUB storage of face_temp_bytes().
 std::size_t face_temp_bytes(std::size_t num_tets);
-void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes, void* work, void* temp,
-                         std::size_t temp_bytes, std::uint8_t* boundary, cudaStream_t stream);
+void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes, void* hash_work,
+                         void* id_work, void* temp, std::size_t temp_bytes, std::uint8_t* boundary,
+                         cudaStream_t stream);
 
 }  // namespace tetsmooth::cuda::detail

@@ -191,12 +191,16 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   CUDA_CHECK(cudaMemsetAsync(m.repair_found.data(), 0, m.repair_found.bytes(), m.stream));
   CUDA_CHECK(cudaMemsetAsync(m.moved.data(), 0, m.moved.bytes(), m.stream));
   CUDA_CHECK(cudaMemsetAsync(m.revert.data(), 0, m.revert.bytes(), m.stream));
+  // The tolerance (a multiple of the mean edge length) on the topology's side
+  // stream, beside the colouring; the sweeps wait for it.
+  const cudaStream_t side = m.topo.side.begin(m.stream);
   if (is_float)
-    sum_edge_lengths<float>(view, m.buf0.data(), n, o.layout, m.state.data(), m.stream);
+    sum_edge_lengths<float>(view, m.buf0.data(), n, o.layout, m.state.data(), side);
   else
-    sum_edge_lengths<double>(view, m.buf0.data(), n, o.layout, m.state.data(), m.stream);
-  set_tolerance_kernel<<<1, 1, 0, m.stream>>>(m.state.data(), o.tolerance);
+    sum_edge_lengths<double>(view, m.buf0.data(), n, o.layout, m.state.data(), side);
+  set_tolerance_kernel<<<1, 1, 0, side>>>(m.state.data(), o.tolerance);
   CUDA_CHECK_LAUNCH();
+  m.topo.side.end();
   e_topo.record(m.stream);
 
   const std::vector<index_t>* class_off = nullptr;  // host copy
@@ -221,6 +225,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
     }
   }
   e_colour.record(m.stream);
+  m.topo.side.await(m.stream);
 
   SweepLoopArgs a;
   a.view = view;

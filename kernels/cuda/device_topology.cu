@@ -165,12 +165,14 @@ std::size_t edge_temp_bytes(std::size_t num_tets, int w) {
   return std::max(need, bytes);
 }
 
-// And the side stream's: the incidence sort, then the face sort.
-std::size_t side_temp_bytes(std::size_t num_tets, int w, int u) {
+// And the side stream's: the incidence sort, the face sort and, where asked
+// for, the priority order's.
+std::size_t side_temp_bytes(std::size_t num_tets, std::size_t num_nodes, int w, int u, bool priority_order) {
   std::size_t bytes = 0;
   cub::DoubleBuffer<std::uint64_t> none(nullptr, nullptr);
   CUDA_CHECK(cub::DeviceRadixSort::SortKeys(nullptr, bytes, none, 4 * num_tets, u, w + u));
-  return std::max(bytes, detail::face_temp_bytes(num_tets));
+  bytes = std::max(bytes, detail::face_temp_bytes(num_tets));
+  return priority_order ? std::max(bytes, detail::priority_order_temp_bytes(num_nodes)) : bytes;
 }
 
 // Node -> tets on `side`: 4 keys per tet, sorted; row = node, item = tet.
@@ -199,7 +201,7 @@ void build_incidence_and_boundary(DeviceTopology& topo, const index_t* d_tets, s
 }  // namespace
 
 void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes,
-                           const std::uint8_t* d_fixed, cudaStream_t stream) {
+                           const std::uint8_t* d_fixed, cudaStream_t stream, bool priority_order) {
   const std::size_t n = num_nodes, nt = num_tets;
   const auto rows = static_cast<index_t>(n);
   const int w = detail::bits_for(n);                     // node indices and the sentinel N
@@ -212,15 +214,25 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   topo.boundary.resize(n);
   topo.movable.resize(n);
 
-  const std::size_t temp_bytes = edge_temp_bytes(nt, w), side_bytes = side_temp_bytes(nt, w, u);
+  // The priority order's sort takes 3 words a node from the side's half,
+  // which has 12 a tet: every mesh whose nodes all belong to tets.
+  topo.priority_order_built = priority_order && n > 0 && 3 * n <= 12 * nt;
+  if (topo.priority_order_built) topo.priority_order.resize(n);
+  const std::size_t temp_bytes = edge_temp_bytes(nt, w),
+                    side_bytes = side_temp_bytes(nt, n, w, u, topo.priority_order_built);
   topo.scratch.resize(carve(nullptr, nt, temp_bytes, side_bytes).bytes);
   const BuildScratch s = carve(topo.scratch.data(), nt, temp_bytes, side_bytes);
   std::size_t temp_size = s.temp_bytes;
   CUDA_CHECK(cudaMemsetAsync(s.counts, 0, sizeof(BuildCounts), stream));
 
   std::uint64_t* const side_half[2] = {s.keys[0] + 6 * nt, s.keys[1] + 6 * nt};
-  build_incidence_and_boundary(topo, d_tets, nt, n, w, u, side_half, s.side_temp, s.side_temp_bytes,
-                               topo.side.begin(stream));
+  const cudaStream_t side = topo.side.begin(stream);
+  build_incidence_and_boundary(topo, d_tets, nt, n, w, u, side_half, s.side_temp, s.side_temp_bytes, side);
+  if (topo.priority_order_built) {
+    auto* words = reinterpret_cast<std::uint32_t*>(side_half[0]);
+    detail::sort_priority_order(n, topo.priority_order.data(), words, words + n,
+                                reinterpret_cast<index_t*>(words + 2 * n), s.side_temp, s.side_temp_bytes, side);
+  }
   topo.side.end();
 
   // Neighbours: each tet's 6 edges as (min, max), sorted and made unique;

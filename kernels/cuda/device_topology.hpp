@@ -23,6 +23,10 @@ struct DeviceTopology {
   DeviceBuffer<std::int32_t> colour;    // per node, -1 when not movable (after colour_device)
   DeviceBuffer<index_t> class_off, class_nodes;  // colour -> nodes ascending (CSR)
   std::vector<index_t> class_off_host;  // the same offsets on the host, for launching per colour
+  // The nodes in descending colouring priority; priority_order_built says
+  // the topology build left it for this mesh (else colour_device sorts it).
+  DeviceBuffer<index_t> priority_order;
+  bool priority_order_built = false;
   int num_colours = 0, colour_rounds = 0;
   std::size_t movable_count = 0;
   // Scratch reused across calls so a benchmark loop allocates once.
@@ -37,9 +41,12 @@ struct DeviceTopology {
 };
 
 // Builds neighbours, incidence, boundary and movable flags from tets already
-// on the device. d_fixed may be null (no file-pinned nodes).
+// on the device. d_fixed may be null (no file-pinned nodes). With
+// priority_order, also the colouring's priority order, on the side stream
+// (where it costs the run nothing but memory traffic), for a colour_device
+// that follows.
 void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::size_t num_tets, std::size_t num_nodes,
-                           const std::uint8_t* d_fixed, cudaStream_t stream);
+                           const std::uint8_t* d_fixed, cudaStream_t stream, bool priority_order = false);
 
 // Jones-Plassmann colouring with the same priorities and first-fit rule as
 // mesh/colouring.hpp, so the result equals colour_nodes() exactly.

@@ -79,4 +79,12 @@ void mark_boundary_nodes(const index_t* d_tets, std::size_t num_tets, std::size_
                          void* id_work, void* temp, std::size_t temp_bytes, std::uint8_t* boundary,
                          cudaStream_t stream);
 
+// The nodes in descending colouring priority (colouring_priority in
+// mesh/colouring.hpp, ties by index), n entries into `order`: a function of
+// n alone. keys0, keys1 and alt hold n entries each, temp
+// priority_order_temp_bytes(n) (device_colouring.cu).
+std::size_t priority_order_temp_bytes(std::size_t n);
+void sort_priority_order(std::size_t n, index_t* order, std::uint32_t* keys0, std::uint32_t* keys1, index_t* alt,
+                         void* temp, std::size_t temp_bytes, cudaStream_t stream);
+
 }  // namespace tetsmooth::cuda::detail

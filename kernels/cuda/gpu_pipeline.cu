@@ -183,7 +183,8 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
 
   Event e_start, e_topo, e_colour, e_end;
   e_start.record(m.stream);
-  build_device_topology(m.topo, m.tets.data(), m.t, m.n, m.fixed.size() ? m.fixed.data() : nullptr, m.stream);
+  build_device_topology(m.topo, m.tets.data(), m.t, m.n, m.fixed.size() ? m.fixed.data() : nullptr, m.stream,
+                        o.strategy == Strategy::Coloured && !colouring);
   const MeshView view = m.topo.view(m.tets.data());
   CUDA_CHECK(cudaMemsetAsync(m.state.data(), 0, sizeof(SweepState), m.stream));
   CUDA_CHECK(cudaMemsetAsync(m.accepted.data(), 0, m.accepted.bytes(), m.stream));

@@ -7,7 +7,7 @@
 
 namespace tetsmooth::cuda {
 
-TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_blocks) {
+TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_blocks, bool order_with_topology) {
   const cudaStream_t stream = nullptr;
   DeviceBuffer<index_t> tets;
   DeviceBuffer<std::uint8_t> fixed;
@@ -15,7 +15,8 @@ TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_bloc
   if (!mesh.fixed.empty()) fixed.upload(mesh.fixed, stream);
 
   DeviceTopology topo;
-  build_device_topology(topo, tets.data(), mesh.num_tets(), mesh.num_nodes(), fixed.data(), stream);
+  build_device_topology(topo, tets.data(), mesh.num_tets(), mesh.num_nodes(), fixed.data(), stream,
+                        order_with_topology);
   colour_device(topo, stream, colour_blocks);
 
   TopologySnapshot snap;

@@ -17,7 +17,10 @@ struct TopologySnapshot {
 };
 
 // Uploads the mesh, builds topology and colouring on the GPU, downloads all.
-// colour_blocks > 0 caps the colouring launch (see colour_device).
-TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_blocks = 0);
+// colour_blocks > 0 caps the colouring launch (see colour_device);
+// order_with_topology has the topology build sort the colouring's priority
+// order (see build_device_topology).
+TopologySnapshot gpu_topology_snapshot(const TetMesh& mesh, unsigned colour_blocks = 0,
+                                       bool order_with_topology = false);
 
 }  // namespace tetsmooth::cuda

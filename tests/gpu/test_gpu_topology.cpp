@@ -40,10 +40,10 @@ template <class T>
   return ::testing::AssertionSuccess();
 }
 
-void expect_same_as_cpu(const TetMesh& mesh, unsigned colour_blocks = 0) {
+void expect_same_as_cpu(const TetMesh& mesh, unsigned colour_blocks, bool order_with_topology) {
   const Topology cpu = build_topology(mesh);
   const Colouring cpu_colouring = colour_nodes(cpu.neighbours, cpu.movable);
-  const cuda::TopologySnapshot gpu = cuda::gpu_topology_snapshot(mesh, colour_blocks);
+  const cuda::TopologySnapshot gpu = cuda::gpu_topology_snapshot(mesh, colour_blocks, order_with_topology);
 
   EXPECT_TRUE(same(gpu.neighbours.offsets, cpu.neighbours.offsets)) << "neighbour offsets";
   EXPECT_TRUE(same(gpu.neighbours.items, cpu.neighbours.items)) << "neighbours";
@@ -58,6 +58,16 @@ void expect_same_as_cpu(const TetMesh& mesh, unsigned colour_blocks = 0) {
   EXPECT_TRUE(same(gpu.colouring.classes.offsets, cpu_colouring.classes.offsets)) << "class offsets";
   EXPECT_TRUE(same(gpu.colouring.classes.items, cpu_colouring.classes.items)) << "class nodes";
   EXPECT_TRUE(is_valid_colouring(cpu.neighbours, cpu.movable, gpu.colouring.colour));
+}
+
+// Twice: with the colouring's priority order sorted by the colouring, and
+// by the topology build on its side stream (as the pipeline's Coloured runs
+// do).
+void expect_same_as_cpu(const TetMesh& mesh, unsigned colour_blocks = 0) {
+  for (bool order_with_topology : {false, true}) {
+    SCOPED_TRACE(order_with_topology ? "priority order from the topology build" : "priority order by colour_device");
+    expect_same_as_cpu(mesh, colour_blocks, order_with_topology);
+  }
 }
 
 TEST_F(GpuTopology, RegularTet) { expect_same_as_cpu(testing::regular_tet()); }
@@ -121,26 +131,31 @@ TEST_F(GpuTopology, NodeIndicesAbove2To22) {
   expect_same_as_cpu(m);
 }
 
-// Every pair of 70 nodes shares tets, so the nodes form a clique: 70
-// colours, past the 64 that one mask of used colours holds. Each pair i, j
-// takes the three tets {i, j, a, b} over two of three pinned hub nodes, so
-// every face has two tets with different fourth nodes: none is single, and
-// the 70 nodes are all movable.
-TEST_F(GpuTopology, CliqueNeedsMoreThan64Colours) {
-  constexpr index_t kNodes = 70;
-  const index_t hub[3] = {kNodes, kNodes + 1, kNodes + 2};
+// Every pair of k nodes shares tets, so the nodes form a clique: k colours.
+// Each pair i, j takes the three tets {i, j, a, b} over two of three pinned
+// hub nodes, so every face has two tets with different fourth nodes: none is
+// single, and the k nodes are all movable.
+void expect_clique_coloured_as_on_cpu(index_t k) {
+  const index_t hub[3] = {k, k + 1, k + 2};
   TetMesh m;
-  for (index_t i = 0; i < kNodes + 3; ++i) m.xyz.insert(m.xyz.end(), {double(i), double(i * i % 7), double(i % 5)});
-  for (index_t i = 0; i < kNodes; ++i)
-    for (index_t j = i + 1; j < kNodes; ++j)
+  for (index_t i = 0; i < k + 3; ++i) m.xyz.insert(m.xyz.end(), {double(i), double(i * i % 7), double(i % 5)});
+  for (index_t i = 0; i < k; ++i)
+    for (index_t j = i + 1; j < k; ++j)
       for (int skip = 0; skip < 3; ++skip) m.tets.insert(m.tets.end(), {i, j, hub[(skip + 1) % 3], hub[(skip + 2) % 3]});
-  m.fixed.assign(kNodes + 3, 0);
+  m.fixed.assign(static_cast<std::size_t>(k) + 3, 0);
   for (index_t h : hub) m.fixed[static_cast<std::size_t>(h)] = 1;
   expect_same_as_cpu(m);
   const Topology cpu = build_topology(m);
-  EXPECT_EQ(std::count(cpu.movable.begin(), cpu.movable.end(), 1), kNodes);
-  EXPECT_EQ(colour_nodes(cpu.neighbours, cpu.movable).num_colours, kNodes);
+  EXPECT_EQ(std::count(cpu.movable.begin(), cpu.movable.end(), 1), k);
+  EXPECT_EQ(colour_nodes(cpu.neighbours, cpu.movable).num_colours, k);
 }
+
+// 70 colours, past the 64 that one mask of used colours holds.
+TEST_F(GpuTopology, CliqueNeedsMoreThan64Colours) { expect_clique_coloured_as_on_cpu(70); }
+
+// 260 colours, past the 255 for which the classes are built before the
+// colour count is read back (device_colouring.cu): they are built again.
+TEST_F(GpuTopology, CliqueNeedsMoreThan255Colours) { expect_clique_coloured_as_on_cpu(260); }
 
 }  // namespace
 }  // namespace tetsmooth

@@ -185,7 +185,10 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         // the memory the last one fetched; the prefetch starts them all now
         // (star_prefetch.cuh). On an H100, smoothing lattice-215 (8 lanes)
         // took 372 ms against 417 in float, 900 against 1015 in double; with
-        // a warp per node, one round, 109k in float took 1.40 against 1.33.
+        // a warp per node, one round, 109k in float took 1.40 against 1.33,
+        // and with the fetch issued before the centroid instead of after it
+        // the whole 109k run took 3.27-3.30 ms against 3.22-3.25 in double,
+        // 2.36-2.38 against 2.23-2.27 in float.
         StarPrefetch<kPrefetchRounds> star;
         if (kPrefetchRounds > 0)
           star.read_entries(m, in_class ? m.inc_off[i] : 0, in_class ? m.inc_off[i + 1] : 0, lane, G, active);
@@ -220,6 +223,14 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         evaluated += active && lane == 0;
       }
       parity ^= 1u;
+      // (Instead of these barriers, each node once waited for its own
+      // neighbours of earlier colours alone: every node published the colour
+      // step it had finished with a release store, and read what others
+      // write past L1. The same results, but slower on an H100: the 109k run
+      // took 3.48 ms against 3.30 in double and 2.53 against 2.33 in float,
+      // lattice-215 800 against 402 in float. A node's own chain of loads,
+      // not the barrier, sets a small class's pace, and the release and the
+      // neighbours' ready words lengthen it.)
       if (col + 1 < cls.count) {
         grid.sync();  // the next colour reads these moves
         stamp_colour(col);

@@ -20,7 +20,10 @@
 // incidence rows and then the boundary on topo.side, joined before the
 // movable flags, which need both. The phases are independent, and the radix
 // sorts of a mesh of ~10^5 nodes leave the GPU room for another: on an H100
-// the 109k model's topology took 0.86 ms with every phase on one stream.
+// the 109k model's topology took 0.86 ms with every phase on one stream and
+// 0.73-0.75 ms with two (0.76-0.78 once the colouring's priority order was
+// sorted on the side stream too, which took 0.07 ms off the colouring).
+// Lattice-215's took 48.5 ms, as before: its sorts fill the GPU alone.
 //
 // Memory, to size a run (bytes per tet T; a lattice has N ~ T / 6):
 //   scratch   two key buffers of 12 keys * 8 B = 192 B/tet. The edges take

@@ -139,10 +139,9 @@ TS_HD TetNodes tet_nodes(const index_t* tets, std::size_t t) {
 #endif
 }
 
-// The four corners of tet t, with node i replaced by `at`.
+// The four corners of a tet with nodes `tet`, node i replaced by `at`.
 template <class Real, class Coords>
-TS_HD void tet_corners(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> at, Vec3<Real> (&v)[4]) {
-  const TetNodes tet = tet_nodes(m.tets, static_cast<std::size_t>(t));
+TS_HD void tet_corners(const Coords& xyz, const TetNodes& tet, index_t i, Vec3<Real> at, Vec3<Real> (&v)[4]) {
   for (int k = 0; k < 4; ++k) v[k] = tet.v[k] == i ? at : xyz.get(tet.v[k]);
 }
 
@@ -152,12 +151,19 @@ TS_HD bool keeps_validity(Real q_old, Real q_new) {
   return q_old > Real(0) ? q_new > Real(0) : q_new >= q_old;
 }
 
-// A tet's radius ratio with node i at `at` (the tet's own corner order).
+// A tet's radius ratio with node i at `at` (the tet's own corner order),
+// for a caller that has its nodes already.
+template <class Real, class Coords>
+TS_HD Real tet_quality_at(const Coords& xyz, const TetNodes& tet, index_t i, Vec3<Real> at) {
+  Vec3<Real> v[4];
+  tet_corners(xyz, tet, i, at, v);
+  return radius_ratio(v[0], v[1], v[2], v[3]);
+}
+
+// The same for tet t.
 template <class Real, class Coords>
 TS_HD Real tet_quality_with(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> at) {
-  Vec3<Real> v[4];
-  tet_corners(m, xyz, t, i, at, v);
-  return radius_ratio(v[0], v[1], v[2], v[3]);
+  return tet_quality_at(xyz, tet_nodes(m.tets, static_cast<std::size_t>(t)), i, at);
 }
 
 // Where the adaptive test gets a tet's quality with the node where it
@@ -193,11 +199,23 @@ struct CachedOldQuality {
 // the lane's first entry when the lane has none below 2). The lane takes
 // kChunk of its entries' qualities before comparing any, as row_sum fetches
 // positions; the comparisons keep the entries' order.
+//
+// Entries are taken in order, and the minimum moves to a later one only when
+// it is lower, or a NaN (which then stays, and rejects the move as it does
+// tet by tet): so the minimum of a row's entries is the minimum of its first
+// entries' and of the rest's, in that order (lowers_min).
+template <class Real>
+TS_HD bool lowers_min(Real q, Real q_min) {
+  return q < q_min || q != q;
+}
+
+// The first pass over entries [begin, end) of node i's incidence row (a
+// caller that has taken the row's first entries itself passes the rest).
 template <class Real, int kChunk = 1, class Coords, class OldQuality = FreshOldQuality>
-TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, int lane, int stride,
-                        const OldQuality& old_quality = {}, index_t* at = nullptr) {
+TS_HD Real star_old_min_in(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, index_t begin,
+                           index_t end, int lane, int stride, const OldQuality& old_quality = {},
+                           index_t* at = nullptr) {
   Real q_min = Real(2);
-  const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
   index_t k_min = begin + lane;
   for (RowWalk<kChunk> w(begin, end, lane, stride); w.more(); w.next()) {
     index_t t[kChunk];
@@ -205,13 +223,20 @@ TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Re
     Real q[kChunk];
     for (int u = 0; u < kChunk; ++u) q[u] = w.valid(u) ? old_quality(m, xyz, t[u], i, p) : Real(2);
     for (int u = 0; u < kChunk; ++u)
-      if (q[u] < q_min || q[u] != q[u]) {  // a NaN stays, and rejects the move as it did tet by tet
+      if (lowers_min(q[u], q_min)) {
         q_min = q[u];
         k_min = w.entry(u);
       }
   }
   if (at) *at = k_min;
   return q_min;
+}
+
+// The first pass over node i's whole row.
+template <class Real, int kChunk = 1, class Coords, class OldQuality = FreshOldQuality>
+TS_HD Real star_old_min(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, int lane, int stride,
+                        const OldQuality& old_quality = {}, index_t* at = nullptr) {
+  return star_old_min_in<Real, kChunk>(m, xyz, i, p, m.inc_off[i], m.inc_off[i + 1], lane, stride, old_quality, at);
 }
 
 // Does nothing with a tet's quality at the target (see star_improves).
@@ -225,20 +250,29 @@ struct SoleLane {
   TS_HD bool operator()(bool objects) const { return objects; }
 };
 
-// Whether tet t, incident to node i, objects to i moving from p to target
-// (the second pass's test, tet by tet); q_new receives t's quality with i at
-// the target. Written so that a NaN objects.
+// Whether tet t (its nodes `tet`), incident to node i, objects to i moving
+// from p to target (the second pass's test, tet by tet); q_new receives t's
+// quality with i at the target. Written so that a NaN objects.
 template <class Real, class Coords, class OldQuality = FreshOldQuality>
-TS_HD bool tet_objects(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> p, Vec3<Real> target,
-                       Real old_min, const OldQuality& old_quality, Real& q_new) {
-  q_new = tet_quality_with(m, xyz, t, i, target);
+TS_HD bool tet_objects_at(const MeshView& m, const Coords& xyz, index_t t, const TetNodes& tet, index_t i,
+                          Vec3<Real> p, Vec3<Real> target, Real old_min, const OldQuality& old_quality, Real& q_new) {
+  q_new = tet_quality_at(xyz, tet, i, target);
   return !(q_new > old_min) || (!(q_new > Real(0)) && !keeps_validity(old_quality(m, xyz, t, i, p), q_new));
 }
 
-// The second pass. Lanes take the star's tets in rounds of `stride`;
-// `any(objects)` tells every lane of the group whether any lane's tet in the
-// round objected (all lanes of the group call it, the same number of
-// times). `keep_new(k, q)` receives the new quality q of the tet at
+// The same, the tet's nodes read from the mesh.
+template <class Real, class Coords, class OldQuality = FreshOldQuality>
+TS_HD bool tet_objects(const MeshView& m, const Coords& xyz, index_t t, index_t i, Vec3<Real> p, Vec3<Real> target,
+                       Real old_min, const OldQuality& old_quality, Real& q_new) {
+  return tet_objects_at(m, xyz, t, tet_nodes(m.tets, static_cast<std::size_t>(t)), i, p, target, old_min,
+                        old_quality, q_new);
+}
+
+// The second pass's rounds over entries [begin, end) of node i's row: false
+// at the first round in which a tet objects. Lanes take the tets in rounds of
+// `stride`; `any(objects)` tells every lane of the group whether any lane's
+// tet in the round objected (all lanes of the group call it, the same number
+// of times). `keep_new(k, q)` receives the new quality q of the tet at
 // incidence entry k, round by round, for a caller that stores what it may
 // need again. `old_min` is the whole star's minimum (star_old_min).
 #ifdef __CUDACC__
@@ -246,10 +280,9 @@ TS_HD bool tet_objects(const MeshView& m, const Coords& xyz, index_t t, index_t 
 #endif
 template <class Real, class Coords, class OldQuality = FreshOldQuality, class KeepNew = IgnoreNewQuality,
           class Any = SoleLane>
-TS_HD bool star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
-                         Real old_min, int lane, int stride, const OldQuality& old_quality = {},
-                         KeepNew&& keep_new = {}, Any&& any = {}) {
-  const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
+TS_HD bool no_tet_objects_in(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
+                             Real old_min, index_t begin, index_t end, int lane, int stride,
+                             const OldQuality& old_quality = {}, KeepNew&& keep_new = {}, Any&& any = {}) {
   for (index_t base = begin; base < end; base += stride) {
     const index_t k = base + lane;
     bool objects = false;
@@ -260,9 +293,30 @@ TS_HD bool star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<R
     }
     if (any(objects)) return false;
   }
-  // A node without tets has nothing to improve; an old minimum of 2 or more
-  // (no radius ratio reaches it) is the rule's starting value, never beaten.
+  return true;
+}
+
+// The rule's verdict once no tet of a row [begin, end) objects: a node
+// without tets has nothing to improve, and an old minimum of 2 or more (no
+// radius ratio reaches it) is the rule's starting value, never beaten.
+template <class Real>
+TS_HD bool star_can_improve(index_t begin, index_t end, Real old_min) {
   return end > begin && old_min < Real(2);
+}
+
+// The second pass over node i's whole row.
+#ifdef __CUDACC__
+#pragma nv_exec_check_disable
+#endif
+template <class Real, class Coords, class OldQuality = FreshOldQuality, class KeepNew = IgnoreNewQuality,
+          class Any = SoleLane>
+TS_HD bool star_improves(const MeshView& m, const Coords& xyz, index_t i, Vec3<Real> p, Vec3<Real> target,
+                         Real old_min, int lane, int stride, const OldQuality& old_quality = {},
+                         KeepNew&& keep_new = {}, Any&& any = {}) {
+  const index_t begin = m.inc_off[i], end = m.inc_off[i + 1];
+  return no_tet_objects_in(m, xyz, i, p, target, old_min, begin, end, lane, stride, old_quality,
+                           static_cast<KeepNew&&>(keep_new), static_cast<Any&&>(any)) &&
+         star_can_improve(begin, end, old_min);
 }
 
 // The decision, once the centroid and the adaptive test are known.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs on the GPU machine from the repository root, with gpu-bundle/ carried
 # there: GPU tests, compute-sanitizer and the benchmarks, everything written
-# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile] [profile-lattice] [profile-source]
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile] [profile-lattice] [profile-source] [profile-coloured]
 # (default: tests sanitize bench)
 set -uo pipefail
 b=$(cd "$(dirname "$0")" && pwd)
@@ -102,6 +102,24 @@ for step in $steps; do
       "$ncu" --import "$out/ncu_source_MultiBlock.ncu-rep" --page source --csv --print-source sass \
         > "$out/ncu_source_MultiBlock.csv"
       echo "source export $? ($(wc -l < "$out/ncu_source_MultiBlock.csv") lines)"
+      ;;
+    profile-coloured)
+      # Nsight Compute's source counters for the 109k model's whole coloured
+      # loop (one cooperative launch), double and float:
+      # where a node's chain of loads and arithmetic waits
+      # (ncu_source_Coloured_<precision>.csv, one row per SASS instruction).
+      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      for prec in double float; do
+        timeout 280 "$ncu" --clock-control none --kernel-name regex:coloured_loop_kernel --launch-count 1 \
+          --section SourceCounters --section WarpStateStats --section InstructionStats --section SpeedOfLight --section Occupancy \
+          -o "$out/ncu_source_Coloured_$prec" "$b/bench_smooth" --no-cpu --precision=$prec --models=109k \
+          --benchmark_filter='^FormB/AoS/Coloured/109k' --benchmark_min_time=0.01 > "$out/ncu_coloured_$prec.log" 2>&1
+        echo "ncu $prec exit $?"
+        "$ncu" --import "$out/ncu_source_Coloured_$prec.ncu-rep" --page source --csv --print-source sass \
+          > "$out/ncu_source_Coloured_$prec.csv"
+        "$ncu" --import "$out/ncu_source_Coloured_$prec.ncu-rep" --page details > "$out/ncu_details_Coloured_$prec.txt"
+        echo "source export $? ($(wc -l < "$out/ncu_source_Coloured_$prec.csv") lines)"
+      done
       ;;
     study)
       "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \

@@ -130,6 +130,19 @@ TEST(RadiusRatio, FloatKeepsSmallTets) {
   }
 }
 
+// Double forms N unscaled (tet_quality.hpp): its range still spans any
+// unit a mesh comes in, the regular tet and a skewed one alike.
+TEST(RadiusRatio, DoubleKeepsItsRangeUnscaled) {
+  const double regular = radius_ratio(kA, kB, kC, kD);
+  const double skewed = radius_ratio(V{0, 0, 0}, V{1, 0, 0}, V{0.3, 0.2, 0}, V{0.1, 0.4, 0.05});
+  for (double h : {1e-35, 1e-20, 1e-8, 1e8, 1e20, 1e35}) {
+    const auto at = [h](V v) { return V{h * v.x, h * v.y, h * v.z}; };
+    EXPECT_NEAR(radius_ratio(at(kA), at(kB), at(kC), at(kD)), regular, 1e-12) << "scale " << h;
+    EXPECT_NEAR(radius_ratio(at(V{0, 0, 0}), at(V{1, 0, 0}), at(V{0.3, 0.2, 0}), at(V{0.1, 0.4, 0.05})), skewed, 1e-12)
+        << "scale " << h;
+  }
+}
+
 TEST(RadiusRatio, InvertedIsNegative) {
   EXPECT_NEAR(radius_ratio(kB, kA, kC, kD), -1.0, 1e-12);
   EXPECT_NEAR(mean_ratio(kB, kA, kC, kD), -1.0, 1e-12);

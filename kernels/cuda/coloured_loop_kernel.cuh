@@ -34,15 +34,21 @@
 //    neighbours; at its turn a node that does not move clears its flag. Its
 //    neighbours have other colours, so a flag is never written by its owner
 //    and by a mover in the same step, and movers that flag one neighbour
-//    write the same value. A settled node costs its flag, its position and
-//    the bounds of its neighbour row (and of its star where the star is
-//    prefetched), read beside the flag so that an active node does not wait
-//    on it; neither its row, its star nor their positions are read.
-// And one that changes no value read: with fewer lanes than a warp, an
-// adaptive node's star is requested before the centroid (star_prefetch.cuh).
+//    write the same value. A settled node costs its flag and the bounds of
+//    its rows (and, with fewer lanes than a warp, its position), read beside
+//    the flag so that an active node does not wait on it; neither its rows,
+//    its star nor their positions are read. With a warp per node, settled
+//    nodes are dropped where a step's openings are staged.
+// And some that change no value read, for a node's chain of loads: with a
+// warp per node, a step's openings are read for the whole block at once
+// (staged_openings.cuh) and each lane's first tet before the centroid
+// (star_head.cuh); with fewer lanes, an adaptive node's star is requested
+// before the centroid (star_prefetch.cuh).
 #include <cooperative_groups.h>
 
 #include "kernels/cuda/node_steps.cuh"
+#include "kernels/cuda/star_head.cuh"
+#include "kernels/cuda/staged_openings.cuh"
 #include "kernels/cuda/star_prefetch.cuh"
 #include "kernels/cuda/sweep_state.cuh"
 #include "kernels/cuda/tet_quality_pass.cuh"
@@ -126,6 +132,18 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   constexpr int kKept = 32 / G;
   // Ordinary Laplacian reads no star.
   constexpr int kPrefetchRounds = kAdaptive && G < kLatencyLanes ? kKept : 0;
+  // A warp per node: a node's latency sets the pace, so a step's openings
+  // are read at once (staged_openings.cuh) and the lane's first tet of the
+  // star before the centroid (star_head.cuh). On an H100, smoothing the 109k
+  // model took 1.94 ms against 2.18 in double with both, 2.08 with the head
+  // alone; 1.13 against 1.20 in float. With fewer lanes, where a class is
+  // many times what the device holds at once, staging lost: lattice-215 took
+  // 1038 ms against 845 in double and 547 against 347 in float with 8 lanes,
+  // and 109k 2.23 against 1.93 in double with 16.
+  constexpr bool kStaged = G == kLatencyLanes;
+  constexpr bool kHead = kAdaptive && G == kLatencyLanes;
+  __shared__ StagedOpenings<kStaged ? kColouredBlock<Real> : 1> staged;
+  if (kStaged) staged.clear();
   // Where the time goes, colour by colour: the grid's first thread stamps
   // each barrier. Its last stamp waits in shared memory, not in a register
   // that the whole loop would carry (double is short of them).
@@ -133,15 +151,72 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
   const auto stamp_colour = [&](int col) {
     if (tid != 0 || c.colour_ns == nullptr) return;
     const unsigned long long now = global_timer_ns();
-    if (col >= 0) c.colour_ns[col] += now - colour_start;
+    // An atomic add whose result goes unused: nothing waits on a load of the
+    // total, which would hold up block 0's next step.
+    if (col >= 0) atomicAdd(&c.colour_ns[col], now - colour_start);
     colour_start = now;
   };
   stamp_colour(-1);
-  unsigned parity = 0;  // of the colour step, counted over all sweeps
+  unsigned parity = 0;  // of the colour step (staged: of the chunk), counted over all sweeps
   for (int s = 0; s < max_iterations; ++s) {
     unsigned accepted = 0;
     unsigned evaluated = 0;
     double disp2 = 0;
+    // A node's work once its opening is known: the group's lanes all call it
+    // (a group past the class's end with o.in_class false).
+    const auto visit = [&](const NodeOpening& o) {
+      const index_t i = o.i;
+      const Vec3<Real> p = o.in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
+      // Settled: nothing in the neighbourhood moved since this node's turn
+      // in the previous sweep; see the top of the file.
+      const bool active = o.in_class && (o.flagged || !skip_settled);
+      StarHead<Real> head;
+      if constexpr (kHead)
+        head = read_star_head(m, static_cast<const Real*>(tet_q), o.star_begin, o.star_end, lane, active);
+      // With fewer lanes than a warp, a star takes rounds, each waiting on
+      // the memory the last one fetched; the prefetch starts them all now
+      // (star_prefetch.cuh). On an H100, smoothing lattice-215 (8 lanes)
+      // took 372 ms against 417 in float, 900 against 1015 in double; with
+      // a warp per node, one round, 109k in float took 1.40 against 1.33,
+      // and with the fetch issued before the centroid instead of after it
+      // the whole 109k run took 3.27-3.30 ms against 3.22-3.25 in double,
+      // 2.36-2.38 against 2.23-2.27 in float.
+      StarPrefetch<kPrefetchRounds> star;
+      if (kPrefetchRounds > 0) star.read_entries(m, o.star_begin, o.star_end, lane, G, active);
+      const Vec3<Real> target = row_centroid_group<Real, G>(m, xyz, o.row_begin, o.row_end, lane, active, mask);
+      if (kPrefetchRounds > 0) star.fetch(m, tet_q);
+      // The lane's new qualities, kept for the cache update: every round
+      // up to kKept (a star of up to 32 tets needs no recomputation).
+      KeptQualities<Real, kKept> kept;
+      int rounds = 0;
+      const auto keep = [&](index_t, Real q) { kept.put(rounds++, q); };
+      NodeMove<Real> mv;
+      if constexpr (kHead)
+        mv = judge_move_with_head<Real, G>(m, xyz, cached, i, p, target, head, lane, active, keep);
+      else
+        mv = judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active, cached, mask, keep);
+      const bool moves = active && mv.accept && mv.displacement2 > Real(0);
+      if (moves) {
+        // An accepted move computed every round. tet_quality_with never
+        // reads node i's stored position, so lane 0 may overwrite it
+        // meanwhile.
+        if (kAdaptive) {
+          int r = 0;
+          for (index_t e = o.star_begin + lane; e < o.star_end; e += G, ++r)
+            tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
+        }
+        for (index_t e = o.row_begin + lane; e < o.row_end; e += G) changed[m.nbr[e]] = 1;
+        if (lane == 0) {
+          xyz.set(i, mv.target);
+          ++accepted;
+          disp2 = fmax(disp2, static_cast<double>(mv.displacement2));
+        }
+      }
+      // The group's lanes have all read the flag: the votes and sums above
+      // exchanged values that depend on it.
+      if (o.in_class && lane == 0 && o.flagged != moves) changed[i] = moves;
+      evaluated += active && lane == 0;
+    };
     for (int col = 0; col < cls.count; ++col) {
       const long long begin = cls.off[col], end = cls.off[col + 1];
       // The class is cut into shares of a node per group (a warp's worth);
@@ -149,8 +224,12 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // gets as many and all of them walk the class front to back together
       // (neighbouring nodes, and their data, are taken at about the same
       // time). The block's warps take its shares in order from a counter in
-      // shared memory: a warp that drew quick nodes (settled, or rejected at
-      // once) takes more, and the class ends with the warps about even. (A
+      // shared memory (staged, its kept openings): a warp that drew quick
+      // nodes (settled, or rejected at once) takes more, and the class ends
+      // with the warps about even. (Each warp requesting into L1 the opening
+      // of the share a block's worth of warps ahead, instead of staging,
+      // lost: 109k 2.20 ms against 2.18 in double, lattice-215 906 against
+      // 870.) (A
       // counter for the whole grid did the same, but its one address in L2
       // queued the claims; contiguous slices per block lost the lattice its
       // cache.) The next step's counter is cleared now: its last user, the
@@ -160,69 +239,38 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // lattice-215 467 ms against 374 in float, 983 against 904 in double.
       // More stars are then in flight per SM; that they overflow L1 is our
       // reading, not profiled.)
-      if (threadIdx.x == 0) taken[parity ^ 1u] = 0;
-      for (;;) {
-        unsigned local = 0;
-        if ((threadIdx.x & 31) == 0) local = atomicAdd(&taken[parity], 1u);
-        const long long share = blockIdx.x + static_cast<long long>(gridDim.x) * __shfl_sync(0xffffffffu, local, 0);
-        const long long start = begin + share * (32 / G);
-        if (start >= end) break;  // the same for the whole warp
-        const long long k = start + group_in_warp;
-        const bool in_class = k < end;
-        const index_t i = in_class ? cls.nodes[k] : 0;
-        // The node's position, flag and neighbour row bounds, read up front
-        // and side by side: an active node's row does not wait on its flag
-        // (on an H100, smoothing 109k in double took 2.21 ms against 2.29
-        // with the bounds read after the flag, lattice-215 1002 against 1046).
-        // Every lane of the group reads the same flag.
-        const Vec3<Real> p = in_class ? xyz.get(i) : Vec3<Real>{0, 0, 0};
-        const bool flagged = in_class && changed[i] != 0;
-        const index_t row_begin = in_class ? m.nbr_off[i] : 0, row_end = in_class ? m.nbr_off[i + 1] : 0;
-        // Settled: nothing in the neighbourhood moved since this node's turn
-        // in the previous sweep; see the top of the file.
-        const bool active = in_class && (flagged || !skip_settled);
-        // With fewer lanes than a warp, a star takes rounds, each waiting on
-        // the memory the last one fetched; the prefetch starts them all now
-        // (star_prefetch.cuh). On an H100, smoothing lattice-215 (8 lanes)
-        // took 372 ms against 417 in float, 900 against 1015 in double; with
-        // a warp per node, one round, 109k in float took 1.40 against 1.33,
-        // and with the fetch issued before the centroid instead of after it
-        // the whole 109k run took 3.27-3.30 ms against 3.22-3.25 in double,
-        // 2.36-2.38 against 2.23-2.27 in float.
-        StarPrefetch<kPrefetchRounds> star;
-        if (kPrefetchRounds > 0)
-          star.read_entries(m, in_class ? m.inc_off[i] : 0, in_class ? m.inc_off[i + 1] : 0, lane, G, active);
-        const Vec3<Real> target = row_centroid_group<Real, G>(m, xyz, row_begin, row_end, lane, active, mask);
-        if (kPrefetchRounds > 0) star.fetch(m, tet_q);
-        // The lane's new qualities, kept for the cache update: every round
-        // up to kKept (a star of up to 32 tets needs no recomputation).
-        KeptQualities<Real, kKept> kept;
-        int rounds = 0;
-        const NodeMove<Real> mv = judge_move_group<Real, kAdaptive, G>(
-            m, xyz, i, p, target, lane, active, cached, mask, [&](index_t, Real q) { kept.put(rounds++, q); });
-        const bool moves = active && mv.accept && mv.displacement2 > Real(0);
-        if (moves) {
-          // An accepted move computed every round. tet_quality_with never
-          // reads node i's stored position, so lane 0 may overwrite it
-          // meanwhile.
-          if (kAdaptive) {
-            int r = 0;
-            for (index_t e = m.inc_off[i] + lane; e < m.inc_off[i + 1]; e += G, ++r)
-              tet_q[m.inc[e]] = r < kKept ? kept.get(r) : tet_quality_with(m, xyz, m.inc[e], i, mv.target);
+      if constexpr (kStaged) {
+        const long long first = begin + blockIdx.x;
+        const long long count = first < end ? (end - first + gridDim.x - 1) / gridDim.x : 0;
+        for (long long chunk = 0; chunk < count; chunk += kColouredBlock<Real>) {
+          const unsigned kept = staged.template stage<kAdaptive>(m, changed, cls.nodes, first, gridDim.x, chunk,
+                                                                 count, skip_settled, parity);
+          for (;;) {
+            const unsigned r = staged.claim(32 / G, parity);
+            if (r >= kept) break;  // the same for the whole warp
+            visit(staged.opening(r + group_in_warp, kept));
           }
-          for (index_t e = row_begin + lane; e < row_end; e += G) changed[m.nbr[e]] = 1;
-          if (lane == 0) {
-            xyz.set(i, mv.target);
-            ++accepted;
-            disp2 = fmax(disp2, static_cast<double>(mv.displacement2));
-          }
+          parity ^= 1u;
         }
-        // The group's lanes have all read the flag: the votes and sums above
-        // exchanged values that depend on it.
-        if (in_class && lane == 0 && flagged != moves) changed[i] = moves;
-        evaluated += active && lane == 0;
+      } else {
+        if (threadIdx.x == 0) taken[parity ^ 1u] = 0;
+        for (;;) {
+          unsigned local = 0;
+          if ((threadIdx.x & 31) == 0) local = atomicAdd(&taken[parity], 1u);
+          const long long share = blockIdx.x + static_cast<long long>(gridDim.x) * __shfl_sync(0xffffffffu, local, 0);
+          const long long start = begin + share * (32 / G);
+          if (start >= end) break;  // the same for the whole warp
+          const long long k = start + group_in_warp;
+          const bool in_class = k < end;
+          // The node's flag and row bounds, read up front and side by side:
+          // an active node's row does not wait on its flag (on an H100,
+          // smoothing 109k in double took 2.21 ms against 2.29 with the
+          // bounds read after the flag, lattice-215 1002 against 1046).
+          // Every lane of the group reads the same flag.
+          visit(read_opening<kAdaptive>(m, changed, in_class ? cls.nodes[k] : 0, in_class));
+        }
+        parity ^= 1u;
       }
-      parity ^= 1u;
       // (Instead of these barriers, each node once waited for its own
       // neighbours of earlier colours alone: every node published the colour
       // step it had finished with a release store, and read what others

@@ -52,6 +52,10 @@ struct SmoothOptions {
   // CUDA Coloured: threads per node, 8, 16 or 32; 0 picks by the size of
   // the colour classes (kernels/cuda/coloured_loop_launch.cuh).
   int coloured_lanes = 0;
+  // CUDA Coloured: at most this many blocks in the cooperative grid; 0 takes
+  // as many as the device holds at once (a study of fewer SMs, or a test
+  // that gives each block more nodes of a class than it stages at once).
+  int coloured_blocks = 0;
   // Called after each sweep when set (CPU: every sweep; CUDA: at each host
   // check, for SingleBlock and Coloured once the loop has ended).
   std::function<void(const SweepProgress&)> progress;

@@ -15,6 +15,8 @@ void check_smooth_options(const SmoothOptions& opt) {
   if (opt.check_every < 1) throw UsageError("check_every must be >= 1");
   if (opt.coloured_lanes != 0 && opt.coloured_lanes != 8 && opt.coloured_lanes != 16 && opt.coloured_lanes != 32)
     throw UsageError("coloured_lanes must be 0 (automatic), 8, 16 or 32");
+  if (opt.coloured_blocks < 0)
+    throw UsageError("coloured_blocks must be >= 0 (0 = as many as fit), got " + std::to_string(opt.coloured_blocks));
 }
 
 StopReason to_stop_reason(SweepVerdict v) {

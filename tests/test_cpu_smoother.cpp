@@ -177,6 +177,12 @@ TEST(CpuSmoother, RejectsBadOptions) {
   o = SmoothOptions{};
   o.tolerance = -1;
   EXPECT_THROW(smooth_cpu(m, o), UsageError);
+  o = SmoothOptions{};
+  o.coloured_lanes = 12;
+  EXPECT_THROW(smooth_cpu(m, o), UsageError);
+  o = SmoothOptions{};
+  o.coloured_blocks = -1;
+  EXPECT_THROW(smooth_cpu(m, o), UsageError);
 }
 
 TEST(CpuSmoother, PaperModel5kLosesPoorTets) {

@@ -19,14 +19,14 @@ namespace tetsmooth::cuda {
 inline constexpr std::size_t kMaxLatencyWaves = 16;
 
 // As many blocks as fit on the device at once (a grid barrier needs them all
-// resident), fewer when the largest class needs fewer.
+// resident), fewer when the largest class needs fewer or the options cap them.
 template <class Real, bool kAdaptive, int G, class Coords>
 void launch_coloured_loop_with(const SweepLoopArgs& a, const SmoothOptions& o, Coords xyz) {
   const auto kernel = coloured_loop_kernel<Real, kAdaptive, G, Coords>;
   constexpr int block = kColouredBlock<Real>;
   const std::size_t wanted = static_cast<std::size_t>(std::max<index_t>(a.largest_class, 1)) * G;
-  const auto blocks = static_cast<unsigned>(
-      std::min<std::size_t>((wanted + block - 1) / block, resident_blocks(kernel, block)));
+  std::size_t blocks = std::min<std::size_t>((wanted + block - 1) / block, resident_blocks(kernel, block));
+  if (o.coloured_blocks > 0) blocks = std::min<std::size_t>(blocks, static_cast<std::size_t>(o.coloured_blocks));
   MeshView view = a.view;
   ColourClassesView cls{a.class_off, a.class_nodes, a.num_colours};
   Real* tet_q = static_cast<Real*>(a.tet_quality);
@@ -37,8 +37,8 @@ void launch_coloured_loop_with(const SweepLoopArgs& a, const SmoothOptions& o, C
   int max_iterations = o.max_iterations;
   bool skip = o.skip_settled;
   void* params[] = {&view, &xyz, &cls, &tet_q, &changed, &n, &num_tets, &st, &counters, &max_iterations, &skip};
-  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(blocks), dim3(block),
-                                         params, 0, a.stream));
+  CUDA_CHECK(cudaLaunchCooperativeKernel(reinterpret_cast<const void*>(kernel), dim3(static_cast<unsigned>(blocks)),
+                                         dim3(block), params, 0, a.stream));
   CUDA_CHECK_LAUNCH();
 }
 

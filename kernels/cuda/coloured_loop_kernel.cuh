@@ -82,7 +82,10 @@ struct ColourClassesView {
 // 768 x 1 2.41; float 896 x 1 1.49, 1024 x 1 1.45. Later, in float, 896 x 1
 // against 1024 x 1: 109k 1.36 against 1.33, lattice-215 445 against 417;
 // with the star prefetch, on an H200, 768 x 1 against 1024 x 1: lattice-215
-// 427 against 343, 109k 1.37 against 1.34.
+// 427 against 343, 109k 1.37 against 1.34. With staged openings and the
+// star's head, 109k in double on an H100: 512 x 1 (104 registers, no
+// spill) 1.89, 576 x 1 1.85, 640 x 1 1.82, 768 x 1 1.96, 896 x 1 2.04,
+// 1024 x 1 (64 registers, 96 bytes spill) 2.28.
 template <class Real>
 inline constexpr int kColouredBlock = sizeof(Real) == 4 ? 1024 : 640;
 
@@ -279,6 +282,9 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // lattice-215 800 against 402 in float. A node's own chain of loads,
       // not the barrier, sets a small class's pace, and the release and the
       // neighbours' ready words lengthen it.)
+      // (A grid barrier costs about 1.1 us on an H100, 1.0 with a counter of
+      // our own released and polled with acquire semantics: not worth its
+      // own code.)
       if (col + 1 < cls.count) {
         grid.sync();  // the next colour reads these moves
         stamp_colour(col);

@@ -232,16 +232,15 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // with the warps about even. (Each warp requesting into L1 the opening
       // of the share a block's worth of warps ahead, instead of staging,
       // lost: 109k 2.20 ms against 2.18 in double, lattice-215 906 against
-      // 870.) (A
-      // counter for the whole grid did the same, but its one address in L2
-      // queued the claims; contiguous slices per block lost the lattice its
-      // cache.) The next step's counter is cleared now: its last user, the
-      // step before this one, is behind the barrier. (Shares of 32 nodes,
-      // whose flags a warp reads first so that its groups visit only the
-      // flagged ones and none idles on a settled node, lost on an H100:
-      // lattice-215 467 ms against 374 in float, 983 against 904 in double.
-      // More stars are then in flight per SM; that they overflow L1 is our
-      // reading, not profiled.)
+      // 870. A counter for the whole grid did the same as the block's, but
+      // its one address in L2 queued the claims; contiguous slices per block
+      // lost the lattice its cache.) The next step's counter is cleared now:
+      // its last user, the step before this one, is behind the barrier.
+      // (Shares of 32 nodes, whose flags a warp reads first so that its
+      // groups visit only the flagged ones and none idles on a settled node,
+      // lost on an H100: lattice-215 467 ms against 374 in float, 983
+      // against 904 in double. More stars are then in flight per SM; that
+      // they overflow L1 is our reading, not profiled.)
       if constexpr (kStaged) {
         const long long first = begin + blockIdx.x;
         const long long count = first < end ? (end - first + gridDim.x - 1) / gridDim.x : 0;
@@ -282,9 +281,19 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // lattice-215 800 against 402 in float. A node's own chain of loads,
       // not the barrier, sets a small class's pace, and the release and the
       // neighbours' ready words lengthen it.)
-      // (A grid barrier costs about 1.1 us on an H100, 1.0 with a counter of
-      // our own released and polled with acquire semantics: not worth its
-      // own code.)
+      // Where a step's time goes (109k model, double, H100; every block
+      // stamping the device's clock, averaged over the 11 sweeps): the block
+      // that finishes last has staged its openings in 1.4-1.9 us and, on
+      // the largest class, worked 14 us more (11 on average over blocks).
+      // From its finish to the next step's start takes 2.5-3.3 us on large
+      // classes, and 5.6-5.8 us on the two smallest, where blocks do
+      // little but stage. A grid barrier alone takes about 1 us (1.1 us
+      // with every block arriving at once, 1.0 after one late block, in
+      // microbenchmarks), and two of our own lost: one counter released and
+      // polled with acquire semantics, 1.0 us alone; arrivals and release on
+      // separate words, 1.87 ms of smoothing against 1.82. What holds the
+      // rest of the gap is not known yet; reading the classes' bounds from
+      // shared memory instead of L2 changed nothing (1.82 against 1.82).
       if (col + 1 < cls.count) {
         grid.sync();  // the next colour reads these moves
         stamp_colour(col);

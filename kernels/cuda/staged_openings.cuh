@@ -51,12 +51,12 @@ __device__ __forceinline__ NodeOpening read_opening(const MeshView& m, const std
 }
 
 // The shared-memory side: kCap openings (a chunk of at most one node per
-// thread of the block), and per parity a count of those staged and of those
-// taken. Chunks alternate parities, so that a chunk can clear the other
+// thread of the block: blockDim.x <= kCap), and per parity a count of those
+// staged and of those taken. Chunks alternate parities, so that a chunk can clear the other
 // parity's counters while the block's warps may still read its own.
 template <int kCap>
 struct StagedOpenings {
-  int4 head[kCap];  // i | flagged << 31, row_begin, row_end, star_begin
+  int4 head[kCap];  // i | flagged << 31 (node indices stay below 2^31), row_begin, row_end, star_begin
   index_t star_end[kCap];
   unsigned staged[2], taken[2];
 

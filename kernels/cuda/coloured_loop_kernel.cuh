@@ -299,7 +299,9 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // thread 0 reaching the barrier, two __syncthreads apart: 1.4-2.1 us
       // on large classes, 4.7 on the small ones in double (1.5-2.0 and 2.6
       // in float). Not explained yet. Reading the classes' bounds from
-      // shared memory instead of L2 changed nothing (1.82 against 1.82).
+      // shared memory instead of L2 changed nothing (1.82 against 1.82), nor
+      // did a __syncwarp after each node with the block's node count divided
+      // in 32 bits instead of 64 (1.87 against 1.82).
       if (col + 1 < cls.count) {
         grid.sync();  // the next colour reads these moves
         stamp_colour(col);

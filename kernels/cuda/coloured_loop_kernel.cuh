@@ -281,27 +281,9 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       // lattice-215 800 against 402 in float. A node's own chain of loads,
       // not the barrier, sets a small class's pace, and the release and the
       // neighbours' ready words lengthen it.)
-      // Where a step's time goes (109k model, double, H100; every block
-      // stamping the device's clock, averaged over the 11 sweeps): the block
-      // that finishes last has staged its openings in 1.4-1.9 us and, on
-      // the largest class, worked 14 us more (11 on average over blocks).
-      // From its finish to the next step's start takes 2.5-3.3 us on large
-      // classes, and 5.6-5.8 us on the two smallest, where blocks do
-      // little but stage. A grid barrier alone takes about 1 us (1.1 us
-      // with every block arriving at once, 1.0 after one late block, in
-      // microbenchmarks), and two of our own lost: one counter released and
-      // polled with acquire semantics, 1.0 us alone; arrivals and release on
-      // separate words, 1.87 ms of smoothing against 1.82. Stamped inside a
-      // barrier of the same algorithm as the cooperative groups' one, its
-      // own steps take about 1.6 us (fence 0.4, arrival 0.35, release seen
-      // 0.3 later and spread over 0.3, second fence 0.33, restart 0.2); the
-      // rest passes between a block's last warp leaving its nodes and its
-      // thread 0 reaching the barrier, two __syncthreads apart: 1.4-2.1 us
-      // on large classes, 4.7 on the small ones in double (1.5-2.0 and 2.6
-      // in float). Not explained yet. Reading the classes' bounds from
-      // shared memory instead of L2 changed nothing (1.82 against 1.82), nor
-      // did a __syncwarp after each node with the block's node count divided
-      // in 32 bits instead of 64 (1.87 against 1.82).
+      // A grid barrier costs about 1 us, yet on small classes 5.6 us pass
+      // between the last block finishing and the next step starting:
+      // coloured_loop_experiments.md has the stamps, and what was tried.
       if (col + 1 < cls.count) {
         grid.sync();  // the next colour reads these moves
         stamp_colour(col);

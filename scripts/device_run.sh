@@ -13,6 +13,24 @@ steps=${*:-tests sanitize bench}
 nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm,clocks.max.sm --format=csv | tee "$out/device.txt"
 nproc >> "$out/device.txt"
 status=0
+# Nsight Compute, where the machine has it (looked up by the profile steps).
+find_ncu() { command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1; }
+# Source counters (executed instructions and stall samples for each SASS
+# instruction) of one launch of the kernels matching $2, after skipping $3,
+# under bench_smooth with the remaining arguments: ncu_source_$1.csv and
+# ncu_details_$1.txt, the tool's log in ncu_source_$1.log.
+source_profile() {
+  local name=$1 kernel=$2 skip=$3
+  shift 3
+  timeout 420 "$ncu" --clock-control none --kernel-name "regex:$kernel" --launch-skip "$skip" --launch-count 1 \
+    --section SourceCounters --section WarpStateStats --section InstructionStats --section SpeedOfLight \
+    --section Occupancy -o "$out/ncu_source_$name" "$b/bench_smooth" --no-cpu --benchmark_min_time=0.01 "$@" \
+    > "$out/ncu_source_$name.log" 2>&1
+  echo "ncu $name exit $?"
+  "$ncu" --import "$out/ncu_source_$name.ncu-rep" --page source --csv --print-source sass > "$out/ncu_source_$name.csv"
+  echo "source export $? ($(wc -l < "$out/ncu_source_$name.csv") lines)"
+  "$ncu" --import "$out/ncu_source_$name.ncu-rep" --page details > "$out/ncu_details_$name.txt"
+}
 for step in $steps; do
   case $step in
     tests)
@@ -64,7 +82,7 @@ for step in $steps; do
       # Each kernel of one 109k Coloured double pipeline, timed alone by
       # Nsight Compute (clocks left as they are): where topology and
       # colouring spend their time. One row per launch in ncu_109k.csv.
-      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      ncu=$(find_ncu)
       timeout 300 "$ncu" --clock-control none --metrics gpu__time_duration.sum --csv --launch-count 400 \
         "$b/bench_smooth" --no-cpu --models=109k --benchmark_filter='^FormB/AoS/Coloured/109k' \
         --benchmark_min_time=0.01 > "$out/ncu_109k.csv" 2> "$out/ncu_109k.err"
@@ -76,7 +94,7 @@ for step in $steps; do
       # tet quality pass and its node pass (DRAM traffic, cache hit rates,
       # instructions, warp stalls). The lattice is generated once and cached
       # on disk for the second run.
-      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      ncu=$(find_ncu)
       for pick in "Coloured coloured_loop_kernel 0 1" "MultiBlock tet_quality_kernel|sweep_kernel 100 2"; do
         set -- $pick
         timeout 420 "$ncu" --clock-control none --kernel-name "regex:$2" --launch-skip "$3" --launch-count "$4" \
@@ -93,32 +111,19 @@ for step in $steps; do
       # node pass of lattice-215: executed instructions and stall samples for
       # each SASS instruction (ncu_source_MultiBlock.csv), to see what a
       # round of the star test costs and where it waits.
-      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
-      timeout 420 "$ncu" --clock-control none --kernel-name regex:sweep_kernel --launch-skip 50 --launch-count 1 \
-        --section SourceCounters --section WarpStateStats --section InstructionStats --section SpeedOfLight \
-        -o "$out/ncu_source_MultiBlock" "$b/bench_smooth" --no-cpu --precision=float --scaling=lattice-215 \
-        --benchmark_filter='^FormB/AoS/MultiBlock/lattice' --benchmark_min_time=0.01 > "$out/ncu_source.log" 2>&1
-      echo "ncu exit $?"
-      "$ncu" --import "$out/ncu_source_MultiBlock.ncu-rep" --page source --csv --print-source sass \
-        > "$out/ncu_source_MultiBlock.csv"
-      echo "source export $? ($(wc -l < "$out/ncu_source_MultiBlock.csv") lines)"
+      ncu=$(find_ncu)
+      source_profile MultiBlock sweep_kernel 50 --precision=float --scaling=lattice-215 \
+        --benchmark_filter='^FormB/AoS/MultiBlock/lattice'
       ;;
     profile-coloured)
       # Nsight Compute's source counters for the 109k model's whole coloured
       # loop (one cooperative launch), double and float:
       # where a node's chain of loads and arithmetic waits
       # (ncu_source_Coloured_<precision>.csv, one row per SASS instruction).
-      ncu=$(command -v ncu || ls /opt/nvidia/nsight-compute/*/ncu 2>/dev/null | head -1)
+      ncu=$(find_ncu)
       for prec in double float; do
-        timeout 280 "$ncu" --clock-control none --kernel-name regex:coloured_loop_kernel --launch-count 1 \
-          --section SourceCounters --section WarpStateStats --section InstructionStats --section SpeedOfLight --section Occupancy \
-          -o "$out/ncu_source_Coloured_$prec" "$b/bench_smooth" --no-cpu --precision=$prec --models=109k \
-          --benchmark_filter='^FormB/AoS/Coloured/109k' --benchmark_min_time=0.01 > "$out/ncu_coloured_$prec.log" 2>&1
-        echo "ncu $prec exit $?"
-        "$ncu" --import "$out/ncu_source_Coloured_$prec.ncu-rep" --page source --csv --print-source sass \
-          > "$out/ncu_source_Coloured_$prec.csv"
-        "$ncu" --import "$out/ncu_source_Coloured_$prec.ncu-rep" --page details > "$out/ncu_details_Coloured_$prec.txt"
-        echo "source export $? ($(wc -l < "$out/ncu_source_Coloured_$prec.csv") lines)"
+        source_profile "Coloured_$prec" coloured_loop_kernel 0 --precision=$prec --models=109k \
+          --benchmark_filter='^FormB/AoS/Coloured/109k'
       done
       ;;
     study)

@@ -257,9 +257,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
       } else {
         if (threadIdx.x == 0) taken[parity ^ 1u] = 0;
         for (;;) {
-          unsigned local = 0;
-          if ((threadIdx.x & 31) == 0) local = atomicAdd(&taken[parity], 1u);
-          const long long share = blockIdx.x + static_cast<long long>(gridDim.x) * __shfl_sync(0xffffffffu, local, 0);
+          const long long share = blockIdx.x + static_cast<long long>(gridDim.x) * warp_claim(&taken[parity], 1u);
           const long long start = begin + share * (32 / G);
           if (start >= end) break;  // the same for the whole warp
           const long long k = start + group_in_warp;

@@ -83,6 +83,15 @@ __device__ __forceinline__ void warp_atomic_add(Target* target, T v) {
   if ((threadIdx.x & 31) == 0 && v != T(0)) atomicAdd(target, static_cast<Target>(v));
 }
 
+// Takes n items for the warp from a counter (shared or global): the old
+// count, the warp's first item, handed to every lane. One atomic a warp
+// instead of one a lane. Every lane of the warp must call it.
+__device__ __forceinline__ unsigned warp_claim(unsigned* counter, unsigned n) {
+  unsigned first = 0;
+  if ((threadIdx.x & 31) == 0) first = atomicAdd(counter, n);
+  return __shfl_sync(0xffffffffu, first, 0);
+}
+
 // Lane (this + offset)'s v, as __shfl_down_sync over the whole warp, for the
 // types the hardware shuffles; a struct reduced below brings its own
 // overload beside it (found by argument-dependent lookup).

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 
+#include "kernels/cuda/lane_groups.cuh"
 #include "mesh/csr.hpp"
 #include "mesh/tet_mesh.hpp"
 
@@ -93,9 +94,7 @@ struct StagedOpenings {
   // The calling warp's next `per_warp` openings: the first one's place (the
   // same for every lane; none left once it reaches the count staged).
   __device__ __forceinline__ unsigned claim(unsigned per_warp, unsigned parity) {
-    unsigned r = 0;
-    if ((threadIdx.x & 31) == 0) r = atomicAdd(&taken[parity], per_warp);
-    return __shfl_sync(0xffffffffu, r, 0);
+    return warp_claim(&taken[parity], per_warp);
   }
 
   // Opening r (in_class false where r is past the `count` staged).

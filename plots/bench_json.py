@@ -40,6 +40,7 @@ import json
 import math
 import os
 import re
+import sys
 from dataclasses import dataclass, field
 
 MODELS = ("5k", "10k", "59k", "77k", "109k")
@@ -422,6 +423,31 @@ def load_result(path, need_runs=False):
                                   f"the first, {name}: {message})")
         raise BenchInputError(f"{path}: no smoothing benchmark with a result: {NO_BENCHMARK_HINT}")
     return result
+
+
+def add_render_arguments(parser, outdir_help, metric_use, quality_model=False):
+    """The command line shared by the scripts that render a result: the JSON,
+    the output folder, --quality-model where Figure 13 is drawn, and
+    --metric ("which time to <metric_use>")."""
+    parser.add_argument("result", help="bench_smooth --benchmark_out JSON")
+    parser.add_argument("outdir", help=outdir_help)
+    if quality_model:
+        parser.add_argument("--quality-model", default="109k", choices=MODELS, type=canonical_model,
+                            help="model whose histograms Figure 13 shows (default 109k)")
+    parser.add_argument("--metric", default="real_time", choices=("real_time", "cpu_time"),
+                        help=f"which time to {metric_use} (default real_time)")
+    return parser
+
+
+def load_for_rendering(path, program):
+    """load_result(path, need_runs=True) for a rendering script, or None once
+    the reason is printed on stderr as "program: reason" (the script then
+    exits with status 2, having written nothing)."""
+    try:
+        return load_result(path, need_runs=True)
+    except BenchInputError as error:
+        print(f"{program}: {error}", file=sys.stderr)
+        return None
 
 
 def ratio(numerator, denominator):

@@ -413,21 +413,14 @@ def write_figures(result, outdir, metric="real_time", quality_model="109k"):
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description="Figures 9-13 of the paper from a bench_smooth result.")
-    parser.add_argument("result", help="bench_smooth --benchmark_out JSON")
-    parser.add_argument("outdir", help="folder for the PNG files")
-    parser.add_argument("--quality-model", default="109k", choices=bj.MODELS, type=bj.canonical_model,
-                        help="model whose histograms Figure 13 shows (default 109k)")
-    parser.add_argument("--metric", default="real_time", choices=("real_time", "cpu_time"),
-                        help="which time to plot (default real_time)")
+    bj.add_render_arguments(parser, "folder for the PNG files", "plot", quality_model=True)
     return parser.parse_args(argv)
 
 
 def main(argv=None):
     args = parse_args(argv)
-    try:
-        result = bj.load_result(args.result, need_runs=True)
-    except bj.BenchInputError as error:
-        print(f"make_figures: {error}", file=sys.stderr)
+    result = bj.load_for_rendering(args.result, "make_figures")
+    if result is None:
         return 2
     for path in write_figures(result, args.outdir, args.metric, args.quality_model):
         print(path)

@@ -428,19 +428,14 @@ def write_tables(result, outdir, metric="real_time"):
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description="Tables of a bench_smooth result beside the paper's Tables 3-6.")
-    parser.add_argument("result", help="bench_smooth --benchmark_out JSON")
-    parser.add_argument("outdir", help="folder for tables.md and the CSV files")
-    parser.add_argument("--metric", default="real_time", choices=("real_time", "cpu_time"),
-                        help="which time to tabulate (default real_time)")
+    bj.add_render_arguments(parser, "folder for tables.md and the CSV files", "tabulate")
     return parser.parse_args(argv)
 
 
 def main(argv=None):
     args = parse_args(argv)
-    try:
-        result = bj.load_result(args.result, need_runs=True)
-    except bj.BenchInputError as error:
-        print(f"make_tables: {error}", file=sys.stderr)
+    result = bj.load_for_rendering(args.result, "make_tables")
+    if result is None:
         return 2
     for path in write_tables(result, args.outdir, args.metric):
         print(path)

@@ -28,21 +28,14 @@ import make_tables
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(description="Tables and figures of a bench_smooth result.")
-    parser.add_argument("result", help="bench_smooth --benchmark_out JSON")
-    parser.add_argument("outdir", help="folder for the tables and figures")
-    parser.add_argument("--quality-model", default="109k", choices=bj.MODELS, type=bj.canonical_model,
-                        help="model whose histograms Figure 13 shows (default 109k)")
-    parser.add_argument("--metric", default="real_time", choices=("real_time", "cpu_time"),
-                        help="which time to report (default real_time)")
+    bj.add_render_arguments(parser, "folder for the tables and figures", "report", quality_model=True)
     return parser.parse_args(argv)
 
 
 def main(argv=None):
     args = parse_args(argv)
-    try:
-        result = bj.load_result(args.result, need_runs=True)
-    except bj.BenchInputError as error:
-        print(f"report: {error}", file=sys.stderr)
+    result = bj.load_for_rendering(args.result, "report")
+    if result is None:
         return 2
     print(f"report: {args.result}: precision: {result.precision_text()}")
     written = make_tables.write_tables(result, args.outdir, args.metric)

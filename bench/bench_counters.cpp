@@ -7,7 +7,8 @@
 namespace tetsmooth::bench {
 
 double bytes_per_sweep(const SweepFootprint& f) {
-  const double coords = 2.0 * 3.0 * static_cast<double>(f.nodes) * static_cast<double>(f.real_bytes);
+  const double coords =
+      (1.0 + f.written_share) * 3.0 * static_cast<double>(f.nodes) * static_cast<double>(f.real_bytes);
   const double neighbours = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.neighbour_entries);
   const double flags = static_cast<double>(f.nodes);
   const double star_bytes = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
@@ -41,6 +42,8 @@ std::map<std::string, double> run_counter_values(const SmoothResult& r, const Sw
     const double full = static_cast<double>(r.movable_nodes) * r.sweeps;
     SweepFootprint g = f;
     g.evaluated_share = full > 0 ? std::min(1.0, static_cast<double>(r.evaluations) / full) : 1.0;
+    const double written = static_cast<double>(f.nodes) * r.sweeps;
+    if (f.in_place) g.written_share = written > 0 ? std::min(1.0, static_cast<double>(accepted) / written) : 0.0;
     c["ms_per_sweep"] = r.smoothing_ms / r.sweeps;
     c["node_updates_per_s"] = static_cast<double>(r.evaluations) / smooth_s;
     c["bytes_per_s"] = bytes_per_sweep(g) * r.sweeps / smooth_s;

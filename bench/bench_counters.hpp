@@ -16,15 +16,20 @@ struct SweepFootprint {
   std::size_t nodes = 0, tets = 0, neighbour_entries = 0, incidence_entries = 0;
   std::size_t real_bytes = 8;  // sizeof(Real) of the coordinates
   double evaluated_share = 1;  // nodes evaluated / (movable nodes x sweeps)
+  bool in_place = false;       // Form B: a sweep writes only the nodes it moves
+  double written_share = 1;    // nodes written / nodes (in place: moves / (nodes x sweeps))
   bool stars = true;           // false for ordinary Laplacian, which reads no star
 };
 
 // The fewest bytes one sweep must move through device memory: every
-// coordinate read once and written once, a flag byte per node, and for the
-// share of nodes evaluated their neighbour rows and stars (neighbour and
-// incidence CSR with offsets, the tets) read once: a sweep that skips
-// settled nodes (CUDA Coloured) reads neither the row nor the star of a
-// skipped node, and ordinary Laplacian smoothing reads no star at all.
+// coordinate read once; written once where the sweep writes every node (Form
+// A fills the other buffer), and only for the nodes it moves where it works
+// in place (Form B: written_share); a flag byte per node (which nodes may
+// move); and for the share of nodes evaluated their neighbour rows and stars
+// (neighbour and incidence CSR with offsets, the tets) read once: a sweep
+// that skips settled nodes (CUDA Coloured) reads neither the row nor the
+// star of a skipped node, and ordinary Laplacian smoothing reads no star at
+// all.
 // Re-reads of neighbour coordinates are not counted: an ideal cache would
 // serve them. Nor are a variant's own helpers (the tet quality cache of
 // MultiBlock and Coloured, the colour classes): the floor is the smoothing's.
@@ -33,7 +38,8 @@ double bytes_per_sweep(const SweepFootprint& f);
 // A run's counters by name: sweeps, accepted, evaluations, phase times,
 // colour_nodes_k and colour_ms_k per colour class, and once a sweep has run
 // ms per sweep, node updates (evaluations) per second and bytes/s (the
-// footprint of bytes_per_sweep, its evaluated share taken from the run).
+// footprint of bytes_per_sweep, its evaluated share and, in place, its
+// written share taken from the run).
 std::map<std::string, double> run_counter_values(const SmoothResult& r, const SweepFootprint& f);
 
 // Puts run_counter_values into the benchmark's counters.

@@ -58,6 +58,7 @@ void cpu_family(benchmark::State& state, std::string label, SmoothOptions o) {
   }
   SweepFootprint f = bm.footprint;
   f.stars = o.method == Method::Adaptive;
+  f.in_place = o.form == Form::B;
   set_run_counters(state, r, f);
   set_quality_counters(state, r.before, r.after);
 }
@@ -106,6 +107,7 @@ void gpu_family(benchmark::State& state, std::string label, SmoothOptions o, boo
   f.real_bytes = o.precision == Precision::Float ? 4 : 8;
   f.neighbour_entries = p.neighbour_entries();
   f.stars = o.method == Method::Adaptive;
+  f.in_place = o.form == Form::B;
   set_run_counters(state, r, f);
   state.counters["launches"] = p.last_times().launches;
   state.counters["host_checks"] = p.last_times().host_checks;

@@ -310,7 +310,8 @@ def scaling_table(result):
              and result.runs[n].counters.get("ms_per_sweep") is not None]
     rows = [scaling_row(result, n, copy_bw) for n in sorted(names, key=scaling_order)]
     copy_text = f"{copy_bw / 1e9:.1f} GB/s" if copy_bw else "not measured in this run"
-    notes = ["Bytes per sweep = bytes_per_s x ms_per_sweep (as counted by the benchmark); "
+    notes = ["Bytes per sweep = bytes_per_s x ms_per_sweep (as counted by the benchmark of the run: "
+             "bytes_per_sweep in bench/bench_counters.hpp); "
              f"floor = bytes per sweep / measured device copy bandwidth ({copy_text}); "
              "time / floor >= 1, and 1 would be copy speed.",
              "Adaptive runs first, then ordinary Laplacian ones (Ordinary/..., whose count has no star: "

@@ -31,6 +31,10 @@ TEST(BenchCounters, BytesPerSweepCountsEachArrayOnce) {
   // Ordinary Laplacian smoothing reads rows but no star.
   f.stars = false;
   EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 240 + 10 + 0.5 * 164);
+  // In place, only the nodes that move are written: 3*10*4 read, a quarter
+  // of that written.
+  f.written_share = 0.25;
+  EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 120 + 30 + 10 + 0.5 * 164);
 }
 
 TEST(BenchCounters, RunValuesOfAColouredRun) {
@@ -57,6 +61,23 @@ TEST(BenchCounters, RunValuesOfAColouredRun) {
   EXPECT_DOUBLE_EQ(c.at("node_updates_per_s"), 16 / 0.002);
   // The evaluated share comes from the run: 16 of 32.
   EXPECT_DOUBLE_EQ(c.at("bytes_per_s"), (480 + 10 + 0.5 * (164 + 172)) * 4 / 0.002);
+}
+
+// An in-place (Form B) run writes the nodes it moves: 10 moves over 4
+// sweeps of 10 nodes, a quarter of the writes a Jacobi sweep makes. A
+// Jacobi (Form A) run of the same moves writes every node.
+TEST(BenchCounters, InPlaceRunsCountOnlyTheirMovesWritten) {
+  SmoothResult r;
+  r.sweeps = 4;
+  r.accepted_per_sweep = {5, 3, 2, 0};
+  r.smoothing_ms = 2;
+  r.movable_nodes = 8;
+  r.evaluations = 32;
+  SweepFootprint f = tiny();
+  f.in_place = true;
+  EXPECT_DOUBLE_EQ(run_counter_values(r, f).at("bytes_per_s"), (240 + 60 + 10 + 164 + 172) * 4 / 0.002);
+  f.in_place = false;
+  EXPECT_DOUBLE_EQ(run_counter_values(r, f).at("bytes_per_s"), (480 + 10 + 164 + 172) * 4 / 0.002);
 }
 
 TEST(BenchCounters, NoRatesWithoutASweepAndNoColourTimesOffTheGpuLoop) {

@@ -37,13 +37,20 @@ TEST(BenchCounters, BytesPerSweepCountsEachArrayOnce) {
   EXPECT_DOUBLE_EQ(bytes_per_sweep(f), 120 + 30 + 10 + 0.5 * 164);
 }
 
-TEST(BenchCounters, RunValuesOfAColouredRun) {
+// 4 sweeps in 2 ms, 10 moves, 8 movable nodes, each evaluated every sweep.
+SmoothResult four_sweeps() {
   SmoothResult r;
   r.sweeps = 4;
   r.accepted_per_sweep = {5, 3, 2, 0};
   r.smoothing_ms = 2;
-  r.topology_ms = 0.25;
   r.movable_nodes = 8;
+  r.evaluations = 32;
+  return r;
+}
+
+TEST(BenchCounters, RunValuesOfAColouredRun) {
+  SmoothResult r = four_sweeps();
+  r.topology_ms = 0.25;
   r.evaluations = 16;  // half of 8 nodes x 4 sweeps
   r.num_colours = 2;
   r.colour_sizes = {5, 3};
@@ -67,12 +74,7 @@ TEST(BenchCounters, RunValuesOfAColouredRun) {
 // sweeps of 10 nodes, a quarter of the writes a Jacobi sweep makes. A
 // Jacobi (Form A) run of the same moves writes every node.
 TEST(BenchCounters, InPlaceRunsCountOnlyTheirMovesWritten) {
-  SmoothResult r;
-  r.sweeps = 4;
-  r.accepted_per_sweep = {5, 3, 2, 0};
-  r.smoothing_ms = 2;
-  r.movable_nodes = 8;
-  r.evaluations = 32;
+  const SmoothResult r = four_sweeps();
   SweepFootprint f = tiny();
   f.in_place = true;
   EXPECT_DOUBLE_EQ(run_counter_values(r, f).at("bytes_per_s"), (240 + 60 + 10 + 164 + 172) * 4 / 0.002);

@@ -51,6 +51,15 @@ std::map<std::string, double> run_counter_values(const SmoothResult& r, const Sw
   return c;
 }
 
+std::map<std::string, double> phase_counter_values(const SmoothResult& phased) {
+  std::map<std::string, double> c;
+  if (phased.sweeps <= 0 || phased.phase_ms.empty()) return c;
+  c["phase_run_sweeps"] = phased.sweeps;
+  c["phase_run_ms_per_sweep"] = phased.smoothing_ms / phased.sweeps;
+  for (const auto& [kernel, ms] : phased.phase_ms) c["phase_ms_per_sweep_" + kernel] = ms / phased.sweeps;
+  return c;
+}
+
 void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f) {
   for (const auto& [name, value] : run_counter_values(r, f)) state.counters[name] = value;
 }

@@ -42,6 +42,13 @@ double bytes_per_sweep(const SweepFootprint& f);
 // written share taken from the run).
 std::map<std::string, double> run_counter_values(const SmoothResult& r, const SweepFootprint& f);
 
+// The counters of a run taken with SmoothOptions::time_phases, beside the
+// timed ones: phase_run_sweeps, phase_run_ms_per_sweep (that run's
+// smoothing phase, events included) and phase_ms_per_sweep_<kernel> for
+// each of its SmoothResult::phase_ms. Empty when it timed no phase or ran
+// no sweep.
+std::map<std::string, double> phase_counter_values(const SmoothResult& phased);
+
 // Puts run_counter_values into the benchmark's counters.
 void set_run_counters(benchmark::State& state, const SmoothResult& r, const SweepFootprint& f);
 

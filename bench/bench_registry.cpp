@@ -117,6 +117,14 @@ void gpu_family(benchmark::State& state, std::string label, SmoothOptions o, boo
     after.xyz = p.download_xyz();
     set_quality_counters(state, bm.before, summarize_quality(after, bm.movable));
   }
+  // Where a MultiBlock sweep's time goes, kernel by kernel: a run of its own,
+  // since the events that time it would add to the timed ones.
+  if (o.strategy == Strategy::MultiBlock) {
+    SmoothOptions phased = o;
+    phased.time_phases = true;
+    p.restore_coordinates(phased);
+    for (const auto& [name, value] : phase_counter_values(p.run(phased))) state.counters[name] = value;
+  }
 }
 
 void register_gpu(const std::string& label, const BenchConfig& c, bool scaling) {

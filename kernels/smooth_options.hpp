@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/quality_summary.hpp"
@@ -56,6 +57,11 @@ struct SmoothOptions {
   // as many as the device holds at once (a study of fewer SMs, or a test
   // that gives each block more nodes of a class than it stages at once).
   int coloured_blocks = 0;
+  // CUDA MultiBlock: time each kind of kernel of the sweeps with CUDA events
+  // (SmoothResult::phase_ms). A diagnostic: the events cost the GPU a few
+  // microseconds a sweep, so bench_smooth takes them in a run of its own,
+  // outside the timed ones. The other strategies and the CPU ignore it.
+  bool time_phases = false;
   // Called after each sweep when set (CPU: every sweep; CUDA: at each host
   // check, for SingleBlock and Coloured once the loop has ended).
   std::function<void(const SweepProgress&)> progress;
@@ -77,6 +83,13 @@ struct SmoothResult {
   // smoothing phase less the loop's set-up (the tet quality cache). Empty
   // for the other strategies and the CPU.
   std::vector<double> colour_ms;
+  // CUDA MultiBlock with time_phases: milliseconds per kind of kernel,
+  // summed over the sweeps, in launch order: "tet_quality" (adaptive: the
+  // tet quality cache), "node_update" (the sweep kernel), "repair" (Form A:
+  // the conflict repair and the move count), "stopping_rule" (the verdict).
+  // What they leave of smoothing_ms is the GPU waiting on the host's checks
+  // and launches. Empty otherwise.
+  std::vector<std::pair<std::string, double>> phase_ms;
   std::vector<std::int64_t> colour_sizes;  // nodes of each colour class (Coloured runs, CPU and CUDA)
   QualitySummary before, after;
   std::string backend;  // "cpu-serial", "cpu-threads", "cuda"

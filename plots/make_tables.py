@@ -13,6 +13,7 @@ Writes into OUTDIR (created if missing):
     quality.csv   mesh quality before/after per benchmark
     scaling.csv   per-sweep throughput of GPU runs and the ratio to the memory floor
     colours.csv   coloured GPU runs: time per colour class, summed over sweeps
+    phases.csv    MultiBlock GPU runs: ms per sweep by kind of kernel
     runs.csv      every benchmark: time (ms) and how it was reduced over repetitions
 
 Missing benchmarks (families not run, no GPU) are empty cells in CSV and "—"
@@ -358,6 +359,41 @@ def colour_table(result):
     return Table("Where the coloured loop's time goes, colour by colour (GPU)", keys, rows, notes)
 
 
+PHASES = ("tet_quality", "node_update", "repair", "stopping_rule")
+PHASE_COLUMNS = ([Column("benchmark", "Benchmark", fmt_text), Column("ms_per_sweep", "timed ms/sweep"),
+                  Column("phase_run_ms_per_sweep", "phase run ms/sweep")]
+                 + [Column(k, k.replace("_", " ")) for k in PHASES]
+                 + [Column("host_gaps", "host gaps"),
+                    Column("node_update_share", "node update share", lambda v: DASH if v is None else f"{100 * v:.1f}%")])
+
+
+def phase_row(name, run):
+    """A MultiBlock GPU run's ms per sweep by kernel, from its phase run; None if it has none."""
+    counters = run.counters
+    total = counters.get("phase_run_ms_per_sweep")
+    if total is None:
+        return None
+    row = {"benchmark": name, "mesh": bj.parse_name(name)["mesh"], "ms_per_sweep": counters.get("ms_per_sweep"),
+           "phase_run_ms_per_sweep": total}
+    row.update({k: counters.get(f"phase_ms_per_sweep_{k}") for k in PHASES})
+    kernels = sum(v for v in (row[k] for k in PHASES) if v is not None)
+    row["host_gaps"] = total - kernels
+    row["node_update_share"] = row["node_update"] / total if row["node_update"] is not None and total > 0 else None
+    return row
+
+
+def phase_table(result):
+    names = [n for n in result.runs if bj.parse_name(n)["kind"] == "gpu"]
+    rows = [row for row in (phase_row(n, result.runs[n]) for n in sorted(names, key=scaling_order)) if row]
+    notes = ["Where a MultiBlock sweep's time goes, in ms per sweep: each kind of kernel timed with CUDA events in a "
+             "run of its own after the timed ones (the events add to it, so its ms/sweep is shown beside the timed "
+             "run's). tet quality = the adaptive sweeps' quality cache; node update = the sweep kernel; repair = Form "
+             "A's conflict repair and move count; stopping rule = the verdict kernel; host gaps = the rest of that "
+             "run's ms/sweep, the GPU waiting on the host's checks of the stop flag and its launches."]
+    keys = ["benchmark", "mesh", "ms_per_sweep", "phase_run_ms_per_sweep", *PHASES, "host_gaps", "node_update_share"]
+    return Table("Where a MultiBlock sweep's time goes, kernel by kernel (GPU)", keys, rows, notes)
+
+
 RUNS_COLUMNS = [Column("benchmark", "Benchmark", fmt_text), Column("time_ms", "Time (ms)"),
                 Column("statistic", "Reduced as", fmt_text), Column("sweeps", "Sweeps", fmt_int)]
 
@@ -388,7 +424,7 @@ def build_tables(result, metric="real_time"):
     return {"table3": time_table(result, "FormA", metric), "table4": time_table(result, "FormB", metric),
             "table5": speedup_table(result, "FormA", metric), "table6": speedup_table(result, "FormB", metric),
             "quality": quality_table(result), "scaling": scaling_table(result), "colours": colour_table(result),
-            "runs": runs_table(result, metric)}
+            "phases": phase_table(result), "runs": runs_table(result, metric)}
 
 
 def tables_markdown(result, tables, metric):
@@ -404,7 +440,7 @@ def tables_markdown(result, tables, metric):
                                       ["Speedup = our threaded CPU time / the GPU variant's time."],
                                       markdown_rows(THREADS_COLUMNS, table.rows)))
     for stem, columns in (("quality", QUALITY_COLUMNS), ("scaling", SCALING_COLUMNS), ("colours", COLOUR_COLUMNS),
-                          ("runs", RUNS_COLUMNS)):
+                          ("phases", PHASE_COLUMNS), ("runs", RUNS_COLUMNS)):
         table = tables[stem]
         body = markdown_rows(columns, table.rows) if table.rows else "_No benchmarks of this kind in the result._"
         parts.append(markdown_section(table.title, table.notes, body))

@@ -5,7 +5,7 @@ Usage:
     /usr/bin/python3 plots/report.py RESULT.json OUTDIR [--quality-model 109k] [--metric real_time]
 
 Runs make_tables.py (tables.md, table3.csv, table4.csv, table5.csv,
-table6.csv, quality.csv, scaling.csv, colours.csv, runs.csv) and
+table6.csv, quality.csv, scaling.csv, colours.csv, phases.csv, runs.csv) and
 make_figures.py (fig09_layout.png, fig10_form.png, fig11_cpu_gpu.png,
 fig12_blocks.png, fig13_quality.png) on RESULT.json, writing into OUTDIR.
 It prints the precision of the run first (float and double runs of

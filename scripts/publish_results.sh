@@ -74,7 +74,7 @@ if [ -f "$dest/bench_smooth.json" ]; then
 fi
 # What a run produces; logs only when this run brings its own.
 rm -f "$dest"/bench_smooth.json "$dest"/bench_float.json "$dest"/tables.md "$dest"/table*.csv \
-      "$dest"/quality.csv "$dest"/runs.csv "$dest"/scaling.csv "$dest"/colours.csv "$dest"/fig*.png
+      "$dest"/quality.csv "$dest"/runs.csv "$dest"/scaling.csv "$dest"/colours.csv "$dest"/phases.csv "$dest"/fig*.png
 [ -z "$logs" ] || for f in "${log_files[@]}"; do rm -f "$dest/$f"; done
 cp "$stage"/* "$dest"/
 echo "results written to $dest"

@@ -11,29 +11,13 @@
 
 #include "kernels/sweep_log.hpp"
 #include "kernels/cuda/cuda_check.hpp"
+#include "kernels/cuda/cuda_event.hpp"
 #include "kernels/cuda/device_topology.hpp"
 #include "kernels/cuda/stopping_rule_kernels.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
 
 namespace tetsmooth::cuda {
 namespace {
-
-class Event {
- public:
-  Event() { CUDA_CHECK(cudaEventCreate(&e_)); }
-  ~Event() { CUDA_CHECK_NOTHROW(cudaEventDestroy(e_)); }
-  Event(const Event&) = delete;
-  Event& operator=(const Event&) = delete;
-  void record(cudaStream_t s) { CUDA_CHECK(cudaEventRecord(e_, s)); }
-  float ms_since(const Event& start) const {
-    float ms = 0;
-    CUDA_CHECK(cudaEventElapsedTime(&ms, start.e_, e_));
-    return ms;
-  }
-
- private:
-  cudaEvent_t e_{};
-};
 
 double bits_to_double(unsigned long long bits) {
   double d;
@@ -291,6 +275,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   r.topology_ms = m.times.topology_ms;
   r.colouring_ms = m.times.colouring_ms;
   r.smoothing_ms = m.times.smoothing_ms;
+  r.phase_ms = loop.phase_ms;
   if (r.sweeps > 0) {
     std::vector<unsigned long long> acc(r.sweeps), d2(r.sweeps);
     CUDA_CHECK(cudaMemcpy(acc.data(), m.accepted.data(), acc.size() * sizeof(acc[0]), cudaMemcpyDeviceToHost));

@@ -4,6 +4,9 @@
 // loop in one cooperative launch (coloured_loop_kernel.cuh).
 #include <cuda_runtime.h>
 
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "kernels/cuda/sweep_state.cuh"
 #include "kernels/node_update.hpp"
@@ -36,6 +39,7 @@ struct SweepLoopStats {
   int launches = 0;
   int host_checks = 0;
   int lanes_per_node = 0;  // threads per node of the sweep kernel
+  std::vector<std::pair<std::string, double>> phase_ms;  // SmoothResult::phase_ms
 };
 
 // Runs sweeps until the device says stop; Real is float or double.

@@ -11,6 +11,7 @@
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/form_a_repair_kernels.cuh"
 #include "kernels/cuda/multiblock_kernels.cuh"
+#include "kernels/cuda/phase_timer.hpp"
 #include "kernels/cuda/single_block_kernel.cuh"
 #include "kernels/cuda/stopping_rule_kernels.cuh"
 #include "kernels/cuda/tet_quality_pass.cuh"
@@ -45,7 +46,11 @@ class SweepLauncher {
 
  public:
   SweepLauncher(const SweepLoopArgs& a, const SmoothOptions& o)
-      : a_(a), o_(o), c0_(Make::make(a.buf0, a.n)), c1_(Make::make(F == Form::A ? a.buf1 : a.buf0, a.n)) {}
+      : a_(a),
+        o_(o),
+        c0_(Make::make(a.buf0, a.n)),
+        c1_(Make::make(F == Form::A ? a.buf1 : a.buf0, a.n)),
+        phases_(a.stream, o.time_phases && o.strategy == Strategy::MultiBlock) {}
 
   SweepLoopStats run() {
     if (o_.max_iterations == 0) return stats_;
@@ -64,6 +69,7 @@ class SweepLauncher {
     }
     for (int s = 0; s < o_.max_iterations;) {
       const int chunk = std::min(o_.check_every, o_.max_iterations - s);
+      phases_.begin();
       for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
       CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
       CUDA_CHECK(cudaStreamSynchronize(a_.stream));
@@ -71,6 +77,7 @@ class SweepLauncher {
       if (o_.progress) report_progress();
       if (a_.host_state->done) break;
     }
+    stats_.phase_ms = phases_.totals();
     return stats_;
   }
 
@@ -85,10 +92,12 @@ class SweepLauncher {
       tet_quality_kernel<<<blocks_for((a_.num_tets + kTetsPerThread - 1) / kTetsPerThread), kBlock, 0, a_.stream>>>(
           a_.view.tets, a_.num_tets, read, tet_q, a_.state);
       launched();
+      phases_.end_of("tet_quality");
     }
     sweep_kernel<Real, kAdaptive, F><<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(
         a_.view, read, write, a_.n, a_.movable, tet_q, old_min(), a_.moved, a_.state, a_.counters);
     launched();
+    phases_.end_of("node_update");
     stats_.lanes_per_node = 1;
     if (F == Form::A) {
       for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
@@ -102,9 +111,11 @@ class SweepLauncher {
       count_moves_kernel<<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(a_.n, read, write, a_.moved, a_.state,
                                                                       a_.counters);
       launched();
+      phases_.end_of("repair");
     }
     verdict_kernel<<<1, 1, 0, a_.stream>>>(a_.state, a_.counters, o_.max_iterations);
     launched();
+    phases_.end_of("stopping_rule");
   }
 
   // After a loop that ran entirely on the device: the host waits only when
@@ -144,6 +155,7 @@ class SweepLauncher {
   const SmoothOptions& o_;
   Coords c0_, c1_;
   SweepLoopStats stats_;
+  PhaseTimer phases_;
   int reported_ = 0;
 };
 

@@ -94,5 +94,21 @@ TEST(BenchCounters, NoRatesWithoutASweepAndNoColourTimesOffTheGpuLoop) {
   EXPECT_EQ(c.count("colour_ms_0"), 0u);
 }
 
+TEST(BenchCounters, PhaseTimesPerSweepOfTheTimedPhaseRun) {
+  SmoothResult r = four_sweeps();
+  r.phase_ms = {{"tet_quality", 0.4}, {"node_update", 1.2}, {"stopping_rule", 0.04}};
+  const auto c = phase_counter_values(r);
+  EXPECT_EQ(c.size(), 5u);
+  EXPECT_DOUBLE_EQ(c.at("phase_run_sweeps"), 4);
+  EXPECT_DOUBLE_EQ(c.at("phase_run_ms_per_sweep"), 0.5);
+  EXPECT_DOUBLE_EQ(c.at("phase_ms_per_sweep_tet_quality"), 0.1);
+  EXPECT_DOUBLE_EQ(c.at("phase_ms_per_sweep_node_update"), 0.3);
+  EXPECT_DOUBLE_EQ(c.at("phase_ms_per_sweep_stopping_rule"), 0.01);
+  // A run that timed nothing (not MultiBlock, or the CPU) adds no counter.
+  EXPECT_TRUE(phase_counter_values(four_sweeps()).empty());
+  r.sweeps = 0;
+  EXPECT_TRUE(phase_counter_values(r).empty());
+}
+
 }  // namespace
 }  // namespace tetsmooth::bench

@@ -446,5 +446,53 @@ TEST(GpuPipeline, ColouredLoopTimesEachColour) {
   EXPECT_TRUE(p.run(multi).colour_ms.empty());
 }
 
+std::vector<std::string> phase_names(const SmoothResult& r) {
+  std::vector<std::string> names;
+  for (const auto& [name, ms] : r.phase_ms) names.push_back(name);
+  return names;
+}
+
+// MultiBlock's time, kernel by kernel (SmoothOptions::time_phases): each
+// kind of kernel its sweeps launch, in launch order, every time positive
+// and together no more than the smoothing phase (1% and 10 us for the
+// events' resolution). The events only observe: Jacobi (Form A) gives the
+// same moves and coordinates with and without them. Nothing is timed where
+// the option is off, nor by the strategies that run their loop in one
+// launch.
+TEST(GpuPipeline, MultiBlockTimesEachKernel) {
+  SKIP_WITHOUT_GPU();
+  cuda::GpuPipeline p(model_5k());
+  SmoothOptions o = gpu_options(Form::A, Layout::AoS, Strategy::MultiBlock, Method::Adaptive, Precision::Double);
+  p.restore_coordinates(o);
+  const SmoothResult plain = p.run(o);
+  const std::vector<double> plain_xyz = p.download_xyz();
+  EXPECT_TRUE(plain.phase_ms.empty());
+  o.time_phases = true;
+  p.restore_coordinates(o);
+  const SmoothResult timed = p.run(o);
+  EXPECT_EQ(timed.accepted_per_sweep, plain.accepted_per_sweep);
+  EXPECT_EQ(p.download_xyz(), plain_xyz);
+  EXPECT_EQ(phase_names(timed), (std::vector<std::string>{"tet_quality", "node_update", "repair", "stopping_rule"}));
+  double total = 0;
+  for (const auto& [name, ms] : timed.phase_ms) {
+    EXPECT_GT(ms, 0.0) << name;
+    total += ms;
+  }
+  EXPECT_LE(total, 1.01 * timed.smoothing_ms + 0.01);
+  std::printf("Form A MultiBlock, %d sweeps: %.3f of %.3f smoothing ms in the kernels\n", timed.sweeps, total,
+              timed.smoothing_ms);
+
+  o = gpu_options(Form::B, Layout::SoA, Strategy::MultiBlock, Method::Ordinary, Precision::Float);
+  o.time_phases = true;
+  p.restore_coordinates(o);
+  EXPECT_EQ(phase_names(p.run(o)), (std::vector<std::string>{"node_update", "stopping_rule"}));
+  for (Strategy one_launch : {Strategy::SingleBlock, Strategy::Coloured}) {
+    o = gpu_options(Form::B, Layout::AoS, one_launch, Method::Adaptive, Precision::Double);
+    o.time_phases = true;
+    p.restore_coordinates(o);
+    EXPECT_TRUE(p.run(o).phase_ms.empty()) << to_string(one_launch);
+  }
+}
+
 }  // namespace
 }  // namespace tetsmooth

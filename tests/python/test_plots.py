@@ -32,7 +32,7 @@ import paper_numbers as paper  # noqa: E402
 
 FIGURES = ("fig09_layout.png", "fig10_form.png", "fig11_cpu_gpu.png", "fig12_blocks.png", "fig13_quality.png")
 CSV_FILES = ("table3.csv", "table4.csv", "table5.csv", "table6.csv", "quality.csv", "scaling.csv", "colours.csv",
-             "runs.csv")
+             "phases.csv", "runs.csv")
 
 
 def run_script(script, *args):
@@ -382,6 +382,27 @@ class ReportTests(unittest.TestCase):
         raw = raw_entry(self.document, "Ordinary/AoS/MultiBlock/lattice-32/manual_time")
         floor_ms = raw["bytes_per_s"] * raw["ms_per_sweep"] / copy_bw
         self.assertAlmostEqual(float(ordinary["ratio_to_floor"]), raw["ms_per_sweep"] / floor_ms, places=4)
+
+    def test_phase_table(self):
+        rows = {r["benchmark"]: r for r in read_csv(os.path.join(self.out, "phases.csv"))}
+        # Only the fixture's MultiBlock runs that carry a phase run have rows.
+        self.assertEqual(sorted(rows), ["FormB/AoS/MultiBlock/lattice-32", "Ordinary/AoS/MultiBlock/lattice-32"])
+        raw = raw_entry(self.document, "FormB/AoS/MultiBlock/lattice-32/manual_time")
+        row = rows["FormB/AoS/MultiBlock/lattice-32"]
+        self.assertAlmostEqual(float(row["ms_per_sweep"]), raw["ms_per_sweep"])
+        self.assertAlmostEqual(float(row["phase_run_ms_per_sweep"]), raw["phase_run_ms_per_sweep"])
+        kernels = 0.0
+        for phase in ("tet_quality", "node_update", "stopping_rule"):
+            self.assertAlmostEqual(float(row[phase]), raw[f"phase_ms_per_sweep_{phase}"])
+            kernels += raw[f"phase_ms_per_sweep_{phase}"]
+        self.assertEqual(row["repair"], "")  # a Form B run has no repair kernels
+        self.assertAlmostEqual(float(row["host_gaps"]), raw["phase_run_ms_per_sweep"] - kernels)
+        self.assertAlmostEqual(float(row["node_update_share"]),
+                               raw["phase_ms_per_sweep_node_update"] / raw["phase_run_ms_per_sweep"])
+        ordinary = rows["Ordinary/AoS/MultiBlock/lattice-32"]
+        self.assertEqual(ordinary["tet_quality"], "")  # ordinary smoothing keeps no quality cache
+        with open(os.path.join(self.out, "tables.md"), encoding="utf-8") as handle:
+            self.assertIn("kernel by kernel", handle.read())
 
     def test_colour_table(self):
         rows = read_csv(os.path.join(self.out, "colours.csv"))

@@ -25,9 +25,10 @@ class PhaseTimer {
   void end_of(const char* phase) { mark(phase); }
 
   // Milliseconds per phase summed over the chains, phases in the order they
-  // first ended. Call once the stream has synchronised.
+  // first ended; waits for the last event first.
   std::vector<std::pair<std::string, double>> totals() const {
     std::vector<std::pair<std::string, double>> out;
+    if (!events_.empty()) events_.back()->synchronize();
     for (std::size_t k = 1; k < events_.size(); ++k) {
       if (!phases_[k]) continue;
       const double ms = events_[k]->ms_since(*events_[k - 1]);

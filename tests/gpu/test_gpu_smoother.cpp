@@ -372,26 +372,66 @@ TEST(GpuSmoother, Figure2OnTheDevice) {
   EXPECT_EQ(r.after.inverted, 0u);
 }
 
-TEST(GpuSmoother, StoppingRuleMatchesCpu) {
-  SKIP_WITHOUT_GPU();
+// The 5k model under `o` stops at a cap of 3 sweeps, checked every 2 (not
+// a divisor of 3: sweeps past the cap must not run), and after one sweep
+// when the tolerance is huge.
+void expect_cap_and_tolerance_stops(SmoothOptions o) {
   TetMesh m = model_5k();
-  SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Adaptive, Precision::Double);
   o.max_iterations = 3;
-  o.check_every = 2;  // not a divisor of 3: sweeps past the cap must not run
+  o.check_every = 2;
   SmoothResult r = smooth_cuda(m, o);
   EXPECT_EQ(r.sweeps, 3);
   EXPECT_EQ(r.stop, StopReason::MaxIterations);
   EXPECT_EQ(r.accepted_per_sweep.size(), 3u);
   o.max_iterations = 100;
   o.tolerance = 1e6;
+  m = model_5k();
   r = smooth_cuda(m, o);
   EXPECT_EQ(r.sweeps, 1);
   EXPECT_EQ(r.stop, StopReason::Tolerance);
+}
+
+TEST(GpuSmoother, StoppingRuleMatchesCpu) {
+  SKIP_WITHOUT_GPU();
+  SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Adaptive, Precision::Double);
+  expect_cap_and_tolerance_stops(o);
+  TetMesh m = model_5k();
+  SmoothResult r;
   o.max_iterations = 0;
   const std::vector<double> before = m.xyz;
   r = smooth_cuda(m, o);
   EXPECT_EQ(r.sweeps, 0);
   EXPECT_EQ(m.xyz, before);
+}
+
+// MultiBlock reads the stop flag back every check_every sweeps, a chunk
+// late (the next chunk is queued first). However often it looks, a Jacobi
+// run (deterministic) makes the same sweeps, moves and coordinates; every
+// sweep is reported once, in order; and no sweep runs past the cap or the
+// tolerance.
+TEST(GpuSmoother, MultiBlockHostChecksDoNotChangeTheRun) {
+  SKIP_WITHOUT_GPU();
+  SmoothOptions o = gpu_options(Form::A, Layout::AoS, Strategy::MultiBlock, Method::Adaptive, Precision::Double);
+  TetMesh reference = model_5k();
+  o.check_every = 4;
+  const SmoothResult ref = smooth_cuda(reference, o);
+  ASSERT_GT(ref.sweeps, 4);
+  for (int every : {1, 2, 3, 100}) {
+    TetMesh m = model_5k();
+    o.check_every = every;
+    std::vector<int> reported;
+    o.progress = [&](const SweepProgress& p) { reported.push_back(p.sweep); };
+    const SmoothResult r = smooth_cuda(m, o);
+    EXPECT_EQ(r.sweeps, ref.sweeps) << "check_every " << every;
+    EXPECT_EQ(r.stop, ref.stop) << "check_every " << every;
+    EXPECT_EQ(r.accepted_per_sweep, ref.accepted_per_sweep) << "check_every " << every;
+    EXPECT_EQ(m.xyz, reference.xyz) << "check_every " << every;
+    std::vector<int> each(static_cast<std::size_t>(r.sweeps));
+    for (int s = 0; s < r.sweeps; ++s) each[s] = s + 1;
+    EXPECT_EQ(reported, each) << "check_every " << every;
+  }
+  o.progress = nullptr;
+  expect_cap_and_tolerance_stops(o);
 }
 
 TEST(GpuPipeline, RestoreGivesTheSameRunAgain) {

@@ -88,7 +88,7 @@ GpuPipeline::GpuPipeline(const TetMesh& mesh) : impl_(std::make_unique<Impl>()) 
   m.n = mesh.num_nodes();
   m.t = mesh.num_tets();
   CUDA_CHECK(cudaStreamCreateWithFlags(&m.stream, cudaStreamNonBlocking));
-  CUDA_CHECK(cudaMallocHost(reinterpret_cast<void**>(&m.host_state), kHostSlots * sizeof(SweepState)));
+  CUDA_CHECK(cudaMallocHost(reinterpret_cast<void**>(&m.host_state), sizeof(SweepState)));
   m.tets.upload(mesh.tets, m.stream);
   if (!mesh.fixed.empty()) m.fixed.upload(mesh.fixed, m.stream);
   m.input.upload(mesh.xyz, m.stream);

@@ -14,10 +14,6 @@
 
 namespace tetsmooth::cuda {
 
-// MultiBlock queues a chunk of sweeps while the host waits on the previous
-// one's state: a slot of host state for each.
-inline constexpr int kHostSlots = 2;
-
 struct SweepLoopArgs {
   MeshView view;
   index_t n = 0, num_tets = 0;
@@ -28,7 +24,7 @@ struct SweepLoopArgs {
   std::uint8_t* moved = nullptr;
   std::uint8_t* revert = nullptr;
   SweepState* state = nullptr;
-  SweepState* host_state = nullptr;  // pinned, kHostSlots of them
+  SweepState* host_state = nullptr;  // pinned
   SweepCounters counters{};
   const index_t* class_nodes = nullptr;
   const index_t* class_off = nullptr;  // device, num_colours + 1

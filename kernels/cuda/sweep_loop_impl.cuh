@@ -9,7 +9,6 @@
 #include "kernels/cuda/coloured_loop_launch.cuh"
 #include "kernels/cuda/coords_transfer_kernels.cuh"
 #include "kernels/cuda/cuda_check.hpp"
-#include "kernels/cuda/cuda_event.hpp"
 #include "kernels/cuda/form_a_repair_kernels.cuh"
 #include "kernels/cuda/multiblock_kernels.cuh"
 #include "kernels/cuda/phase_timer.hpp"
@@ -68,27 +67,15 @@ class SweepLauncher {
       ++stats_.launches;
       return finish_on_device();
     }
-    // The host reads the stop flag a chunk late: the next chunk is queued
-    // before it waits for this one's state, so that the GPU does not idle
-    // through the round trip. What is queued after the stop costs launches
-    // alone, since every kernel returns at once once the flag is set.
-    int queued = 0, checked = 0;
-    for (int s = 0;;) {
-      while (s < o_.max_iterations && queued - checked < kHostSlots) {
-        const int chunk = std::min(o_.check_every, o_.max_iterations - s);
-        phases_.begin();
-        for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
-        const int slot = queued++ % kHostSlots;
-        CUDA_CHECK(cudaMemcpyAsync(a_.host_state + slot, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost,
-                                   a_.stream));
-        copied_[slot].record(a_.stream);
-      }
-      if (checked == queued) break;
-      const int slot = checked++ % kHostSlots;
-      copied_[slot].synchronize();
+    for (int s = 0; s < o_.max_iterations;) {
+      const int chunk = std::min(o_.check_every, o_.max_iterations - s);
+      phases_.begin();
+      for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
+      CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
+      CUDA_CHECK(cudaStreamSynchronize(a_.stream));
       ++stats_.host_checks;
-      if (o_.progress) report_progress(a_.host_state[slot]);
-      if (a_.host_state[slot].done) break;
+      if (o_.progress) report_progress();
+      if (a_.host_state->done) break;
     }
     stats_.phase_ms = phases_.totals();
     return stats_;
@@ -138,7 +125,7 @@ class SweepLauncher {
     CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
     CUDA_CHECK(cudaStreamSynchronize(a_.stream));
     ++stats_.host_checks;
-    report_progress(*a_.host_state);
+    report_progress();
     return stats_;
   }
 
@@ -147,9 +134,9 @@ class SweepLauncher {
     ++stats_.launches;
   }
 
-  // Reports the sweeps finished by the state `fresh` was read from.
-  void report_progress(const SweepState& fresh) {
-    const int done = fresh.sweep;
+  // Reports the sweeps finished since the last check (host_state is fresh).
+  void report_progress() {
+    const int done = a_.host_state->sweep;
     if (done <= reported_) return;
     std::vector<unsigned long long> acc(done), d2(done);
     CUDA_CHECK(cudaMemcpy(acc.data(), a_.counters.accepted, done * sizeof(unsigned long long), cudaMemcpyDeviceToHost));
@@ -169,7 +156,6 @@ class SweepLauncher {
   Coords c0_, c1_;
   SweepLoopStats stats_;
   PhaseTimer phases_;
-  Event copied_[kHostSlots];  // when each slot of host_state holds its chunk's state
   int reported_ = 0;
 };
 

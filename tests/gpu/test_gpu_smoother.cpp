@@ -404,11 +404,10 @@ TEST(GpuSmoother, StoppingRuleMatchesCpu) {
   EXPECT_EQ(m.xyz, before);
 }
 
-// MultiBlock reads the stop flag back every check_every sweeps, a chunk
-// late (the next chunk is queued first). However often it looks, a Jacobi
-// run (deterministic) makes the same sweeps, moves and coordinates; every
-// sweep is reported once, in order; and no sweep runs past the cap or the
-// tolerance.
+// MultiBlock reads the stop flag back every check_every sweeps. However
+// often it looks, a Jacobi run (deterministic) makes the same sweeps, moves
+// and coordinates; every sweep is reported once, in order; and no sweep
+// runs past the cap or the tolerance.
 TEST(GpuSmoother, MultiBlockHostChecksDoNotChangeTheRun) {
   SKIP_WITHOUT_GPU();
   SmoothOptions o = gpu_options(Form::A, Layout::AoS, Strategy::MultiBlock, Method::Adaptive, Precision::Double);

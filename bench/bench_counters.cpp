@@ -56,7 +56,12 @@ std::map<std::string, double> phase_counter_values(const SmoothResult& phased) {
   if (phased.sweeps <= 0 || phased.phase_ms.empty()) return c;
   c["phase_run_sweeps"] = phased.sweeps;
   c["phase_run_ms_per_sweep"] = phased.smoothing_ms / phased.sweeps;
-  for (const auto& [kernel, ms] : phased.phase_ms) c["phase_ms_per_sweep_" + kernel] = ms / phased.sweeps;
+  double kernels = 0;
+  for (const auto& [kernel, ms] : phased.phase_ms) {
+    c["phase_ms_per_sweep_" + kernel] = ms / phased.sweeps;
+    kernels += ms;
+  }
+  c["phase_run_rest_ms_per_sweep"] = (phased.smoothing_ms - kernels) / phased.sweeps;
   return c;
 }
 

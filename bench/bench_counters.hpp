@@ -44,9 +44,11 @@ std::map<std::string, double> run_counter_values(const SmoothResult& r, const Sw
 
 // The counters of a run taken with SmoothOptions::time_phases, beside the
 // timed ones: phase_run_sweeps, phase_run_ms_per_sweep (that run's
-// smoothing phase, events included) and phase_ms_per_sweep_<kernel> for
-// each of its SmoothResult::phase_ms. Empty when it timed no phase or ran
-// no sweep.
+// smoothing phase, events included), phase_ms_per_sweep_<kernel> for each
+// of its SmoothResult::phase_ms, and phase_run_rest_ms_per_sweep, what the
+// kernels leave of that run's smoothing phase (host checks, set-up), taken
+// within the run so that its median over repetitions is a run's. Empty when
+// it timed no phase or ran no sweep.
 std::map<std::string, double> phase_counter_values(const SmoothResult& phased);
 
 // Puts run_counter_values into the benchmark's counters.

@@ -83,14 +83,18 @@ struct SmoothResult {
   // smoothing phase less the loop's set-up (the tet quality cache). Empty
   // for the other strategies and the CPU.
   std::vector<double> colour_ms;
-  // CUDA MultiBlock with time_phases: milliseconds per kind of kernel,
-  // summed over the sweeps, in launch order: "tet_quality" (adaptive: the
-  // tet quality cache), "node_update" (the sweep kernel), "repair" (Form A:
-  // the conflict repair and the move count), "stopping_rule" (the verdict).
-  // What they leave of smoothing_ms is the GPU waiting on the host's checks
-  // and launches. Empty otherwise.
-  std::vector<std::pair<std::string, double>> phase_ms;
   std::vector<std::int64_t> colour_sizes;  // nodes of each colour class (Coloured runs, CPU and CUDA)
+  // CUDA MultiBlock with time_phases: milliseconds per kind of kernel, in
+  // launch order: "tet_quality" (adaptive: the tet quality cache),
+  // "node_update" (the sweep kernel), "repair" (Form A: the conflict repair
+  // where adaptive, and the move count), "stopping_rule" (the verdict).
+  // Summed over every sweep launched, as smoothing_ms is: the sweeps of the
+  // last chunk after the stop return at once. The first kernel after each
+  // host check carries its launch latency (kernels/cuda/phase_timer.hpp).
+  // What they leave of smoothing_ms is the host's checks of the stop flag
+  // and, once a run, the loop's set-up (the wait for the tolerance's edge
+  // sums). Empty otherwise.
+  std::vector<std::pair<std::string, double>> phase_ms;
   QualitySummary before, after;
   std::string backend;  // "cpu-serial", "cpu-threads", "cuda"
 };

@@ -1,7 +1,7 @@
 #pragma once
-// A CUDA event that owns its handle: recorded into a stream, waited on, or
-// read as the milliseconds since an earlier event of the same stream (both
-// must have completed: synchronise first).
+// A CUDA event that owns its handle: recorded into a stream, then read as
+// the milliseconds since an earlier event of the same stream (both must
+// have completed: synchronise first).
 #include <cuda_runtime.h>
 
 #include "kernels/cuda/cuda_check.hpp"
@@ -15,8 +15,6 @@ class Event {
   Event(const Event&) = delete;
   Event& operator=(const Event&) = delete;
   void record(cudaStream_t s) { CUDA_CHECK(cudaEventRecord(e_, s)); }
-  // Waits on the host until the work recorded before it has finished.
-  void synchronize() const { CUDA_CHECK(cudaEventSynchronize(e_)); }
   float ms_since(const Event& start) const {
     float ms = 0;
     CUDA_CHECK(cudaEventElapsedTime(&ms, start.e_, e_));

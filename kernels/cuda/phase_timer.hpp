@@ -1,12 +1,17 @@
 #pragma once
 // Where a MultiBlock sweep's time goes, kernel by kernel
-// (SmoothOptions::time_phases): an event is recorded after each kernel, and
-// the time between two consecutive events is charged to the kernel that
-// ended at the second. begin() starts a new chain, so that a gap the GPU
-// spends idle (the host reading the stop flag back) is charged to no kernel.
-// Disabled, it records nothing.
+// (SmoothOptions::time_phases). Each chunk of sweeps between two host
+// checks is a chain of events: begin() before its first kernel, end_of()
+// after each kernel, and the time between two consecutive events is charged
+// to the kernel that ended at the second. The host's check between chunks
+// (the state copy and its wait) is charged to no kernel; the first kernel
+// of a chunk does carry its own launch latency, since the GPU is idle when
+// the chain begins. collect() reads a chunk's events once the stream has
+// synchronised, so the same events serve every chunk. Disabled, it records
+// nothing.
 #include <cuda_runtime.h>
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <utility>
@@ -24,36 +29,44 @@ class PhaseTimer {
   // `phase` must outlive the timer (the callers pass string literals).
   void end_of(const char* phase) { mark(phase); }
 
-  // Milliseconds per phase summed over the chains, phases in the order they
-  // first ended; waits for the last event first.
-  std::vector<std::pair<std::string, double>> totals() const {
-    std::vector<std::pair<std::string, double>> out;
-    if (!events_.empty()) events_.back()->synchronize();
-    for (std::size_t k = 1; k < events_.size(); ++k) {
-      if (!phases_[k]) continue;
-      const double ms = events_[k]->ms_since(*events_[k - 1]);
-      auto it = out.begin();
-      while (it != out.end() && it->first != phases_[k]) ++it;
-      if (it == out.end())
-        out.emplace_back(phases_[k], ms);
-      else
-        it->second += ms;
-    }
-    return out;
+  // Adds the chunk's times to the totals. Call once the stream has
+  // synchronised, before the next begin().
+  void collect() {
+    for (std::size_t k = 1; k < used_; ++k)
+      if (phases_[k]) add(phases_[k], events_[k]->ms_since(*events_[k - 1]));
+    used_ = 0;
   }
+
+  // Milliseconds per phase over the chunks collected, phases in the order
+  // they first ended.
+  const std::vector<std::pair<std::string, double>>& totals() const { return totals_; }
 
  private:
   void mark(const char* phase) {
     if (!enabled_) return;
-    events_.push_back(std::make_unique<Event>());
-    events_.back()->record(stream_);
-    phases_.push_back(phase);
+    if (used_ == events_.size()) {
+      events_.push_back(std::make_unique<Event>());
+      phases_.push_back(nullptr);
+    }
+    phases_[used_] = phase;
+    events_[used_++]->record(stream_);
+  }
+
+  void add(const char* phase, double ms) {
+    for (auto& [name, total] : totals_)
+      if (name == phase) {
+        total += ms;
+        return;
+      }
+    totals_.emplace_back(phase, ms);
   }
 
   cudaStream_t stream_;
   bool enabled_;
-  std::vector<std::unique_ptr<Event>> events_;
-  std::vector<const char*> phases_;  // nullptr where a chain begins
+  std::vector<std::unique_ptr<Event>> events_;  // reused by every chunk
+  std::vector<const char*> phases_;             // what events_[k] ends; nullptr where a chain begins
+  std::size_t used_ = 0;                        // events recorded in this chunk
+  std::vector<std::pair<std::string, double>> totals_;
 };
 
 }  // namespace tetsmooth::cuda

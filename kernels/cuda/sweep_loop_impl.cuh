@@ -50,7 +50,7 @@ class SweepLauncher {
         o_(o),
         c0_(Make::make(a.buf0, a.n)),
         c1_(Make::make(F == Form::A ? a.buf1 : a.buf0, a.n)),
-        phases_(a.stream, o.time_phases && o.strategy == Strategy::MultiBlock) {}
+        phases_(a.stream, o.time_phases) {}  // only the MultiBlock loop records
 
   SweepLoopStats run() {
     if (o_.max_iterations == 0) return stats_;
@@ -73,6 +73,7 @@ class SweepLauncher {
       for (int k = 0; k < chunk; ++k, ++s) launch_sweep(s);
       CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
       CUDA_CHECK(cudaStreamSynchronize(a_.stream));
+      phases_.collect();
       ++stats_.host_checks;
       if (o_.progress) report_progress();
       if (a_.host_state->done) break;

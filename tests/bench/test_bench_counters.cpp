@@ -98,12 +98,13 @@ TEST(BenchCounters, PhaseTimesPerSweepOfTheTimedPhaseRun) {
   SmoothResult r = four_sweeps();
   r.phase_ms = {{"tet_quality", 0.4}, {"node_update", 1.2}, {"stopping_rule", 0.04}};
   const auto c = phase_counter_values(r);
-  EXPECT_EQ(c.size(), 5u);
+  EXPECT_EQ(c.size(), 6u);
   EXPECT_DOUBLE_EQ(c.at("phase_run_sweeps"), 4);
   EXPECT_DOUBLE_EQ(c.at("phase_run_ms_per_sweep"), 0.5);
   EXPECT_DOUBLE_EQ(c.at("phase_ms_per_sweep_tet_quality"), 0.1);
   EXPECT_DOUBLE_EQ(c.at("phase_ms_per_sweep_node_update"), 0.3);
   EXPECT_DOUBLE_EQ(c.at("phase_ms_per_sweep_stopping_rule"), 0.01);
+  EXPECT_NEAR(c.at("phase_run_rest_ms_per_sweep"), (2 - 1.64) / 4, 1e-12);
   // A run that timed nothing (not MultiBlock, or the CPU) adds no counter.
   EXPECT_TRUE(phase_counter_values(four_sweeps()).empty());
   r.sweeps = 0;

@@ -376,6 +376,7 @@ TEST(GpuSmoother, Figure2OnTheDevice) {
 // a divisor of 3: sweeps past the cap must not run), and after one sweep
 // when the tolerance is huge.
 void expect_cap_and_tolerance_stops(SmoothOptions o) {
+  SCOPED_TRACE(to_string(o.strategy));
   TetMesh m = model_5k();
   o.max_iterations = 3;
   o.check_every = 2;
@@ -492,9 +493,11 @@ std::vector<std::string> phase_names(const SmoothResult& r) {
 }
 
 // MultiBlock's time, kernel by kernel (SmoothOptions::time_phases): each
-// kind of kernel its sweeps launch, in launch order, every time positive
+// kind of kernel its sweeps launch, in launch order, every time positive,
 // and together no more than the smoothing phase (1% and 10 us for the
-// events' resolution). The events only observe: Jacobi (Form A) gives the
+// events' resolution) but most of it (the 5k model's 15 Form A sweeps of
+// 20 kernels each, against four host checks), the events of the first
+// chunk of sweeps serving the others. The events only observe: Jacobi (Form A) gives the
 // same moves and coordinates with and without them. Nothing is timed where
 // the option is off, nor by the strategies that run their loop in one
 // launch.
@@ -518,6 +521,7 @@ TEST(GpuPipeline, MultiBlockTimesEachKernel) {
     total += ms;
   }
   EXPECT_LE(total, 1.01 * timed.smoothing_ms + 0.01);
+  EXPECT_GT(total, 0.5 * timed.smoothing_ms);
   std::printf("Form A MultiBlock, %d sweeps: %.3f of %.3f smoothing ms in the kernels\n", timed.sweeps, total,
               timed.smoothing_ms);
 

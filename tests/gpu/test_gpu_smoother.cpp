@@ -397,10 +397,9 @@ TEST(GpuSmoother, StoppingRuleMatchesCpu) {
   SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Adaptive, Precision::Double);
   expect_cap_and_tolerance_stops(o);
   TetMesh m = model_5k();
-  SmoothResult r;
   o.max_iterations = 0;
   const std::vector<double> before = m.xyz;
-  r = smooth_cuda(m, o);
+  const SmoothResult r = smooth_cuda(m, o);
   EXPECT_EQ(r.sweeps, 0);
   EXPECT_EQ(m.xyz, before);
 }
@@ -497,10 +496,10 @@ std::vector<std::string> phase_names(const SmoothResult& r) {
 // and together no more than the smoothing phase (1% and 10 us for the
 // events' resolution) but most of it (the 5k model's 15 Form A sweeps of
 // 20 kernels each, against four host checks), the events of the first
-// chunk of sweeps serving the others. The events only observe: Jacobi (Form A) gives the
-// same moves and coordinates with and without them. Nothing is timed where
-// the option is off, nor by the strategies that run their loop in one
-// launch.
+// chunk of sweeps serving the others. The events only observe: Jacobi
+// (Form A) gives the same moves and coordinates with and without them.
+// Nothing is timed where the option is off, nor by the strategies that run
+// their loop in one launch.
 TEST(GpuPipeline, MultiBlockTimesEachKernel) {
   SKIP_WITHOUT_GPU();
   cuda::GpuPipeline p(model_5k());

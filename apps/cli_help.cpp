@@ -24,7 +24,7 @@ const char* const kExitCodes = R"(Exit status:
 const char* const kFormats = R"(Formats (chosen from the file name; --format/--output-format override):
   .node/.ele  tetgen        TetGen node + element files (give either name, or the base name)
   .vtu        vtu           VTK XML UnstructuredGrid
-  .vtk        vtk           legacy VTK, ASCII
+  .vtk        vtk           legacy VTK, ASCII (reading also takes BINARY)
   .msh        msh41         Gmsh 4.1 ASCII (reading detects 2.2 or 4.1, ASCII or binary)
               msh41-binary  Gmsh 4.1 binary
               msh22         Gmsh 2.2 ASCII

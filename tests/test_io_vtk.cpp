@@ -292,9 +292,11 @@ TEST(LegacyVtk, ReadsVersion51WithFieldDataAndMetadata) {
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 1}));
 }
 
-TEST(LegacyVtkErrors, BinaryAndOtherDatasetsAreRejected) {
+// BINARY files are read: test_io_vtk_binary.cpp.
+TEST(LegacyVtkErrors, OtherModesAndDatasetsAreRejected) {
   const std::string v51 = file_text("vtk_v51.vtk");
-  EXPECT_NE(vtk_error(replaced(v51, "ASCII", "BINARY")).find("mesh.vtk:3: binary legacy VTK"), std::string::npos);
+  EXPECT_NE(vtk_error(replaced(v51, "ASCII", "TEXT")).find("mesh.vtk:3: expected ASCII or BINARY, found 'TEXT'"),
+            std::string::npos);
   EXPECT_NE(vtk_error(replaced(v51, "UNSTRUCTURED_GRID", "POLYDATA")).find("mesh.vtk:4: DATASET POLYDATA"),
             std::string::npos);
   EXPECT_NE(vtk_error("hello\n").find("mesh.vtk:1: not a legacy VTK file"), std::string::npos);

@@ -44,6 +44,7 @@ TextLines::TextLines(std::istream& in, std::string source, char comment)
     : in_(in), source_(std::move(source)), comment_(comment) {}
 
 bool TextLines::read_raw_line() {
+  line_offset_ = next_offset_;
   if (!std::getline(in_, line_)) {
     if (in_.bad()) fail("read error");
     line_.clear();
@@ -52,6 +53,7 @@ bool TextLines::read_raw_line() {
     return false;
   }
   ++line_no_;
+  next_offset_ += line_.size() + (in_.eof() ? 0 : 1);  // getline took the '\n' unless the input ended
   tokens_.clear();
   cursor_ = 0;
   std::string_view rest(line_);
@@ -130,8 +132,26 @@ void TextLines::skip_past_blank_line() {
   }
 }
 
+void TextLines::read_bytes(char* out, std::size_t n, const char* what) {
+  if (cursor_ < tokens_.size())
+    fail(std::string("expected the end of the line before ") + what + ", found " + quoted(tokens_[cursor_]));
+  in_.read(out, static_cast<std::streamsize>(n));
+  const auto got = static_cast<std::size_t>(in_.gcount());
+  if (in_.bad()) fail("read error");
+  if (got < n)
+    fail_at_byte(next_offset_ + got, std::string("unexpected end of file in ") + what);
+  next_offset_ += n;
+}
+
+void TextLines::fail_at_byte(std::uint64_t offset, const std::string& what) const {
+  throw InputError(source_ + ", byte " + std::to_string(offset), what);
+}
+
 // An empty file reports line 1, where the missing content was expected.
-std::string TextLines::where() const { return source_ + ":" + std::to_string(line_no_ == 0 ? 1 : line_no_); }
+std::string TextLines::where() const {
+  if (by_byte_) return source_ + ", byte " + std::to_string(line_offset_);
+  return source_ + ":" + std::to_string(line_no_ == 0 ? 1 : line_no_);
+}
 
 void TextLines::fail(const std::string& what) const { throw InputError(where(), what); }
 

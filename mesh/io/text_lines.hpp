@@ -4,6 +4,7 @@
 // "file:line: what". Tokens are separated by spaces, tabs and CR (so CRLF
 // files read like LF files); a comment character cuts a line short.
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <string>
 #include <string_view>
@@ -55,9 +56,24 @@ class TextLines {
   // including the next blank one (sections terminated by an empty line).
   void skip_past_blank_line();
 
+  // Raw bytes, for formats that put binary blocks between text lines
+  // (legacy VTK BINARY): the `n` bytes that follow the current line, whose
+  // tokens must all have been taken; the next token comes from the text
+  // after them. InputError at the first missing byte when the input ends
+  // first.
+  void read_bytes(char* out, std::size_t n, const char* what);
+  // Byte offset in the input of the next byte not yet read.
+  std::uint64_t next_offset() const { return next_offset_; }
+  // From now on where() names the byte offset at which the current line
+  // starts ("source, byte N") instead of its number: once binary blocks are
+  // read, line numbers no longer locate anything.
+  void locate_by_byte() { by_byte_ = true; }
+  // InputError at byte `offset` ("source, byte N: what").
+  [[noreturn]] void fail_at_byte(std::uint64_t offset, const std::string& what) const;
+
   const std::string& source() const { return source_; }
   std::size_t line_number() const { return line_no_; }
-  std::string where() const;  // "source:line"
+  std::string where() const;  // "source:line", or "source, byte N" (locate_by_byte)
   [[noreturn]] void fail(const std::string& what) const;
 
  private:
@@ -72,6 +88,8 @@ class TextLines {
   std::vector<std::string_view> tokens_;  // views into line_
   std::size_t cursor_ = 0;                // next token for token mode
   std::size_t line_no_ = 0;
+  std::uint64_t line_offset_ = 0, next_offset_ = 0;  // of the current line, of the next byte
+  bool by_byte_ = false;
 };
 
 }  // namespace tetsmooth

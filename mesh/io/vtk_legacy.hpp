@@ -1,5 +1,6 @@
 #pragma once
-// Legacy VTK (.vtk), ASCII, DATASET UNSTRUCTURED_GRID.
+// Legacy VTK (.vtk), DATASET UNSTRUCTURED_GRID: written in ASCII, read in
+// ASCII or BINARY.
 //
 // Writing: version 4.2 layout ("CELLS n size" with a count before each
 // cell's nodes), cells as in vtk_cells.hpp, coordinates in the shortest form
@@ -14,8 +15,15 @@
 // .vtu, region tags come from one cell-data array (tetsmooth:tag, or another
 // tool's name for them: vtk_arrays.hpp) and fixed nodes from tetsmooth:fixed,
 // as SCALARS or FIELD arrays; every other point and cell data array is
-// dropped with a note in FileExtras::read_notes. BINARY files are rejected
-// (use .vtu).
+// dropped with a note in FileExtras::read_notes.
+//
+// BINARY files (meshio's default for .vtk) hold each data block as raw
+// big-endian values of the type its keyword line names (vtk_scalars.hpp),
+// right after that line; CELLS of versions up to 4.2 and CELL_TYPES as int,
+// LOOKUP_TABLE and COLOR_SCALARS values as unsigned char. bit and string
+// arrays are refused, as is SCALARS without its LOOKUP_TABLE line. Errors in
+// a BINARY file name the byte offset of the line or value at fault instead
+// of a line number.
 #include <istream>
 #include <ostream>
 #include <string>

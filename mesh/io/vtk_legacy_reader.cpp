@@ -1,6 +1,9 @@
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/input_file.hpp"
@@ -8,6 +11,7 @@
 #include "mesh/io/vtk_arrays.hpp"
 #include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtk_legacy.hpp"
+#include "mesh/io/vtk_scalars.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth {
@@ -78,25 +82,75 @@ class LegacyReader {
     if (!lines_.next_raw_line()) lines_.fail("unexpected end of file, expected the title line");
     lines_.require_line("ASCII or BINARY");
     const std::string mode = upper(lines_.token(0, "ASCII or BINARY"));
-    if (mode == "BINARY") lines_.fail("binary legacy VTK files are not supported; use ASCII or .vtu");
-    if (mode != "ASCII") lines_.fail("expected ASCII or BINARY, found '" + mode + "'");
+    if (mode != "ASCII" && mode != "BINARY") lines_.fail("expected ASCII or BINARY, found '" + mode + "'");
+    binary_ = mode == "BINARY";
+    if (binary_) lines_.locate_by_byte();
     if (upper(lines_.next_token("DATASET")) != "DATASET") lines_.fail("expected DATASET");
     const std::string type = upper(lines_.next_token("the dataset type"));
     if (type != "UNSTRUCTURED_GRID") lines_.fail("DATASET " + type + " is not supported, only UNSTRUCTURED_GRID");
   }
 
-  std::size_t count(const char* what) {
-    const long long n = lines_.next_integer(what);
+  std::size_t count(const char* what) { return checked_count(lines_.next_integer(what), what); }
+
+  std::size_t checked_count(long long n, const char* what) const {
     if (n < 0 || n > std::numeric_limits<std::int32_t>::max())
       lines_.fail(std::string("invalid ") + what + " " + std::to_string(n));
     return static_cast<std::size_t>(n);
   }
 
-  void skip_values(std::size_t n, const char* what) {
-    for (std::size_t i = 0; i < n; ++i) lines_.next_token(what);
+  // The type of a BINARY block's values, named on the line before it.
+  const VtkScalarInfo& binary_type(std::string_view type, const char* what) const {
+    const VtkScalarInfo* info = legacy_vtk_scalar(type);
+    if (!info)
+      lines_.fail(std::string(what) + ": data type '" + std::string(type.substr(0, 40)) +
+                  "' cannot be read from a BINARY file (only numeric types, not bit or string)");
+    return *info;
   }
 
-  std::vector<long long> integers(std::size_t n, const char* what) {
+  // The n values of the BINARY block after the current line, of legacy type
+  // `type`, big-endian as the format has them. Read a chunk at a time, so
+  // that a count the file cannot hold ends at the end of the file, not in an
+  // allocation. A value that does not fit Out (an integer type asked for, a
+  // float type found; an unsigned value past long long) fails at its byte.
+  template <class Out>
+  std::vector<Out> binary_values(std::size_t n, std::string_view type, const char* what) {
+    const VtkScalarInfo& info = binary_type(type, what);
+    if (std::is_integral_v<Out> && info.is_float)
+      lines_.fail(std::string(what) + ": expected an integer data type, found '" + std::string(type) + "'");
+    std::vector<Out> out;
+    out.reserve(std::min<std::size_t>(n, kChunkValues));
+    std::vector<unsigned char> chunk;
+    const std::uint64_t begin = lines_.next_offset();
+    for (std::size_t done = 0; done < n;) {
+      const std::size_t k = std::min(n - done, kChunkValues);
+      chunk.resize(k * info.size);
+      lines_.read_bytes(reinterpret_cast<char*>(chunk.data()), chunk.size(), what);
+      if (!decode_vtk_scalars(info.scalar, chunk.data(), k, true, out))
+        lines_.fail_at_byte(begin + out.size() * info.size, std::string(what) + ": value out of range");
+      done += k;
+    }
+    return out;
+  }
+
+  // Skips n values of legacy type `type`: tokens, or a BINARY block's bytes.
+  void skip_values(std::size_t n, std::string_view type, const char* what) {
+    if (!binary_) {
+      for (std::size_t i = 0; i < n; ++i) lines_.next_token(what);
+      return;
+    }
+    const std::size_t size = binary_type(type, what).size;
+    std::vector<char> chunk;
+    for (std::size_t done = 0; done < n;) {
+      const std::size_t k = std::min(n - done, kChunkValues);
+      chunk.resize(k * size);
+      lines_.read_bytes(chunk.data(), chunk.size(), what);
+      done += k;
+    }
+  }
+
+  // n integers of legacy type `type`: tokens, or a BINARY block.
+  std::vector<long long> integers(std::size_t n, std::string_view type, const char* what) {
+    if (binary_) return binary_values<long long>(n, type, what);
     std::vector<long long> v;
     v.reserve(std::min<std::size_t>(n, 1 << 20));  // a lying count ends at end of file, not in allocation
     for (std::size_t i = 0; i < n; ++i) v.push_back(lines_.next_integer(what));
@@ -109,7 +163,7 @@ class LegacyReader {
     if (kw == "CELL_TYPES") {
       types_where_ = lines_.where();
       have_types_ = true;
-      types_ = integers(count("cell type count"), "cell type");
+      types_ = integers(count("cell type count"), "int", "cell type");
       return;
     }
     if (kw == "POINT_DATA" || kw == "CELL_DATA") {
@@ -120,8 +174,9 @@ class LegacyReader {
     if (kw == "FIELD") return field();
     if (kw == "METADATA") return lines_.skip_past_blank_line();
     if (kw == "LOOKUP_TABLE") {
+      // RGBA entries: reals in ASCII, bytes in BINARY.
       lines_.next_token("table name");
-      return skip_values(4 * count("table size"), "table value");
+      return skip_values(4 * count("table size"), "unsigned_char", "table value");
     }
     if (attach_ == Attach::None) lines_.fail("unknown or misplaced keyword '" + kw + "'");
     if (kw == "SCALARS") return scalars();
@@ -135,18 +190,24 @@ class LegacyReader {
                                   : kw == "TENSORS6"                 ? 6
                                   : kw == "TEXTURE_COORDINATES"      ? count("dimension")
                                                                      : count("component count");
-    if (kw != "COLOR_SCALARS") lines_.next_token("type");
-    data_array(name, per_tuple, tuples_, where);
+    // COLOR_SCALARS names no type: reals in ASCII, bytes in BINARY.
+    const std::string type(kw == "COLOR_SCALARS" ? "unsigned_char" : lines_.next_token("type"));
+    data_array(name, per_tuple, tuples_, type, where);
   }
 
   // The values of a point or cell data array: kept when it may be carried
   // over, skipped otherwise. Reals, so that a tag array of a floating-point
   // type is accepted when its values are whole numbers, and rejected naming
   // the cell if not (vtk_region_tags).
-  void data_array(const std::string& name, std::size_t components, std::size_t tuples, const std::string& where) {
+  void data_array(const std::string& name, std::size_t components, std::size_t tuples, const std::string& type,
+                  const std::string& where) {
     arrays_.push_back(VtkArrayDecl{attach_ == Attach::Cells, name, components});
     Kept& kept = kept_.emplace_back(Kept{where, {}});
-    if (!vtk_array_wanted(arrays_.back())) return skip_values(components * tuples, "value");
+    if (!vtk_array_wanted(arrays_.back())) return skip_values(components * tuples, type, "value");
+    if (binary_) {
+      kept.values = binary_values<double>(tuples, type, "value");
+      return;
+    }
     kept.values.reserve(std::min<std::size_t>(tuples, 1 << 20));
     for (std::size_t i = 0; i < tuples; ++i) {
       const std::string_view token = lines_.next_token("value");
@@ -158,10 +219,19 @@ class LegacyReader {
 
   void points() {
     const std::size_t n = count("point count");
-    lines_.next_token("point type");
+    const std::string type(lines_.next_token("point type"));
+    have_points_ = true;
+    if (binary_) {
+      const std::uint64_t begin = lines_.next_offset();
+      mesh_.xyz = binary_values<double>(3 * n, type, "coordinate");
+      const std::size_t size = binary_type(type, "coordinate").size;
+      for (std::size_t i = 0; i < mesh_.xyz.size(); ++i)
+        if (!std::isfinite(mesh_.xyz[i]))
+          lines_.fail_at_byte(begin + i * size, "non-finite coordinate of point " + std::to_string(i / 3));
+      return;
+    }
     mesh_.xyz.reserve(3 * std::min<std::size_t>(n, 1 << 20));
     for (std::size_t i = 0; i < 3 * n; ++i) mesh_.xyz.push_back(lines_.next_real("coordinate"));
-    have_points_ = true;
   }
 
   void cells() {
@@ -172,23 +242,31 @@ class LegacyReader {
     if (major_ >= 5) {
       // 5.x: "CELLS <#offsets> <#connectivity>", then OFFSETS and CONNECTIVITY arrays.
       if (upper(lines_.next_token("OFFSETS")) != "OFFSETS") lines_.fail("expected OFFSETS");
-      lines_.next_token("offset type");
-      offsets_ = integers(first, "offset");
+      const std::string offset_type(lines_.next_token("offset type"));
+      offsets_ = integers(first, offset_type, "offset");
       if (upper(lines_.next_token("CONNECTIVITY")) != "CONNECTIVITY") lines_.fail("expected CONNECTIVITY");
-      lines_.next_token("connectivity type");
-      connectivity_ = integers(second, "node index");
+      const std::string connectivity_type(lines_.next_token("connectivity type"));
+      connectivity_ = integers(second, connectivity_type, "node index");
       if (offsets_.empty()) lines_.fail("OFFSETS needs at least the leading 0");
       return;
     }
-    // Up to 4.2: "CELLS <#cells> <size>", each cell its node count then nodes.
+    // Up to 4.2: "CELLS <#cells> <size>", each cell its node count then its
+    // nodes, as tokens or (BINARY) one block of `second` ints.
+    std::vector<long long> block;
+    if (binary_) block = binary_values<long long>(second, "int", "CELLS data");
+    std::size_t taken = 0;  // values of the block taken
+    const auto next = [&](const char* what) { return binary_ ? block[taken++] : lines_.next_integer(what); };
     offsets_.push_back(0);
     connectivity_.clear();
     for (std::size_t c = 0; c < first; ++c) {
-      const std::size_t k = count("cell node count");
+      if (connectivity_.size() + c >= second)
+        lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) +
+                    " values that CELLS declared");
+      const std::size_t k = checked_count(next("cell node count"), "cell node count");
       if (connectivity_.size() + c + 1 + k > second)
         lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) +
                     " values that CELLS declared");
-      for (std::size_t i = 0; i < k; ++i) connectivity_.push_back(lines_.next_integer("node index"));
+      for (std::size_t i = 0; i < k; ++i) connectivity_.push_back(next("node index"));
       offsets_.push_back(static_cast<long long>(connectivity_.size()));
     }
     if (connectivity_.size() + first != second)
@@ -199,13 +277,17 @@ class LegacyReader {
   void scalars() {
     const std::string name = decode_name(lines_.next_token("array name"));
     const std::string where = lines_.where();
-    lines_.next_token("type");
+    const std::string type(lines_.next_token("type"));
     const std::size_t components = lines_.line_has_more() ? count("component count") : 1;
+    // Optional in ASCII; in BINARY the line must be there, since without it
+    // the look for it has read into the data.
     if (upper(lines_.peek_token()) == "LOOKUP_TABLE") {
       lines_.next_token("LOOKUP_TABLE");
       lines_.next_token("table name");
+    } else if (binary_) {
+      lines_.fail("SCALARS " + name + ": a BINARY file needs the LOOKUP_TABLE line before the values");
     }
-    data_array(name, components, tuples_, where);
+    data_array(name, components, tuples_, type, where);
   }
 
   // FIELD data: in POINT_DATA or CELL_DATA, each array is a point or cell
@@ -220,11 +302,11 @@ class LegacyReader {
       const std::string where = lines_.where();
       const std::size_t components = count("component count");
       const std::size_t tuples = count("tuple count");
-      lines_.next_token("type");
+      const std::string type(lines_.next_token("type"));
       if (attach_ == Attach::None)
-        skip_values(components * tuples, "value");
+        skip_values(components * tuples, type, "value");
       else
-        data_array(name, components, tuples, where);
+        data_array(name, components, tuples, type, where);
       if (upper(lines_.peek_token()) == "METADATA") {
         lines_.next_token("METADATA");
         lines_.skip_past_blank_line();
@@ -232,7 +314,10 @@ class LegacyReader {
     }
   }
 
+  static constexpr std::size_t kChunkValues = 1 << 16;  // values a BINARY block is read by
+
   TextLines lines_;
+  bool binary_ = false;  // BINARY: data blocks are big-endian bytes after their keyword lines
   long long major_ = 0;
   TetMesh mesh_;
   std::vector<long long> connectivity_, offsets_, types_;

@@ -7,65 +7,11 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/base64.hpp"
-#include "mesh/io/little_endian.hpp"
 #include "mesh/io/text_lines.hpp"
+#include "mesh/io/vtk_scalars.hpp"
 
 namespace tetsmooth {
 namespace {
-
-enum class Scalar { Int8, UInt8, Int16, UInt16, Int32, UInt32, Int64, UInt64, Float32, Float64 };
-
-struct ScalarInfo {
-  const char* name;
-  Scalar scalar;
-  std::size_t size;
-  bool is_float;
-};
-constexpr ScalarInfo kScalars[] = {
-    {"Int8", Scalar::Int8, 1, false},      {"UInt8", Scalar::UInt8, 1, false},   {"Int16", Scalar::Int16, 2, false},
-    {"UInt16", Scalar::UInt16, 2, false},  {"Int32", Scalar::Int32, 4, false},   {"UInt32", Scalar::UInt32, 4, false},
-    {"Int64", Scalar::Int64, 8, false},    {"UInt64", Scalar::UInt64, 8, false}, {"Float32", Scalar::Float32, 4, true},
-    {"Float64", Scalar::Float64, 8, true},
-};
-
-template <class T, class Out>
-bool convert(const unsigned char* p, std::size_t n, bool big, std::vector<Out>& out) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const T v = load_le<T>(p + i * sizeof(T), big);
-    if constexpr (std::is_same_v<T, std::uint64_t> && std::is_integral_v<Out>) {
-      if (v > static_cast<std::uint64_t>(std::numeric_limits<Out>::max())) return false;
-    }
-    out.push_back(static_cast<Out>(v));
-  }
-  return true;
-}
-
-template <class Out>
-bool convert(Scalar s, const unsigned char* p, std::size_t n, bool big, std::vector<Out>& out) {
-  switch (s) {
-    case Scalar::Int8:
-      return convert<std::int8_t>(p, n, big, out);
-    case Scalar::UInt8:
-      return convert<std::uint8_t>(p, n, big, out);
-    case Scalar::Int16:
-      return convert<std::int16_t>(p, n, big, out);
-    case Scalar::UInt16:
-      return convert<std::uint16_t>(p, n, big, out);
-    case Scalar::Int32:
-      return convert<std::int32_t>(p, n, big, out);
-    case Scalar::UInt32:
-      return convert<std::uint32_t>(p, n, big, out);
-    case Scalar::Int64:
-      return convert<std::int64_t>(p, n, big, out);
-    case Scalar::UInt64:
-      return convert<std::uint64_t>(p, n, big, out);
-    case Scalar::Float32:
-      return convert<float>(p, n, big, out);
-    case Scalar::Float64:
-      return convert<double>(p, n, big, out);
-  }
-  return false;
-}
 
 bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 
@@ -122,9 +68,7 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
                                          const char* what) const {
   const std::string at_tag = xml_.where(a.tag.begin);
   const std::string* type_name = a.tag.attribute("type");
-  const ScalarInfo* info = nullptr;
-  for (const ScalarInfo& s : kScalars)
-    if (type_name && *type_name == s.name) info = &s;
+  const VtkScalarInfo* info = type_name ? vtu_scalar(*type_name) : nullptr;
   if (!info) fail(at_tag, what, "unsupported DataArray type '" + (type_name ? *type_name : std::string()) + "'");
   if (std::is_integral_v<Out> && info->is_float)
     fail(at_tag, what, std::string("needs an integer type, found ") + info->name);
@@ -149,7 +93,7 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
   const VtuBlocks blocks(enc_, where, what);
   const unsigned char* values = blocks.values(f.data, f.size, expected * info->size,
                                               std::to_string(expected) + " " + info->name + " values", inflated);
-  if (!convert(info->scalar, values, expected, enc_.big_endian, out)) fail(where, what, "value out of range");
+  if (!decode_vtk_scalars(info->scalar, values, expected, enc_.big_endian, out)) fail(where, what, "value out of range");
   return out;
 }
 

@@ -57,10 +57,11 @@ class ForeignTags(unittest.TestCase):
     def path(self, name):
         return os.path.join(self.tmp, name)
 
-    # meshio's VTU (binary uncompressed and ASCII) and legacy VTK, whose cell
-    # data are FIELD arrays.
+    # meshio's VTU (binary uncompressed and ASCII) and legacy VTK (ASCII, and
+    # BINARY in the 5.1 and 4.2 layouts), whose cell data are FIELD arrays.
     VIA = [("vtu", dict(binary=True, compression=None)), ("ascii.vtu", dict(binary=False)),
-           ("vtk", dict(binary=False))]
+           ("vtk", dict(binary=False)), ("bin.vtk", dict(binary=True)),
+           ("bin42.vtk", dict(binary=True, fmt_version="4.2"))]
 
     def test_gmsh_physical_groups_survive_meshio_and_tetsmooth(self):
         for version in (2.2, 4.1):
@@ -73,7 +74,9 @@ class ForeignTags(unittest.TestCase):
             for suffix, kwargs in self.VIA:
                 with self.subTest(msh=version, via=suffix):
                     middle = self.path(f"box{version}.{suffix}")
-                    meshio.write(middle, mesh, **kwargs)
+                    # meshio.write does not pass fmt_version on; its VTK writer takes it.
+                    write = meshio.vtk.write if "fmt_version" in kwargs else meshio.write
+                    write(middle, mesh, **kwargs)
                     out = middle + ".msh"
                     proc = run("convert", middle, out)
                     self.assertEqual(physical_group_sizes(self.gmsh, out), expected)

@@ -1,7 +1,7 @@
 // Legacy VTK BINARY files: meshio's, in the 4.2 and 5.1 layouts (fixtures
-// made by tests/data/vtk_binary_make.py), read as the same mesh as their
-// ASCII form; every section kind with a binary form; and errors that name
-// the byte offset of the value or line at fault.
+// made by tests/data/vtk_binary_make.py); blocks longer than the reader's
+// chunks; every section kind of an unstructured grid with a binary form;
+// and errors that name the byte offset of the value or line at fault.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,21 +77,46 @@ TEST(LegacyVtkBinary, ReadsMeshiosFilesInBothLayouts) {
   }
 }
 
-TEST(LegacyVtkBinary, ReadsWhatItsAsciiFormHolds) {
-  const TetMesh binary = read_vtk_file(testing::data_path("vtk_binary51.vtk"));
-  std::ostringstream ascii;
-  write_vtk(binary, ascii, {});
-  const TetMesh back = read_text(ascii.str());
-  EXPECT_EQ(back.xyz, binary.xyz);
-  EXPECT_EQ(back.tets, binary.tets);
-  EXPECT_EQ(back.extras.tet_tags, binary.extras.tet_tags);
-  EXPECT_EQ(back.fixed, binary.fixed);
+// A mesh's points (double) and tets in the 4.2 layout (int counts and
+// nodes) or the 5.1 one (int64 offsets and connectivity).
+std::string binary_file(const TetMesh& mesh, bool v51) {
+  std::string out = (v51 ? kHeader51 : kHeader42) + "POINTS " + std::to_string(mesh.num_nodes()) + " double\n";
+  for (double x : mesh.xyz) out += be<double>({x});
+  const std::size_t tets = mesh.num_tets();
+  if (v51) {
+    out += "\nCELLS " + std::to_string(tets + 1) + " " + std::to_string(4 * tets) + "\nOFFSETS vtktypeint64\n";
+    for (std::size_t t = 0; t <= tets; ++t) out += be<std::int64_t>({static_cast<std::int64_t>(4 * t)});
+    out += "\nCONNECTIVITY vtktypeint64\n";
+    for (index_t v : mesh.tets) out += be<std::int64_t>({v});
+  } else {
+    out += "\nCELLS " + std::to_string(tets) + " " + std::to_string(5 * tets) + "\n";
+    for (std::size_t t = 0; t < tets; ++t)
+      out += be<std::int32_t>({4, mesh.tets[4 * t], mesh.tets[4 * t + 1], mesh.tets[4 * t + 2], mesh.tets[4 * t + 3]});
+  }
+  out += "\nCELL_TYPES " + std::to_string(tets) + "\n";
+  for (std::size_t t = 0; t < tets; ++t) out += be<std::int32_t>({10});
+  return out + "\n";
+}
+
+TEST(LegacyVtkBinary, BlocksLongerThanAReadChunkReadExactly) {
+  // 24,389 points (73,167 coordinates) and 131,712 tets: every block spans
+  // several of the reader's chunks of 65,536 values.
+  const TetMesh mesh = testing::cube_grid(28, 0.2);
+  ASSERT_GT(mesh.xyz.size(), 65536u);
+  for (bool v51 : {false, true}) {
+    SCOPED_TRACE(v51 ? "5.1" : "4.2");
+    const TetMesh back = read_text(binary_file(mesh, v51));
+    EXPECT_EQ(back.xyz, mesh.xyz);
+    EXPECT_EQ(back.tets, mesh.tets);
+  }
 }
 
 TEST(LegacyVtkBinary, EverySectionWithABinaryFormIsReadOrSkipped) {
-  // Float points; SCALARS with a table, COLOR_SCALARS (bytes), a standalone
-  // LOOKUP_TABLE (bytes), VECTORS, TENSORS, and FIELD arrays of 16-bit,
-  // 64-bit and float types, the fixed flags among them.
+  // Float points and dataset FIELD data; in cell data SCALARS with a table,
+  // COLOR_SCALARS (bytes), a LOOKUP_TABLE (bytes), TENSORS, TENSORS6 and
+  // METADATA; in point data VECTORS, NORMALS, TEXTURE_COORDINATES, and FIELD
+  // arrays of 16-bit, 64-bit, vtkIdType (4 bytes, as VTK writes ids) and bit
+  // (8 a byte) types, the fixed flags last.
   const std::string text =
       kHeader42 + "FIELD FieldData 1\nTIME 1 1 double\n" + be<double>({0.5}) + "\nPOINTS 5 float\n" +
       be<float>({0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}) + "\nCELLS 2 10\n" +
@@ -99,9 +124,14 @@ TEST(LegacyVtkBinary, EverySectionWithABinaryFormIsReadOrSkipped) {
       "\nCELL_DATA 2\nSCALARS tetsmooth:tag short 1\nLOOKUP_TABLE colours\n" + be<std::int16_t>({-3, 8}) +
       "\nCOLOR_SCALARS rgb 3\n" + std::string("\x01\x02\x03\x04\x05\x06", 6) + "\nLOOKUP_TABLE colours 2\n" +
       std::string(8, '\x7f') + "\nTENSORS stress float\n" + be<float>({1, 2, 3, 4, 5, 6, 7, 8, 9}) +
-      be<float>({1, 2, 3, 4, 5, 6, 7, 8, 9}) + "\nPOINT_DATA 5\nVECTORS v double\n" +
-      be<double>({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}) + "\nFIELD more 2\nids 1 5 vtktypeint64\n" +
-      be<std::int64_t>({1, 2, 3, 4, 5}) + "\ntetsmooth:fixed 1 5 unsigned_short\n" +
+      be<float>({1, 2, 3, 4, 5, 6, 7, 8, 9}) + "\nTENSORS6 strain double\n" +
+      be<double>({1, 2, 3, 4, 5, 6, 1, 2, 3, 4, 5, 6}) + "\nMETADATA\nINFORMATION 0\n\n" +
+      "POINT_DATA 5\nVECTORS v double\n" +
+      be<double>({1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15}) + "\nNORMALS n float\n" +
+      be<float>({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}) + "\nTEXTURE_COORDINATES uv 2 double\n" +
+      be<double>({0, 0, 1, 0, 0, 1, 1, 1, 0.5, 0.5}) + "\nFIELD more 4\nids 1 5 vtktypeint64\n" +
+      be<std::int64_t>({1, 2, 3, 4, 5}) + "\nvtkOriginalPointIds 1 5 vtkIdType\n" + be<std::int32_t>({0, 1, 2, 3, 4}) +
+      "\nmask 1 5 bit\n" + std::string(1, '\xa8') + "\ntetsmooth:fixed 1 5 unsigned_short\n" +
       be<std::uint16_t>({0, 1, 0, 0, 0}) + "\n";
   const TetMesh mesh = read_text(text);
   EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1}));
@@ -110,13 +140,15 @@ TEST(LegacyVtkBinary, EverySectionWithABinaryFormIsReadOrSkipped) {
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{0, 1, 0, 0, 0}));
 }
 
-TEST(LegacyVtkBinary, DataBlocksWithoutTheirClosingNewlineStillRead) {
-  // VTK and meshio end each block with '\n'; a writer that does not leaves
-  // the next keyword right after the data.
-  std::string text = points_and_cells_42();
-  const std::string cells = "\nCELLS";
-  text.erase(text.find(cells), 1);
-  expect_fixture_mesh(read_text(text));
+TEST(LegacyVtkBinary, IdArraysAreFourBytesAsVtkWritesThem) {
+  // ParaView's output carries vtkOriginalCellIds; read as 8-byte values,
+  // the reader would run into the tags after it.
+  const std::string text = points_and_cells_42() + "CELL_DATA 3\nFIELD FieldData 2\n" +
+                           "vtkOriginalCellIds 1 3 vtkIdType\n" + be<std::int32_t>({0, 1, 2}) +
+                           "\ngmsh:physical 1 3 int\n" + be<std::int32_t>({5, 6, 9}) + "\n";
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{5, 6}));
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{9}));
 }
 
 // Errors ----------------------------------------------------------------------
@@ -125,14 +157,58 @@ TEST(LegacyVtkBinaryErrors, ATruncatedBlockNamesTheFirstMissingByte) {
   const std::string whole = points_and_cells_42();
   const std::size_t data = whole.find("POINTS 5 double\n") + 16;
   const std::string cut = whole.substr(0, data + 37);  // inside the fifth coordinate
-  EXPECT_NE(vtk_error(cut).find("mesh.vtk, byte " + std::to_string(data + 37) + ": unexpected end of file in coordinate"),
-            std::string::npos)
+  EXPECT_NE(
+      vtk_error(cut).find("mesh.vtk, byte " + std::to_string(data + 37) + ": unexpected end of file in coordinate"),
+      std::string::npos)
       << vtk_error(cut);
   const std::size_t cells = whole.find("CELLS 3 12\n") + 11;
   const std::string msg = vtk_error(whole.substr(0, cells + 20));
   EXPECT_NE(msg.find("mesh.vtk, byte " + std::to_string(cells + 20) + ": unexpected end of file in CELLS data"),
             std::string::npos)
       << msg;
+}
+
+TEST(LegacyVtkBinaryErrors, ABlockOfAnotherLengthThanItsCountAndTypeSayIsCaughtWhereItEnds) {
+  // The points are doubles, declared float: the block read ends halfway,
+  // and what follows it is data, not a line break.
+  std::string text = points_and_cells_42();
+  text.replace(text.find("POINTS 5 double"), 15, "POINTS 5 float");
+  const std::size_t data = text.find("POINTS 5 float\n") + 15;
+  EXPECT_NE(vtk_error(text).find("mesh.vtk, byte " + std::to_string(data + 60) +
+                                 ": expected a line break after the coordinate data"),
+            std::string::npos)
+      << vtk_error(text);
+}
+
+TEST(LegacyVtkBinaryErrors, ArgumentsMustBeOnTheirKeywordsLine) {
+  // Read from the next line, the type would come from the data.
+  std::string text = points_and_cells_42();
+  text.replace(text.find("POINTS 5 double"), 15, "POINTS 5");
+  const std::string msg = vtk_error(text);
+  EXPECT_NE(msg.find("mesh.vtk, byte " + std::to_string(text.find("POINTS")) + ": expected point type on this line"),
+            std::string::npos)
+      << msg;
+}
+
+TEST(LegacyVtkBinaryErrors, CellsThatRunPastTheirBlockNameTheirCount) {
+  std::string text = points_and_cells_42();
+  const std::size_t cells = text.find("CELLS 3 12\n");
+  const std::size_t block = cells + 11;
+  // The third cell's count, at value 10 of the block, says 2 nodes where
+  // one value is left.
+  std::string past = text;
+  past.replace(block + 40, 4, be<std::int32_t>({2}));
+  EXPECT_NE(vtk_error(past).find("mesh.vtk, byte " + std::to_string(block + 40) +
+                                 ": cell 2 runs past the 12 values that CELLS declared"),
+            std::string::npos)
+      << vtk_error(past);
+  // Two cells' values declared for three cells: the third has no count.
+  std::string short_block = text;
+  short_block.replace(cells, 11 + 48, "CELLS 3 10\n" + be<std::int32_t>({4, 0, 1, 2, 3, 4, 1, 2, 3, 4}));
+  EXPECT_NE(vtk_error(short_block).find("mesh.vtk, byte " + std::to_string(block + 40) +
+                                        ": cell 2 runs past the 10 values that CELLS declared"),
+            std::string::npos)
+      << vtk_error(short_block);
 }
 
 TEST(LegacyVtkBinaryErrors, ANonFiniteCoordinateNamesItsByteAndPoint) {
@@ -167,9 +243,15 @@ TEST(LegacyVtkBinaryErrors, TypesThatCannotHoldTheirDataAreNamed) {
             std::string::npos)
       << vtk_error(huge);
 
-  const std::string bits = points_and_cells_42() + "POINT_DATA 5\nFIELD f 1\nflags 1 5 bit\n" + std::string(1, '\0');
+  // A bit array is skipped where it is not wanted, but it cannot hold tags.
+  const std::string bits =
+      points_and_cells_42() + "CELL_DATA 3\nFIELD f 1\ntetsmooth:tag 1 3 bit\n" + std::string(1, '\0') + "\n";
   EXPECT_NE(vtk_error(bits).find("value: data type 'bit' cannot be read from a BINARY file"), std::string::npos)
       << vtk_error(bits);
+  const std::string strings =
+      points_and_cells_42() + "CELL_DATA 3\nFIELD f 1\nnames 1 3 string\n" + std::string("a\nb\nc\n");
+  EXPECT_NE(vtk_error(strings).find("value: data type 'string' cannot be read"), std::string::npos)
+      << vtk_error(strings);
 }
 
 TEST(LegacyVtkBinaryErrors, ScalarsNeedTheirLookupTableLine) {
@@ -192,7 +274,7 @@ TEST(LegacyVtkBinaryErrors, LinesAreNamedByTheirByteOffset) {
   std::string polydata = kHeader42;
   polydata.replace(polydata.find("UNSTRUCTURED_GRID"), 17, "POLYDATA");
   EXPECT_NE(vtk_error(polydata).find("mesh.vtk, byte " + std::to_string(kHeader42.find("DATASET")) +
-                                     ": DATASET POLYDATA is not supported"),
+                                     ": DATASET 'POLYDATA' is not supported"),
             std::string::npos)
       << vtk_error(polydata);
 }

@@ -5,21 +5,13 @@
 #include <cstring>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::gmsh {
 namespace {
 
-std::string quoted(std::string_view text) {
-  constexpr std::size_t kMax = 40;  // binary junk must not flood the message
-  std::string s(text.substr(0, kMax));
-  for (char& c : s)
-    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
-  if (text.size() > kMax) s += "...";
-  return "'" + s + "'";
-}
-
 std::string end_mismatch(std::string_view end_name, std::string_view found) {
-  return "expected " + std::string(end_name) + ", found " + quoted(found) +
+  return "expected " + std::string(end_name) + ", found " + quoted_token(found) +
          " (do the counts in the section header match its data?)";
 }
 
@@ -72,7 +64,7 @@ void AsciiSource::expect_end(std::string_view end_name) {
 // of its own (and is kept verbatim as whole lines).
 void AsciiSource::alone_on_line(std::string_view name) const {
   if (taken_ < lines_.size())
-    fail("unexpected " + quoted(lines_.token(taken_, "a value")) + " after " + std::string(name.substr(0, 40)));
+    fail("unexpected " + quoted_token(lines_.token(taken_, "a value")) + " after " + std::string(name.substr(0, 40)));
 }
 
 void AsciiSource::skip_section(std::string_view end_name) {
@@ -222,7 +214,7 @@ std::uint64_t BinarySource::text_count(const char* what) {
   long long v = 0;
   if (!parse_integer(text, v) || v < 0) {
     pos_ = mark;
-    fail(std::string("expected ") + what + " as a text line, found " + quoted(text));
+    fail(std::string("expected ") + what + " as a text line, found " + quoted_token(text));
   }
   return static_cast<std::uint64_t>(v);
 }

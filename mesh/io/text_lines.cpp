@@ -14,16 +14,28 @@ std::string_view strip_plus(std::string_view token) {
   return token;
 }
 
-std::string quoted(std::string_view token) {
-  constexpr std::size_t kMax = 40;  // a binary blob must not flood the message
-  std::string s(token.substr(0, kMax));
-  if (token.size() > kMax) s += "...";
-  return "'" + s + "'";
-}
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 }  // namespace
+
+std::string quoted_token(std::string_view token) {
+  constexpr std::size_t kMax = 40;  // a binary blob must not flood the message
+  constexpr char kHex[] = "0123456789abcdef";
+  std::string s = "'";
+  for (const char c : token.substr(0, kMax)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      s += c;
+    } else {
+      s += "\\x";
+      s += kHex[byte >> 4];
+      s += kHex[byte & 15];
+    }
+  }
+  if (token.size() > kMax) s += "...";
+  return s + "'";
+}
 
 bool parse_integer(std::string_view token, long long& value) {
   token = strip_plus(token);
@@ -96,14 +108,14 @@ std::string_view TextLines::token(std::size_t i, const char* what) const {
 
 long long TextLines::to_integer(std::string_view token, const char* what) const {
   long long value = 0;
-  if (!parse_integer(token, value)) fail(std::string("expected an integer ") + what + ", found " + quoted(token));
+  if (!parse_integer(token, value)) fail(std::string("expected an integer ") + what + ", found " + quoted_token(token));
   return value;
 }
 
 double TextLines::to_real(std::string_view token, const char* what) const {
   double value = 0;
-  if (!parse_real(token, value)) fail(std::string("expected a number ") + what + ", found " + quoted(token));
-  if (!std::isfinite(value)) fail(std::string("non-finite ") + what + " " + quoted(token));
+  if (!parse_real(token, value)) fail(std::string("expected a number ") + what + ", found " + quoted_token(token));
+  if (!std::isfinite(value)) fail(std::string("non-finite ") + what + " " + quoted_token(token));
   return value;
 }
 
@@ -121,6 +133,11 @@ std::string_view TextLines::next_token(const char* what) {
   return tokens_[cursor_++];
 }
 
+std::string_view TextLines::next_token_on_line(const char* what) {
+  if (cursor_ >= tokens_.size()) fail(std::string("expected ") + what + " on this line");
+  return tokens_[cursor_++];
+}
+
 std::string_view TextLines::peek_token() { return at_end() ? std::string_view() : tokens_[cursor_]; }
 
 long long TextLines::next_integer(const char* what) { return to_integer(next_token(what), what); }
@@ -134,13 +151,28 @@ void TextLines::skip_past_blank_line() {
 
 void TextLines::read_bytes(char* out, std::size_t n, const char* what) {
   if (cursor_ < tokens_.size())
-    fail(std::string("expected the end of the line before ") + what + ", found " + quoted(tokens_[cursor_]));
+    fail(std::string("expected the end of the line before ") + what + ", found " + quoted_token(tokens_[cursor_]));
   in_.read(out, static_cast<std::streamsize>(n));
   const auto got = static_cast<std::size_t>(in_.gcount());
   if (in_.bad()) fail("read error");
   if (got < n)
     fail_at_byte(next_offset_ + got, std::string("unexpected end of file in ") + what);
   next_offset_ += n;
+}
+
+void TextLines::skip_bytes(std::size_t n, const char* what) {
+  if (cursor_ < tokens_.size())
+    fail(std::string("expected the end of the line before ") + what + ", found " + quoted_token(tokens_[cursor_]));
+  in_.ignore(static_cast<std::streamsize>(n));
+  const auto got = static_cast<std::size_t>(in_.gcount());
+  if (in_.bad()) fail("read error");
+  if (got < n) fail_at_byte(next_offset_ + got, std::string("unexpected end of file in ") + what);
+  next_offset_ += n;
+}
+
+bool TextLines::at_line_break() {
+  const int c = in_.peek();
+  return c == std::char_traits<char>::eof() || c == '\n' || c == '\r';
 }
 
 void TextLines::fail_at_byte(std::uint64_t offset, const std::string& what) const {

@@ -18,6 +18,11 @@ namespace tetsmooth {
 bool parse_integer(std::string_view token, long long& value);
 bool parse_real(std::string_view token, double& value);
 
+// A token from a file for a message: in single quotes, cut to 40
+// characters, bytes outside printable ASCII written as \xNN (a token of a
+// binary file must not put raw bytes in a message).
+std::string quoted_token(std::string_view token);
+
 class TextLines {
  public:
   // comment: a character that starts a comment running to the end of the
@@ -52,6 +57,10 @@ class TextLines {
   bool line_has_more() const { return cursor_ < tokens_.size(); }
   long long next_integer(const char* what);
   double next_real(const char* what);  // finite values only
+  // The next token of the current line, or InputError "expected <what> on
+  // this line": for arguments that must share their keyword's line, where
+  // the next line may be binary data.
+  std::string_view next_token_on_line(const char* what);
   // Drops the rest of the current line and every following line up to and
   // including the next blank one (sections terminated by an empty line).
   void skip_past_blank_line();
@@ -62,6 +71,11 @@ class TextLines {
   // after them. InputError at the first missing byte when the input ends
   // first.
   void read_bytes(char* out, std::size_t n, const char* what);
+  // read_bytes without keeping them.
+  void skip_bytes(std::size_t n, const char* what);
+  // Whether the input goes on with a line break ('\n' or '\r') or ends:
+  // what must follow a binary block before the text resumes.
+  bool at_line_break();
   // Byte offset in the input of the next byte not yet read.
   std::uint64_t next_offset() const { return next_offset_; }
   // From now on where() names the byte offset at which the current line

@@ -20,10 +20,13 @@
 // BINARY files (meshio's default for .vtk) hold each data block as raw
 // big-endian values of the type its keyword line names (vtk_scalars.hpp),
 // right after that line; CELLS of versions up to 4.2 and CELL_TYPES as int,
-// LOOKUP_TABLE and COLOR_SCALARS values as unsigned char. bit and string
-// arrays are refused, as is SCALARS without its LOOKUP_TABLE line. Errors in
-// a BINARY file name the byte offset of the line or value at fault instead
-// of a line number.
+// LOOKUP_TABLE and COLOR_SCALARS values as unsigned char. A keyword's
+// arguments must be on its line, and a line break must follow each block (a
+// block that does not end there was not as long as its count and type say).
+// bit arrays are skipped where they are not wanted; string arrays, and
+// SCALARS without its LOOKUP_TABLE line, are refused. Errors in a BINARY file
+// name the byte offset of the line or value at fault instead of a line
+// number.
 #include <istream>
 #include <ostream>
 #include <string>

@@ -77,20 +77,33 @@ class LegacyReader {
     long long major = 0;
     const std::string_view version = lines_.token(4, "version");
     if (!parse_integer(version.substr(0, version.find('.')), major))
-      lines_.fail("bad version '" + std::string(version) + "'");
+      lines_.fail("bad version " + quoted_token(version));
     major_ = major;
     if (!lines_.next_raw_line()) lines_.fail("unexpected end of file, expected the title line");
     lines_.require_line("ASCII or BINARY");
     const std::string mode = upper(lines_.token(0, "ASCII or BINARY"));
-    if (mode != "ASCII" && mode != "BINARY") lines_.fail("expected ASCII or BINARY, found '" + mode + "'");
+    if (mode != "ASCII" && mode != "BINARY") lines_.fail("expected ASCII or BINARY, found " + quoted_token(mode));
     binary_ = mode == "BINARY";
     if (binary_) lines_.locate_by_byte();
     if (upper(lines_.next_token("DATASET")) != "DATASET") lines_.fail("expected DATASET");
-    const std::string type = upper(lines_.next_token("the dataset type"));
-    if (type != "UNSTRUCTURED_GRID") lines_.fail("DATASET " + type + " is not supported, only UNSTRUCTURED_GRID");
+    const std::string type = upper(arg("the dataset type"));
+    if (type != "UNSTRUCTURED_GRID")
+      lines_.fail("DATASET " + quoted_token(type) + " is not supported, only UNSTRUCTURED_GRID");
   }
 
-  std::size_t count(const char* what) { return checked_count(lines_.next_integer(what), what); }
+  // An argument of a keyword line. In a BINARY file it must be on that line,
+  // since the next line may be data.
+  std::string_view arg(const char* what) {
+    return binary_ ? lines_.next_token_on_line(what) : lines_.next_token(what);
+  }
+
+  std::size_t count(const char* what) {
+    const std::string_view token = arg(what);
+    long long n = 0;
+    if (!parse_integer(token, n))
+      lines_.fail(std::string("expected an integer ") + what + ", found " + quoted_token(token));
+    return checked_count(n, what);
+  }
 
   std::size_t checked_count(long long n, const char* what) const {
     if (n < 0 || n > std::numeric_limits<std::int32_t>::max())
@@ -102,23 +115,34 @@ class LegacyReader {
   const VtkScalarInfo& binary_type(std::string_view type, const char* what) const {
     const VtkScalarInfo* info = legacy_vtk_scalar(type);
     if (!info)
-      lines_.fail(std::string(what) + ": data type '" + std::string(type.substr(0, 40)) +
-                  "' cannot be read from a BINARY file (only numeric types, not bit or string)");
+      lines_.fail(std::string(what) + ": data type " + quoted_token(type) +
+                  " cannot be read from a BINARY file (only numeric types; bit and string arrays only where "
+                  "they are skipped, or not at all)");
     return *info;
+  }
+
+  // What must follow a BINARY block of n values: a line break, as VTK and
+  // meshio write it. Anything else means the block was not as long as its
+  // count and type say (a wrong type size, a wrong count), and the text read
+  // next would be data: it fails here, at the byte after the block.
+  void end_of_block(std::size_t n, const char* what) {
+    if (n > 0 && !lines_.at_line_break())
+      lines_.fail_at_byte(lines_.next_offset(), std::string("expected a line break after the ") + what +
+                                                    " data (does the data match its count and type?)");
   }
 
   // The n values of the BINARY block after the current line, of legacy type
   // `type`, big-endian as the format has them. Read a chunk at a time, so
   // that a count the file cannot hold ends at the end of the file, not in an
-  // allocation. A value that does not fit Out (an integer type asked for, a
-  // float type found; an unsigned value past long long) fails at its byte.
+  // allocation. A float type where Out is an integer fails at the keyword's
+  // line; an unsigned value past long long at its byte.
   template <class Out>
   std::vector<Out> binary_values(std::size_t n, std::string_view type, const char* what) {
     const VtkScalarInfo& info = binary_type(type, what);
     if (std::is_integral_v<Out> && info.is_float)
-      lines_.fail(std::string(what) + ": expected an integer data type, found '" + std::string(type) + "'");
+      lines_.fail(std::string(what) + ": expected an integer data type, found " + quoted_token(type));
     std::vector<Out> out;
-    out.reserve(std::min<std::size_t>(n, kChunkValues));
+    out.reserve(std::min(n, kReserveValues));
     std::vector<unsigned char> chunk;
     const std::uint64_t begin = lines_.next_offset();
     for (std::size_t done = 0; done < n;) {
@@ -129,30 +153,33 @@ class LegacyReader {
         lines_.fail_at_byte(begin + out.size() * info.size, std::string(what) + ": value out of range");
       done += k;
     }
+    end_of_block(n, what);
     return out;
   }
 
-  // Skips n values of legacy type `type`: tokens, or a BINARY block's bytes.
+  // Skips n values of legacy type `type`: tokens, or a BINARY block's bytes
+  // (bit arrays packed eight values a byte).
   void skip_values(std::size_t n, std::string_view type, const char* what) {
     if (!binary_) {
       for (std::size_t i = 0; i < n; ++i) lines_.next_token(what);
       return;
     }
-    const std::size_t size = binary_type(type, what).size;
-    std::vector<char> chunk;
-    for (std::size_t done = 0; done < n;) {
-      const std::size_t k = std::min(n - done, kChunkValues);
-      chunk.resize(k * size);
-      lines_.read_bytes(chunk.data(), chunk.size(), what);
+    const bool bits = upper(type) == "BIT";
+    const std::size_t size = bits ? 1 : binary_type(type, what).size;
+    const std::size_t values = bits ? n / 8 + (n % 8 != 0) : n;
+    for (std::size_t done = 0; done < values;) {  // a chunk at a time: values * size may not fit size_t
+      const std::size_t k = std::min(values - done, kChunkValues);
+      lines_.skip_bytes(k * size, what);
       done += k;
     }
+    end_of_block(n, what);
   }
 
   // n integers of legacy type `type`: tokens, or a BINARY block.
   std::vector<long long> integers(std::size_t n, std::string_view type, const char* what) {
     if (binary_) return binary_values<long long>(n, type, what);
     std::vector<long long> v;
-    v.reserve(std::min<std::size_t>(n, 1 << 20));  // a lying count ends at end of file, not in allocation
+    v.reserve(std::min(n, kReserveValues));  // a lying count ends at end of file, not in allocation
     for (std::size_t i = 0; i < n; ++i) v.push_back(lines_.next_integer(what));
     return v;
   }
@@ -175,15 +202,15 @@ class LegacyReader {
     if (kw == "METADATA") return lines_.skip_past_blank_line();
     if (kw == "LOOKUP_TABLE") {
       // RGBA entries: reals in ASCII, bytes in BINARY.
-      lines_.next_token("table name");
+      arg("table name");
       return skip_values(4 * count("table size"), "unsigned_char", "table value");
     }
-    if (attach_ == Attach::None) lines_.fail("unknown or misplaced keyword '" + kw + "'");
+    if (attach_ == Attach::None) lines_.fail("unknown or misplaced keyword " + quoted_token(kw));
     if (kw == "SCALARS") return scalars();
     const bool known = kw == "VECTORS" || kw == "NORMALS" || kw == "TENSORS" || kw == "TENSORS6" ||
                        kw == "TEXTURE_COORDINATES" || kw == "COLOR_SCALARS";
-    if (!known) lines_.fail("unknown keyword '" + kw + "'");
-    const std::string name = decode_name(lines_.next_token("array name"));
+    if (!known) lines_.fail("unknown keyword " + quoted_token(kw));
+    const std::string name = decode_name(arg("array name"));
     const std::string where = lines_.where();
     const std::size_t per_tuple = kw == "VECTORS" || kw == "NORMALS" ? 3
                                   : kw == "TENSORS"                  ? 9
@@ -191,7 +218,7 @@ class LegacyReader {
                                   : kw == "TEXTURE_COORDINATES"      ? count("dimension")
                                                                      : count("component count");
     // COLOR_SCALARS names no type: reals in ASCII, bytes in BINARY.
-    const std::string type(kw == "COLOR_SCALARS" ? "unsigned_char" : lines_.next_token("type"));
+    const std::string type(kw == "COLOR_SCALARS" ? "unsigned_char" : arg("type"));
     data_array(name, per_tuple, tuples_, type, where);
   }
 
@@ -204,6 +231,7 @@ class LegacyReader {
     arrays_.push_back(VtkArrayDecl{attach_ == Attach::Cells, name, components});
     Kept& kept = kept_.emplace_back(Kept{where, {}});
     if (!vtk_array_wanted(arrays_.back())) return skip_values(components * tuples, type, "value");
+    // vtk_array_wanted takes one-component arrays only: a value a tuple.
     if (binary_) {
       kept.values = binary_values<double>(tuples, type, "value");
       return;
@@ -212,14 +240,14 @@ class LegacyReader {
     for (std::size_t i = 0; i < tuples; ++i) {
       const std::string_view token = lines_.next_token("value");
       double v = 0;
-      if (!parse_real(token, v)) lines_.fail(name + ": bad value '" + std::string(token.substr(0, 40)) + "'");
+      if (!parse_real(token, v)) lines_.fail(name + ": bad value " + quoted_token(token));
       kept.values.push_back(v);
     }
   }
 
   void points() {
     const std::size_t n = count("point count");
-    const std::string type(lines_.next_token("point type"));
+    const std::string type(arg("point type"));
     have_points_ = true;
     if (binary_) {
       const std::uint64_t begin = lines_.next_offset();
@@ -242,30 +270,34 @@ class LegacyReader {
     if (major_ >= 5) {
       // 5.x: "CELLS <#offsets> <#connectivity>", then OFFSETS and CONNECTIVITY arrays.
       if (upper(lines_.next_token("OFFSETS")) != "OFFSETS") lines_.fail("expected OFFSETS");
-      const std::string offset_type(lines_.next_token("offset type"));
+      const std::string offset_type(arg("offset type"));
       offsets_ = integers(first, offset_type, "offset");
       if (upper(lines_.next_token("CONNECTIVITY")) != "CONNECTIVITY") lines_.fail("expected CONNECTIVITY");
-      const std::string connectivity_type(lines_.next_token("connectivity type"));
+      const std::string connectivity_type(arg("connectivity type"));
       connectivity_ = integers(second, connectivity_type, "node index");
       if (offsets_.empty()) lines_.fail("OFFSETS needs at least the leading 0");
       return;
     }
     // Up to 4.2: "CELLS <#cells> <size>", each cell its node count then its
     // nodes, as tokens or (BINARY) one block of `second` ints.
+    const std::uint64_t block_begin = lines_.next_offset();
     std::vector<long long> block;
     if (binary_) block = binary_values<long long>(second, "int", "CELLS data");
     std::size_t taken = 0;  // values of the block taken
     const auto next = [&](const char* what) { return binary_ ? block[taken++] : lines_.next_integer(what); };
+    // In BINARY at the cell's count in the block (4 bytes a value).
+    const auto fail_cell = [&](std::size_t c) {
+      const std::string what =
+          "cell " + std::to_string(c) + " runs past the " + std::to_string(second) + " values that CELLS declared";
+      if (binary_) lines_.fail_at_byte(block_begin + 4 * (connectivity_.size() + c), what);
+      lines_.fail(what);
+    };
     offsets_.push_back(0);
     connectivity_.clear();
     for (std::size_t c = 0; c < first; ++c) {
-      if (connectivity_.size() + c >= second)
-        lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) +
-                    " values that CELLS declared");
+      if (connectivity_.size() + c >= second) fail_cell(c);
       const std::size_t k = checked_count(next("cell node count"), "cell node count");
-      if (connectivity_.size() + c + 1 + k > second)
-        lines_.fail("cell " + std::to_string(c) + " runs past the " + std::to_string(second) +
-                    " values that CELLS declared");
+      if (connectivity_.size() + c + 1 + k > second) fail_cell(c);
       for (std::size_t i = 0; i < k; ++i) connectivity_.push_back(next("node index"));
       offsets_.push_back(static_cast<long long>(connectivity_.size()));
     }
@@ -275,15 +307,15 @@ class LegacyReader {
   }
 
   void scalars() {
-    const std::string name = decode_name(lines_.next_token("array name"));
+    const std::string name = decode_name(arg("array name"));
     const std::string where = lines_.where();
-    const std::string type(lines_.next_token("type"));
+    const std::string type(arg("type"));
     const std::size_t components = lines_.line_has_more() ? count("component count") : 1;
     // Optional in ASCII; in BINARY the line must be there, since without it
     // the look for it has read into the data.
     if (upper(lines_.peek_token()) == "LOOKUP_TABLE") {
       lines_.next_token("LOOKUP_TABLE");
-      lines_.next_token("table name");
+      arg("table name");
     } else if (binary_) {
       lines_.fail("SCALARS " + name + ": a BINARY file needs the LOOKUP_TABLE line before the values");
     }
@@ -294,7 +326,7 @@ class LegacyReader {
   // data array (meshio and VTK write their arrays so); before them, data of
   // the whole dataset (TIME, ...), which is skipped.
   void field() {
-    lines_.next_token("field name");
+    arg("field name");
     const std::size_t arrays = count("array count");
     for (std::size_t a = 0; a < arrays; ++a) {
       const std::string name = decode_name(lines_.next_token("array name"));
@@ -302,7 +334,7 @@ class LegacyReader {
       const std::string where = lines_.where();
       const std::size_t components = count("component count");
       const std::size_t tuples = count("tuple count");
-      const std::string type(lines_.next_token("type"));
+      const std::string type(arg("type"));
       if (attach_ == Attach::None)
         skip_values(components * tuples, type, "value");
       else
@@ -314,7 +346,8 @@ class LegacyReader {
     }
   }
 
-  static constexpr std::size_t kChunkValues = 1 << 16;  // values a BINARY block is read by
+  static constexpr std::size_t kChunkValues = 1 << 16;    // values a BINARY block is read by
+  static constexpr std::size_t kReserveValues = 1 << 20;  // the most reserved before the values are there
 
   TextLines lines_;
   bool binary_ = false;  // BINARY: data blocks are big-endian bytes after their keyword lines

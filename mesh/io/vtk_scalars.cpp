@@ -39,7 +39,7 @@ constexpr LegacyName kLegacyNames[] = {
     {"vtktypeuint16", VtkScalar::UInt16},  {"vtktypeint32", VtkScalar::Int32},
     {"vtktypeuint32", VtkScalar::UInt32},  {"vtktypeint64", VtkScalar::Int64},
     {"vtktypeuint64", VtkScalar::UInt64},  {"vtktypefloat32", VtkScalar::Float32},
-    {"vtktypefloat64", VtkScalar::Float64}, {"vtkidtype", VtkScalar::Int64},
+    {"vtktypefloat64", VtkScalar::Float64}, {"vtkidtype", VtkScalar::Int32},
 };
 
 bool equal_lower(std::string_view text, std::string_view lower) {

@@ -26,9 +26,11 @@ const VtkScalarInfo* vtu_scalar(std::string_view name);
 // The type of a legacy VTK data type name, in any letter case: unsigned_char,
 // char, signed_char, unsigned_short, short, unsigned_int, int, unsigned_long,
 // long, float, double, the vtktype* names of version 5 files (vtktypeint8 ...
-// vtktypeuint64, vtktypefloat32, vtktypefloat64) and vtkidtype. long,
-// unsigned_long and vtkidtype are 8 bytes, as VTK writes them on 64-bit Linux
-// and macOS. nullptr for another name ("bit", "string", ...).
+// vtktypeuint64, vtktypefloat32, vtktypefloat64) and vtkIdType. long and
+// unsigned_long are 8 bytes, as VTK writes them on 64-bit Linux and macOS;
+// vtkIdType 4, since VTK's legacy writer writes ids as int whatever its id
+// size (vtkOriginalPointIds in ParaView's output). nullptr for another name
+// ("bit", "string", ...).
 const VtkScalarInfo* legacy_vtk_scalar(std::string_view name);
 
 // Appends the n values of type s stored at p (most significant byte first

@@ -93,7 +93,8 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
   const VtuBlocks blocks(enc_, where, what);
   const unsigned char* values = blocks.values(f.data, f.size, expected * info->size,
                                               std::to_string(expected) + " " + info->name + " values", inflated);
-  if (!decode_vtk_scalars(info->scalar, values, expected, enc_.big_endian, out)) fail(where, what, "value out of range");
+  if (!decode_vtk_scalars(info->scalar, values, expected, enc_.big_endian, out))
+    fail(where, what, "value out of range");
   return out;
 }
 

@@ -326,6 +326,22 @@ class ExitCodes(CliTestCase):
         cut = self.write("cut_bin.msh", data[: int(len(data) * 0.7)], mode="wb")
         self.assert_one_error_line(run("quality", cut, check=False), EXIT_INPUT, cut)
 
+    def test_truncated_binary_legacy_vtk(self):
+        # meshio writes legacy VTK as BINARY; a cut one names the byte where
+        # the data ran out, and nothing is written.
+        import meshio
+
+        full = self.path("full_bin.vtk")
+        meshio.write(full, meshio.read(self.good), binary=True)
+        self.assertEqual(run("quality", full, check=False).returncode, 0)
+        with open(full, "rb") as f:
+            data = f.read()
+        cut = self.write("cut_bin.vtk", data[: int(len(data) * 0.7)], mode="wb")
+        proc = run("smooth", cut, "-o", self.path("never_bin.vtu"), check=False)
+        self.assert_one_error_line(proc, EXIT_INPUT, cut)
+        self.assertIn(f"{cut}, byte {int(len(data) * 0.7)}: unexpected end of file", proc.stderr)
+        self.assertFalse(os.path.exists(self.path("never_bin.vtu")))
+
     def test_nan_coordinate(self):
         lines = self.good_text.splitlines()
         at = next(i for i, l in enumerate(lines) if l.strip() == "Vertices") + 2

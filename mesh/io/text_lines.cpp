@@ -14,7 +14,6 @@ std::string_view strip_plus(std::string_view token) {
   return token;
 }
 
-
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 }  // namespace
@@ -149,21 +148,16 @@ void TextLines::skip_past_blank_line() {
   }
 }
 
-void TextLines::read_bytes(char* out, std::size_t n, const char* what) {
-  if (cursor_ < tokens_.size())
-    fail(std::string("expected the end of the line before ") + what + ", found " + quoted_token(tokens_[cursor_]));
-  in_.read(out, static_cast<std::streamsize>(n));
-  const auto got = static_cast<std::size_t>(in_.gcount());
-  if (in_.bad()) fail("read error");
-  if (got < n)
-    fail_at_byte(next_offset_ + got, std::string("unexpected end of file in ") + what);
-  next_offset_ += n;
-}
+void TextLines::read_bytes(char* out, std::size_t n, const char* what) { take_bytes(out, n, what); }
+void TextLines::skip_bytes(std::size_t n, const char* what) { take_bytes(nullptr, n, what); }
 
-void TextLines::skip_bytes(std::size_t n, const char* what) {
+void TextLines::take_bytes(char* out, std::size_t n, const char* what) {
   if (cursor_ < tokens_.size())
     fail(std::string("expected the end of the line before ") + what + ", found " + quoted_token(tokens_[cursor_]));
-  in_.ignore(static_cast<std::streamsize>(n));
+  if (out)
+    in_.read(out, static_cast<std::streamsize>(n));
+  else
+    in_.ignore(static_cast<std::streamsize>(n));
   const auto got = static_cast<std::size_t>(in_.gcount());
   if (in_.bad()) fail("read error");
   if (got < n) fail_at_byte(next_offset_ + got, std::string("unexpected end of file in ") + what);

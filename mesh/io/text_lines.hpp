@@ -92,6 +92,7 @@ class TextLines {
 
  private:
   bool read_raw_line();
+  void take_bytes(char* out, std::size_t n, const char* what);  // read_bytes, or skip_bytes without `out`
   long long to_integer(std::string_view token, const char* what) const;
   double to_real(std::string_view token, const char* what) const;
 

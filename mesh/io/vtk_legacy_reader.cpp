@@ -116,8 +116,8 @@ class LegacyReader {
     const VtkScalarInfo* info = legacy_vtk_scalar(type);
     if (!info)
       lines_.fail(std::string(what) + ": data type " + quoted_token(type) +
-                  " cannot be read from a BINARY file (only numeric types; bit and string arrays only where "
-                  "they are skipped, or not at all)");
+                  " cannot be read from a BINARY file (numeric types only; bit arrays are skipped where not "
+                  "needed)");
     return *info;
   }
 

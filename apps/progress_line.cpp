@@ -1,26 +1,40 @@
 #include "apps/progress_line.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "apps/report_text.hpp"
 
 namespace tetsmooth::cli {
 
 ProgressLine::ProgressLine(std::ostream& os, bool enabled, int max_sweeps, Clock::duration delay,
-                           Clock::duration interval)
-    : os_(os), enabled_(enabled), max_sweeps_(max_sweeps), start_(Clock::now()), delay_(delay), interval_(interval) {}
+                           Clock::duration interval, Now now)
+    : os_(os),
+      enabled_(enabled),
+      max_sweeps_(max_sweeps),
+      now_(std::move(now)),
+      start_(now_()),
+      delay_(delay),
+      interval_(interval) {}
 
 void ProgressLine::update(const SweepProgress& progress) {
-  if (!enabled_) return;
-  const Clock::time_point now = Clock::now();
-  if (now - start_ < delay_ || (drawn_width_ > 0 && now - last_draw_ < interval_)) return;
-  last_draw_ = now;
-  char displacement[32];
-  std::snprintf(displacement, sizeof displacement, "%.3g", progress.max_displacement);
+  if (!enabled_ || !progress.quality) return;
+  const Clock::time_point now = now_();
+  if (now - start_ < delay_) return;
+  if (drawn_width_ > 0 && now - last_draw_ < std::max(interval_, kPacing * quality_cost_)) return;
+  const MinMeanQuality q = progress.quality();
+  last_draw_ = now_();
+  quality_cost_ = last_draw_ - now;
+  char numbers[96];
+  std::snprintf(numbers, sizeof numbers, " up to %.3g  q min %.3g  mean %.3g", progress.max_displacement, q.min,
+                q.mean);
+  // Terse: the line must fit 80 columns, or a terminal wraps it and '\r' no
+  // longer returns to its start. "moved N up to d": N accepted moves, the
+  // farthest d (mesh units).
   const std::string line = "  sweep " + std::to_string(progress.sweep) + "/" + std::to_string(max_sweeps_) +
-                           "  accepted moves " + with_thousands(static_cast<std::size_t>(progress.accepted)) +
-                           "  max displacement " + displacement;
+                           "  moved " + with_thousands(static_cast<std::size_t>(progress.accepted)) + numbers;
   // Pad over the previous, possibly longer, line instead of relying on
   // terminal escape codes.
   const std::size_t pad = drawn_width_ > line.size() ? drawn_width_ - line.size() : 0;

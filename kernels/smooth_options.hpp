@@ -32,6 +32,12 @@ struct SweepProgress {
   int sweep = 0;
   std::int64_t accepted = 0;
   double max_displacement = 0;
+  // The mesh's smallest and mean radius ratio as this sweep left it. A pass
+  // over every tet, so a function that a display calls only when it will
+  // show the values, and only during the callback. Empty where the backend
+  // no longer holds that sweep's positions: a CUDA loop reports the sweeps
+  // since its last host check together, and gives it to the last of them.
+  std::function<MinMeanQuality()> quality;
 };
 
 struct SmoothOptions {
@@ -63,7 +69,8 @@ struct SmoothOptions {
   // outside the timed ones. The other strategies and the CPU ignore it.
   bool time_phases = false;
   // Called after each sweep when set (CPU: every sweep; CUDA: at each host
-  // check, for SingleBlock and Coloured once the loop has ended).
+  // check, for SingleBlock and Coloured once the loop has ended). Its time
+  // counts in smoothing_ms, quality passes included.
   std::function<void(const SweepProgress&)> progress;
 };
 

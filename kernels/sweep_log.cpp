@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "mesh/errors.hpp"
 
@@ -34,12 +35,12 @@ SweepLog::SweepLog(SmoothResult& result, const SmoothOptions& opt, double tol_ab
   if (opt.max_iterations == 0) result_.stop = StopReason::MaxIterations;
 }
 
-void SweepLog::record(std::int64_t accepted, double max_displacement) {
+void SweepLog::record(std::int64_t accepted, double max_displacement, std::function<MinMeanQuality()> quality) {
   ++result_.sweeps;
   result_.accepted_per_sweep.push_back(accepted);
   result_.max_displacement_per_sweep.push_back(max_displacement);
   result_.stop = to_stop_reason(sweep_verdict(result_.sweeps, accepted, max_displacement, tol_abs_, opt_.max_iterations));
-  if (opt_.progress) opt_.progress(SweepProgress{result_.sweeps, accepted, max_displacement});
+  if (opt_.progress) opt_.progress(SweepProgress{result_.sweeps, accepted, max_displacement, std::move(quality)});
 }
 
 }  // namespace tetsmooth

@@ -2,6 +2,8 @@
 // Bookkeeping shared by every backend's sweep loop: records each sweep,
 // applies the one stopping rule (node_update.hpp: sweep_verdict) and calls
 // the progress callback.
+#include <functional>
+
 #include "kernels/node_update.hpp"
 #include "kernels/smooth_options.hpp"
 
@@ -16,7 +18,8 @@ class SweepLog {
  public:
   SweepLog(SmoothResult& result, const SmoothOptions& opt, double tol_abs);
   bool wants_another_sweep() const { return result_.stop == StopReason::NotStarted; }
-  void record(std::int64_t accepted, double max_displacement);
+  // `quality` is SweepProgress::quality for this sweep.
+  void record(std::int64_t accepted, double max_displacement, std::function<MinMeanQuality()> quality);
 
  private:
   SmoothResult& result_;

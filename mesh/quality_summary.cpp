@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 #include "mesh/tet_quality.hpp"
 
 namespace tetsmooth {
@@ -31,6 +33,24 @@ std::vector<double> tet_qualities(const TetMesh& mesh) {
     q[t] = radius_ratio(c.v[0], c.v[1], c.v[2], c.v[3]);
   }
   return q;
+}
+
+MinMeanQuality min_mean_quality(const TetMesh& mesh, int threads) {
+  MinMeanQuality r;
+  const std::size_t tets = mesh.num_tets();
+  if (tets == 0) return r;
+  double lowest = 1, sum = 0;
+#pragma omp parallel for num_threads(threads > 0 ? threads : omp_get_max_threads()) schedule(static) \
+    reduction(min : lowest) reduction(+ : sum)
+  for (std::size_t t = 0; t < tets; ++t) {
+    const Corners c = corners(mesh, t);
+    const double q = radius_ratio(c.v[0], c.v[1], c.v[2], c.v[3]);
+    lowest = std::min(lowest, q);
+    sum += q;
+  }
+  r.min = lowest;
+  r.mean = sum / static_cast<double>(tets);
+  return r;
 }
 
 QualitySummary summarize_quality(const TetMesh& mesh, const std::vector<std::uint8_t>& movable) {

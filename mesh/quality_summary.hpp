@@ -30,6 +30,17 @@ struct QualitySummary {
 // Radius ratio per tet.
 std::vector<double> tet_qualities(const TetMesh& mesh);
 
+// The smallest and the mean radius ratio over all tets, as summarize_quality
+// counts them (0 and 0 for a mesh without tets), without the rest of its
+// work: what a progress display shows while a smoother runs.
+struct MinMeanQuality {
+  double min = 0, mean = 0;
+};
+
+// Over `threads` OpenMP threads (0: OpenMP's default); the mean's sum is
+// taken in double, its rounding depending on the thread count.
+MinMeanQuality min_mean_quality(const TetMesh& mesh, int threads = 0);
+
 // `movable` may be empty (then min_movable is the overall min).
 QualitySummary summarize_quality(const TetMesh& mesh, const std::vector<std::uint8_t>& movable = {});
 

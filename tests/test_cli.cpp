@@ -837,20 +837,87 @@ TEST(CliPieces, ThousandsSeparators) {
   EXPECT_EQ(with_thousands(1234567), "1,234,567");
 }
 
+// A progress report whose quality pass returns `q` and takes `cost` of
+// `clock` (a test's own time), counting its calls.
+SweepProgress report_with_quality(int sweep, std::int64_t accepted, MinMeanQuality q,
+                                  ProgressLine::Clock::time_point& clock, ProgressLine::Clock::duration cost,
+                                  int& calls) {
+  SweepProgress p{sweep, accepted, 0.5, {}};
+  p.quality = [q, &clock, cost, &calls] {
+    ++calls;
+    clock += cost;
+    return q;
+  };
+  return p;
+}
+
 TEST(CliPieces, ProgressLineRedrawsInPlaceAndErasesItself) {
+  using std::chrono::milliseconds;
+  ProgressLine::Clock::time_point clock{};
+  const auto now = [&clock] { return clock; };
+  int calls = 0;
   std::ostringstream os;
-  ProgressLine line(os, true, 10, std::chrono::milliseconds(0), std::chrono::milliseconds(0));
-  line.update({3, 1234, 0.5});
-  EXPECT_EQ(os.str().rfind("\r  sweep 3/10  accepted moves 1,234", 0), 0u) << os.str();
+  ProgressLine line(os, true, 10, milliseconds(0), milliseconds(0), now);
+  line.update(report_with_quality(3, 1234, {0.0123456, 0.61234}, clock, milliseconds(0), calls));
+  EXPECT_EQ(os.str(), "\r  sweep 3/10  moved 1,234 up to 0.5  q min 0.0123  mean 0.612");
+  EXPECT_EQ(calls, 1);
+  // The line fits 80 columns with the largest numbers a 10M-node run shows.
+  std::ostringstream wide;
+  ProgressLine big(wide, true, 100, milliseconds(0), milliseconds(0), now);
+  SweepProgress p = report_with_quality(100, 12345678, {-0.0123456, 0.61234}, clock, milliseconds(0), calls);
+  p.max_displacement = 1.23456e-05;
+  big.update(p);
+  EXPECT_LT(wide.str().size(), 1u + 80u) << wide.str();
   line.finish();
   EXPECT_EQ(os.str().back(), '\r');
   EXPECT_EQ(os.str().find('\n'), std::string::npos);
 
   std::ostringstream silent;
-  ProgressLine off(silent, false, 10, std::chrono::milliseconds(0), std::chrono::milliseconds(0));
-  off.update({1, 1, 1.0});
+  ProgressLine off(silent, false, 10, milliseconds(0), milliseconds(0), now);
+  off.update(report_with_quality(1, 1, {0.5, 0.5}, clock, milliseconds(0), calls));
   off.finish();
   EXPECT_TRUE(silent.str().empty());
+  EXPECT_EQ(calls, 2) << "a disabled line runs no quality pass";
+}
+
+TEST(CliPieces, ProgressLineSkipsReportsWithoutQuality) {
+  using std::chrono::milliseconds;
+  ProgressLine::Clock::time_point clock{};
+  std::ostringstream os;
+  ProgressLine line(os, true, 10, milliseconds(0), milliseconds(0), [&clock] { return clock; });
+  line.update(SweepProgress{1, 5, 0.25, {}});  // a CUDA report before the last of its check
+  EXPECT_TRUE(os.str().empty());
+  int calls = 0;
+  line.update(report_with_quality(2, 7, {0.25, 0.5}, clock, milliseconds(0), calls));
+  EXPECT_EQ(os.str().rfind("\r  sweep 2/10  moved 7 up to", 0), 0u) << os.str();
+}
+
+TEST(CliPieces, ProgressLineWaitsTheDelayAndPacesItsQualityPasses) {
+  using std::chrono::milliseconds;
+  ProgressLine::Clock::time_point clock{};
+  std::ostringstream os;
+  ProgressLine line(os, true, 100, milliseconds(500), milliseconds(100), [&clock] { return clock; });
+  int calls = 0;
+  const MinMeanQuality q{0.25, 0.5};
+  line.update(report_with_quality(1, 1, q, clock, milliseconds(40), calls));
+  EXPECT_EQ(calls, 0) << "nothing before the delay";
+  clock += milliseconds(500);
+  line.update(report_with_quality(2, 1, q, clock, milliseconds(40), calls));
+  EXPECT_EQ(calls, 1);
+  // That pass took 40 ms, so the next waits 800 ms, not the 100 ms interval.
+  static_assert(ProgressLine::kPacing == 20);
+  clock += milliseconds(700);
+  line.update(report_with_quality(3, 1, q, clock, milliseconds(40), calls));
+  EXPECT_EQ(calls, 1);
+  clock += milliseconds(100);
+  line.update(report_with_quality(4, 1, q, clock, milliseconds(1), calls));
+  EXPECT_EQ(calls, 2);
+  EXPECT_NE(os.str().find("sweep 4/100"), std::string::npos) << os.str();
+  EXPECT_EQ(os.str().find("sweep 3/100"), std::string::npos) << os.str();
+  // A cheap pass brings the interval back.
+  clock += milliseconds(100);
+  line.update(report_with_quality(5, 1, q, clock, milliseconds(1), calls));
+  EXPECT_EQ(calls, 3);
 }
 
 TEST_F(CliFiles, OutputCheckRejectsDirectoriesAndMissingParents) {

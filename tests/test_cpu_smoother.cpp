@@ -169,6 +169,38 @@ TEST(CpuSmoother, StoppingRule) {
   EXPECT_EQ(calls, r.sweeps);
 }
 
+// Each sweep's progress report gives the quality of the mesh as that sweep
+// left it: the summary of a run stopped there, for both forms (Form A swaps
+// its buffers before reporting) and with threads.
+TEST(CpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
+  const TetMesh input = testing::random_delaunay(900, 6);
+  for (Form form : {Form::A, Form::B})
+    for (int threads : {1, 2}) {
+      SmoothOptions o = options(Method::Adaptive, form, threads);
+      o.max_iterations = 4;
+      o.tolerance = 0;
+      std::vector<MinMeanQuality> reported;
+      o.progress = [&](const SweepProgress& p) {
+        ASSERT_TRUE(p.quality);
+        reported.push_back(p.quality());
+      };
+      TetMesh m = input;
+      const SmoothResult r = smooth_cpu(m, o);
+      ASSERT_EQ(static_cast<int>(reported.size()), r.sweeps);
+      ASSERT_GE(r.sweeps, 2);
+      EXPECT_GT(reported.back().mean, r.before.mean);
+      o.progress = nullptr;
+      for (int k : {1, r.sweeps}) {
+        TetMesh stopped = input;
+        o.max_iterations = k;
+        const SmoothResult rk = smooth_cpu(stopped, o);
+        const MinMeanQuality& q = reported[static_cast<std::size_t>(k - 1)];
+        EXPECT_EQ(q.min, rk.after.min) << "form " << to_string(form) << ", " << threads << " threads, sweep " << k;
+        EXPECT_NEAR(q.mean, rk.after.mean, 1e-14) << "form " << to_string(form) << ", sweep " << k;
+      }
+    }
+}
+
 TEST(CpuSmoother, RejectsBadOptions) {
   TetMesh m = testing::regular_tet();
   SmoothOptions o;

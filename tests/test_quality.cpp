@@ -224,5 +224,19 @@ TEST(TetQualities, PerTetMatchesSummary) {
   EXPECT_NEAR(sum / 12, summarize_quality(m).mean, 1e-12);
 }
 
+TEST(MinMeanQuality, MatchesTheSummaryForAnyThreadCount) {
+  TetMesh m = testing::random_delaunay(800, 5);
+  m.xyz[3 * 10 + 2] += 0.3;  // something poor, perhaps inverted, to find
+  const QualitySummary s = summarize_quality(m);
+  for (int threads : {1, 2, 0}) {
+    const MinMeanQuality q = min_mean_quality(m, threads);
+    EXPECT_EQ(q.min, s.min) << threads << " threads";
+    EXPECT_NEAR(q.mean, s.mean, 1e-14) << threads << " threads";
+  }
+  const MinMeanQuality none = min_mean_quality(TetMesh{});
+  EXPECT_EQ(none.min, 0.0);
+  EXPECT_EQ(none.mean, 0.0);
+}
+
 }  // namespace
 }  // namespace tetsmooth

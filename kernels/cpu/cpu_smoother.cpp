@@ -148,7 +148,7 @@ void run_sweeps(TetMesh& mesh, const Topology& topo, const Colouring* colouring,
       s = sweep_in_place<kAdaptive>(view, AosCoords<double>{mesh.xyz.data()}, natural.data(), natural.size(),
                                     topo.movable, 1);
     }
-    log.record(s.accepted, std::sqrt(s.max_disp2));
+    log.record(s.accepted, std::sqrt(s.max_disp2), [&mesh, threads] { return min_mean_quality(mesh, threads); });
   }
 }
 

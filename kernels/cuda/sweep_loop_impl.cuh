@@ -10,6 +10,7 @@
 #include "kernels/cuda/coords_transfer_kernels.cuh"
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/form_a_repair_kernels.cuh"
+#include "kernels/cuda/min_mean_quality_kernel.cuh"
 #include "kernels/cuda/multiblock_kernels.cuh"
 #include "kernels/cuda/phase_timer.hpp"
 #include "kernels/cuda/single_block_kernel.cuh"
@@ -147,9 +148,31 @@ class SweepLauncher {
       double disp2;
       static_assert(sizeof disp2 == sizeof d2[s]);
       std::memcpy(&disp2, &d2[s], sizeof disp2);
-      o_.progress(SweepProgress{s + 1, static_cast<std::int64_t>(acc[s]), std::sqrt(disp2)});
+      SweepProgress p{s + 1, static_cast<std::int64_t>(acc[s]), std::sqrt(disp2), {}};
+      // Only the last sweep's positions are still in the buffers.
+      if (s + 1 == done) p.quality = [this, done] { return quality_after(done); };
+      o_.progress(p);
     }
     reported_ = done;
+  }
+
+  // The smallest and mean radius ratio after `sweeps` sweeps, with nothing
+  // queued behind them. Form A's latest positions are in the buffer that
+  // the last sweep wrote (c1_ after an odd count, as GpuPipeline reads them).
+  MinMeanQuality quality_after(int sweeps) {
+    const Coords& now = (F == Form::A && (sweeps & 1)) ? c1_ : c0_;
+    CUDA_CHECK(cudaMemsetAsync(&a_.state->quality_sum, 0, sizeof(double), a_.stream));
+    CUDA_CHECK(cudaMemsetAsync(&a_.state->quality_min_key, 0xff, sizeof(unsigned long long), a_.stream));
+    const unsigned blocks = std::max(1u, std::min(blocks_for(a_.num_tets), kQualityMaxBlocks));
+    min_mean_quality_kernel<Real><<<blocks, kBlock, 0, a_.stream>>>(a_.view.tets, a_.num_tets, now, a_.state);
+    launched();
+    CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
+    CUDA_CHECK(cudaStreamSynchronize(a_.stream));
+    MinMeanQuality q;
+    if (a_.num_tets == 0) return q;
+    q.min = from_ordered_key(a_.host_state->quality_min_key);
+    q.mean = a_.host_state->quality_sum / static_cast<double>(a_.num_tets);
+    return q;
   }
 
   const SweepLoopArgs& a_;

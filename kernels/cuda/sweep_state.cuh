@@ -19,6 +19,10 @@ struct SweepState {
   double edge_sum;              // for the mean edge length
   unsigned long long edge_count;
   double tol_abs;               // tolerance x mean edge length, working units
+  // SweepProgress::quality's pass (min_mean_quality_kernel.cuh): the radius
+  // ratios' sum, and their minimum as an ordered key.
+  double quality_sum;
+  unsigned long long quality_min_key;
 };
 
 // Per-sweep counters, indexed by the sweep number (0-based).

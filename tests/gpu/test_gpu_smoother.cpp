@@ -433,6 +433,84 @@ TEST(GpuSmoother, MultiBlockHostChecksDoNotChangeTheRun) {
   expect_cap_and_tolerance_stops(o);
 }
 
+// The progress reports' quality (what the CLI's progress line shows): the
+// last report of each host check carries it, the others none, and it is
+// that of the mesh as the reported sweep left it, so the run's own `after`
+// at the end, and a run stopped there in between. Odd sweep counts leave
+// Form A's positions in its second buffer; ordinary smoothing of the
+// concave star leaves an inverted tet, a negative minimum.
+struct ReportedQuality {
+  std::vector<int> sweeps;  // of the reports that carried a quality
+  std::vector<MinMeanQuality> quality;
+  int without = 0;  // reports that carried none
+};
+
+SmoothResult run_with_progress(TetMesh& m, SmoothOptions o, ReportedQuality& seen) {
+  o.progress = [&seen](const SweepProgress& p) {
+    if (!p.quality) {
+      ++seen.without;
+      return;
+    }
+    seen.sweeps.push_back(p.sweep);
+    seen.quality.push_back(p.quality());
+  };
+  return smooth_cuda(m, o);
+}
+
+TEST(GpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
+  SKIP_WITHOUT_GPU();
+  struct Case {
+    Form form;
+    Layout layout;
+    Strategy strategy;
+    Method method;
+  };
+  const Case cases[] = {{Form::A, Layout::SoA, Strategy::MultiBlock, Method::Adaptive},
+                        {Form::B, Layout::AoS, Strategy::MultiBlock, Method::Adaptive},
+                        {Form::A, Layout::AoS, Strategy::SingleBlock, Method::Adaptive},
+                        {Form::B, Layout::AoS, Strategy::SingleBlock, Method::Ordinary},
+                        {Form::B, Layout::AoS, Strategy::Coloured, Method::Adaptive}};
+  for (Precision precision : {Precision::Double, Precision::Float})
+    for (const Case& c : cases) {
+      SmoothOptions o = gpu_options(c.form, c.layout, c.strategy, c.method, precision);
+      SCOPED_TRACE(std::string(to_string(c.form)) + "/" + to_string(c.layout) + "/" + to_string(c.strategy) + "/" +
+                   to_string(c.method) + "/" + to_string(precision));
+      o.max_iterations = 7;
+      o.tolerance = 0;
+      o.check_every = 3;
+      TetMesh m = model_5k();
+      ReportedQuality seen;
+      const SmoothResult r = run_with_progress(m, o, seen);
+      ASSERT_EQ(r.sweeps, 7);
+      const std::vector<int> checks =
+          c.strategy == Strategy::MultiBlock ? std::vector<int>{3, 6, 7} : std::vector<int>{7};
+      EXPECT_EQ(seen.sweeps, checks);
+      EXPECT_EQ(seen.without, 7 - static_cast<int>(checks.size()));
+      // Float's ratios come from float positions, the summary's from them
+      // in double: a few float ulps of a ratio apart.
+      const double tol = precision == Precision::Double ? 1e-12 : 2e-5;
+      ASSERT_FALSE(seen.quality.empty());
+      EXPECT_NEAR(seen.quality.back().min, r.after.min, tol);
+      EXPECT_NEAR(seen.quality.back().mean, r.after.mean, tol);
+      if (c.strategy == Strategy::MultiBlock && c.form == Form::A && precision == Precision::Double) {
+        TetMesh stopped = model_5k();  // Jacobi is deterministic: the same 3 sweeps
+        o.max_iterations = 3;
+        const SmoothResult r3 = smooth_cuda(stopped, o);
+        EXPECT_NEAR(seen.quality.front().min, r3.after.min, tol);
+        EXPECT_NEAR(seen.quality.front().mean, r3.after.mean, tol);
+        EXPECT_NE(seen.quality.front().mean, seen.quality.back().mean);
+      }
+    }
+  TetMesh star = testing::concave_star();
+  ReportedQuality seen;
+  const SmoothResult r = run_with_progress(
+      star, gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Ordinary, Precision::Double), seen);
+  ASSERT_EQ(seen.quality.size(), 1u);
+  EXPECT_LT(seen.quality.back().min, 0.0);
+  EXPECT_NEAR(seen.quality.back().min, r.after.min, 1e-12);
+  EXPECT_NEAR(seen.quality.back().mean, r.after.mean, 1e-12);
+}
+
 TEST(GpuPipeline, RestoreGivesTheSameRunAgain) {
   SKIP_WITHOUT_GPU();
   cuda::GpuPipeline p(model_5k());

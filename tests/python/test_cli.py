@@ -5,6 +5,8 @@ Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
 import math
 import os
+import pty
+import re
 import shutil
 import subprocess
 import tempfile
@@ -246,6 +248,41 @@ class GenerateSmoothQuality(CliTestCase):
         proc = run("smooth", self.lattice, "-o", self.path("quiet.vtu"), "-q")
         self.assertEqual(proc.stderr, "")
         self.assertEqual(proc.stdout, "")
+
+    def test_progress_line_on_a_terminal(self):
+        """With stderr on a terminal (a pseudo-terminal here), a run that takes
+        longer than half a second redraws one progress line in place: the
+        sweep, the moves, and the mesh's smallest and mean quality, which
+        adaptive smoothing never takes below the input's minimum."""
+        src = self.path("progress.tsm")
+        run("generate", "lattice-30", "-o", src, "--seed", "4", "-q")
+        before = quality_json(src)["quality"]
+        master, slave = pty.openpty()
+        proc = subprocess.Popen([BIN, "smooth", src, "-o", self.path("progress_out.tsm"), "--device", "cpu",
+                                 "--threads", "1", "--tol", "0", "--max-iter", "60"],
+                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=slave)
+        os.close(slave)
+        chunks = []
+        while True:
+            try:
+                chunk = os.read(master, 4096)
+            except OSError:  # EIO: the child closed the terminal's last writer
+                break
+            if not chunk:
+                break
+            chunks.append(chunk)
+        os.close(master)
+        self.assertEqual(proc.wait(timeout=600), 0)
+        proc.stdout.close()
+        err = b"".join(chunks).decode()
+        lines = re.findall(r"\r  sweep (\d+)/60  moved [\d,]+ up to \S+  q min (\S+)  mean (\S+) *", err)
+        self.assertTrue(lines, f"no progress line in {err!r}")
+        sweeps = [int(sweep) for sweep, _, _ in lines]
+        self.assertEqual(sweeps, sorted(sweeps))
+        for _, q_min, q_mean in lines:
+            self.assertGreaterEqual(float(q_min), round(before["min"], 2) - 0.01)
+            self.assertGreater(float(q_mean), float(q_min))
+        self.assertIn("before", err, "the report follows the progress line")
 
     def test_every_format_round_trips_exactly(self):
         # The .tsm cache stores raw doubles, so byte equality after a trip

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs on the GPU machine from the repository root, with gpu-bundle/ carried
 # there: GPU tests, compute-sanitizer and the benchmarks, everything written
-# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [study] [float] [profile] [profile-lattice] [profile-source] [profile-coloured]
+# under $OUT. Usage: device_run.sh [tests] [sanitize] [bench] [cli] [study] [float] [profile] [profile-lattice] [profile-source] [profile-coloured]
 # (default: tests sanitize bench)
 set -uo pipefail
 b=$(cd "$(dirname "$0")" && pwd)
@@ -128,6 +128,28 @@ for step in $steps; do
         source_profile "Coloured_$prec" coloured_loop_kernel 0 --precision=$prec --models=109k \
           --benchmark_filter='^FormB/AoS/Coloured/109k'
       done
+      ;;
+    cli)
+      # The command-line tool end to end on the GPU (the CI machine has
+      # none): a 3.4M-node lattice smoothed by each strategy with a JSON
+      # report, checked by the tool's own quality command, and one long run
+      # on a pseudo-terminal, whose progress line run_on_pty.py keeps.
+      {
+        mesh=/tmp/cli_lattice150.tsm
+        "$b/tetsmooth" generate lattice-150 -o $mesh -q
+        echo "generate exit $?"
+        for strategy in coloured multiblock; do
+          "$b/tetsmooth" smooth $mesh -o /tmp/cli_$strategy.vtu --device cuda --strategy $strategy \
+            --report "$out/cli_report_$strategy.json" -q
+          echo "smooth --strategy $strategy exit $?"
+          "$b/tetsmooth" quality /tmp/cli_$strategy.vtu --json > "$out/cli_quality_$strategy.json"
+          echo "quality exit $?"
+        done
+        python3 "$b/run_on_pty.py" "$b/tetsmooth" smooth $mesh -o /tmp/cli_progress.tsm --device cuda \
+          --strategy multiblock --tol 0 --max-iter 400
+        echo "smooth on a terminal exit $?"
+      } 2>&1 | tee "$out/cli.log" | tail -40
+      if grep -qE "exit [1-9]" "$out/cli.log"; then status=1; fi
       ;;
     study)
       "$b/bench_smooth" --scaling=lattice-215 --benchmark_repetitions=${REPS:-3} --benchmark_min_time=0.01 \

@@ -11,16 +11,17 @@ build=${BUILD_DIR:-build-gpu}
 bundle=gpu-bundle
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DTETSMOOTH_CUDA=ON -DCMAKE_CUDA_ARCHITECTURES=90 \
   -DCMAKE_BUILD_RPATH='$ORIGIN' -DCMAKE_BUILD_RPATH_USE_ORIGIN=ON >/dev/null
-cmake --build "$build" -j"$(nproc)" --target bench_smooth test_gpu_smoother test_gpu_topology
+cmake --build "$build" -j"$(nproc)" --target bench_smooth test_gpu_smoother test_gpu_topology tetsmooth
 rm -rf "$bundle"
 mkdir -p "$bundle"
-cp "$build"/bench/bench_smooth "$build"/tests/test_gpu_smoother "$build"/tests/test_gpu_topology "$bundle"/
+cp "$build"/bench/bench_smooth "$build"/tests/test_gpu_smoother "$build"/tests/test_gpu_topology "$build"/apps/tetsmooth \
+  "$bundle"/
 for lib in libbenchmark.so.1debian libtet.so.1.5 libcudart.so.13 libgomp.so.1 libz.so.1 liblzma.so.5; do
   path=$(ldd "$bundle"/bench_smooth | awk -v l="$lib" '$1 == l {print $3}')
   [ -n "$path" ] || path=$(ldconfig -p | awk -v l="$lib" '$1 == l && !found {print $NF; found = 1}')  # no early exit: that would end ldconfig with SIGPIPE, which pipefail turns into a silent stop
   [ -n "$path" ] || { echo "gpu_bundle: $lib not found" >&2; exit 1; }
   cp -L "$path" "$bundle/$lib"
 done
-cp scripts/device_run.sh "$bundle"/
+cp scripts/device_run.sh scripts/run_on_pty.py "$bundle"/
 scripts/git_version.sh > "$bundle"/GIT_SHA
 du -sh "$bundle"

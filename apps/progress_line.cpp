@@ -30,11 +30,15 @@ void ProgressLine::update(const SweepProgress& progress) {
   char numbers[96];
   std::snprintf(numbers, sizeof numbers, " up to %.3g  q min %.3g  mean %.3g", progress.max_displacement, q.min,
                 q.mean);
-  // Terse: the line must fit 80 columns, or a terminal wraps it and '\r' no
-  // longer returns to its start. "moved N up to d": N accepted moves, the
-  // farthest d (mesh units).
-  const std::string line = "  sweep " + std::to_string(progress.sweep) + "/" + std::to_string(max_sweeps_) +
-                           "  moved " + with_thousands(static_cast<std::size_t>(progress.accepted)) + numbers;
+  // "moved N up to d": N accepted moves, the farthest d (mesh units). The
+  // line must stay within 79 columns, or a terminal wraps it and '\r' no
+  // longer returns to its start: past that (sweep counts and moves in the
+  // hundreds of millions) the cap goes, then the end of the line.
+  const std::string moves =
+      "  moved " + with_thousands(static_cast<std::size_t>(progress.accepted)) + numbers;
+  std::string line = "  sweep " + std::to_string(progress.sweep) + "/" + std::to_string(max_sweeps_) + moves;
+  if (line.size() > kWidth) line = "  sweep " + std::to_string(progress.sweep) + moves;
+  if (line.size() > kWidth) line.resize(kWidth);
   // Pad over the previous, possibly longer, line instead of relying on
   // terminal escape codes.
   const std::size_t pad = drawn_width_ > line.size() ? drawn_width_ - line.size() : 0;

@@ -24,6 +24,8 @@ class ProgressLine {
   // on (this way by at most about 1 / kPacing). `now` is the clock (tests
   // give their own).
   static constexpr int kPacing = 20;
+  // The longest line drawn: one column short of a classic terminal's 80.
+  static constexpr std::size_t kWidth = 79;
   ProgressLine(std::ostream& os, bool enabled, int max_sweeps, Clock::duration delay = std::chrono::milliseconds(500),
                Clock::duration interval = std::chrono::milliseconds(100), Now now = Clock::now);
 

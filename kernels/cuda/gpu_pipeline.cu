@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -17,15 +16,6 @@
 #include "kernels/cuda/sweep_loop.hpp"
 
 namespace tetsmooth::cuda {
-namespace {
-
-double bits_to_double(unsigned long long bits) {
-  double d;
-  std::memcpy(&d, &bits, sizeof d);
-  return d;
-}
-
-}  // namespace
 
 struct GpuPipeline::Impl {
   std::size_t n = 0, t = 0;
@@ -245,6 +235,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
     a.counters.colour_ns = m.colour_ns.data();
   }
   a.stream = m.stream;
+  a.unit = is_float ? m.scale : 1.0;
   const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
   e_end.record(m.stream);
   CUDA_CHECK(cudaMemcpyAsync(m.host_state, m.state.data(), sizeof(SweepState), cudaMemcpyDeviceToHost, m.stream));
@@ -271,19 +262,14 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
                       : static_cast<std::int64_t>(m.topo.movable_count) * st.sweep;
   r.num_colours = num_colours;
   r.movable_nodes = m.topo.movable_count;
-  r.mean_edge_length = (st.edge_count ? st.edge_sum / static_cast<double>(st.edge_count) : 0.0) * (is_float ? m.scale : 1.0);
+  r.mean_edge_length = (st.edge_count ? st.edge_sum / static_cast<double>(st.edge_count) : 0.0) * a.unit;
   r.topology_ms = m.times.topology_ms;
   r.colouring_ms = m.times.colouring_ms;
   r.smoothing_ms = m.times.smoothing_ms;
   r.phase_ms = loop.phase_ms;
-  if (r.sweeps > 0) {
-    std::vector<unsigned long long> acc(r.sweeps), d2(r.sweeps);
-    CUDA_CHECK(cudaMemcpy(acc.data(), m.accepted.data(), acc.size() * sizeof(acc[0]), cudaMemcpyDeviceToHost));
-    CUDA_CHECK(cudaMemcpy(d2.data(), m.max_disp2.data(), d2.size() * sizeof(d2[0]), cudaMemcpyDeviceToHost));
-    for (int s = 0; s < r.sweeps; ++s) {
-      r.accepted_per_sweep.push_back(static_cast<std::int64_t>(acc[s]));
-      r.max_displacement_per_sweep.push_back(std::sqrt(bits_to_double(d2[s])) * (is_float ? m.scale : 1.0));
-    }
+  for (const SweepCount& c : read_sweep_counts(a.counters, r.sweeps, a.unit)) {
+    r.accepted_per_sweep.push_back(c.accepted);
+    r.max_displacement_per_sweep.push_back(c.max_displacement);
   }
   r.colour_sizes = std::move(class_sizes);
   if (a.num_colours > 0) {
@@ -291,7 +277,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
     CUDA_CHECK(cudaMemcpy(ns.data(), m.colour_ns.data(), ns.size() * sizeof(ns[0]), cudaMemcpyDeviceToHost));
     for (unsigned long long v : ns) r.colour_ms.push_back(static_cast<double>(v) / 1e6);
   }
-  m.result_in_buf1 = o.form == Form::A && (r.sweeps & 1);
+  m.result_in_buf1 = latest_in_buf1(o.form, r.sweeps);
   return r;
 }
 

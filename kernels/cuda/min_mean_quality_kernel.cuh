@@ -21,10 +21,11 @@ inline constexpr unsigned kQualityMaxBlocks = 2048;
 // Adds every tet's radius ratio into st->quality_sum and lowers
 // st->quality_min_key to the smallest's ordered_key, one atomic of each a
 // block; the caller clears both first (the key to all ones, above every
-// double). A grid of any size strides over the tets.
+// double). A grid of any size strides over the tets. The minimum starts at
+// 1, as summarize_quality's does.
 template <class Real, class Coords>
 __global__ void min_mean_quality_kernel(const index_t* tets, index_t num_tets, Coords xyz, SweepState* st) {
-  double lowest = HUGE_VAL, sum = 0;
+  double lowest = 1, sum = 0;
   for (std::size_t t = static_cast<std::size_t>(blockIdx.x) * blockDim.x + threadIdx.x;
        t < static_cast<std::size_t>(num_tets); t += static_cast<std::size_t>(gridDim.x) * blockDim.x) {
     const TetNodes tet = tet_nodes(tets, t);
@@ -32,10 +33,9 @@ __global__ void min_mean_quality_kernel(const index_t* tets, index_t num_tets, C
     lowest = fmin(lowest, q);
     sum += q;
   }
-  lowest = block_reduce_to_thread0(lowest, [](double a, double b) { return fmin(a, b); }, double(HUGE_VAL));
-  if (threadIdx.x == 0 && lowest < HUGE_VAL)
-    atomicMin(&st->quality_min_key, static_cast<unsigned long long>(ordered_key(lowest)));
-  __syncthreads();  // block_atomic_add reduces doubles through the same slots
+  lowest = block_reduce_to_thread0(lowest, [](double a, double b) { return fmin(a, b); }, 1.0);
+  if (threadIdx.x == 0) atomicMin(&st->quality_min_key, static_cast<unsigned long long>(ordered_key(lowest)));
+  __syncthreads();  // block_reduce_to_thread0's rule before another reduction in the block
   block_atomic_add(&st->quality_sum, sum);
 }
 

@@ -4,6 +4,7 @@
 // loop in one cooperative launch (coloured_loop_kernel.cuh).
 #include <cuda_runtime.h>
 
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -33,7 +34,21 @@ struct SweepLoopArgs {
   void* tet_quality = nullptr;  // MultiBlock and Coloured: num_tets Real
   std::uint8_t* changed = nullptr;  // Coloured: n (coloured_loop_kernel.cuh)
   cudaStream_t stream = nullptr;
+  double unit = 1;  // mesh units per working unit: float works in the unit box around the mesh
 };
+
+// Form A alternates its two buffers: after `sweeps` sweeps its latest
+// positions are in buf1 when the count is odd. Form B works in buf0.
+inline bool latest_in_buf1(Form form, int sweeps) { return form == Form::A && (sweeps & 1); }
+
+// Sweeps [0, sweeps) of the device's per-sweep counters: each one's accepted
+// moves, and its largest move in mesh units (the working units' times
+// `unit`). Synchronous.
+struct SweepCount {
+  std::int64_t accepted = 0;
+  double max_displacement = 0;
+};
+std::vector<SweepCount> read_sweep_counts(const SweepCounters& counters, int sweeps, double unit);
 
 struct SweepLoopStats {
   int launches = 0;

@@ -86,9 +86,12 @@ class SweepLauncher {
  private:
   Real* old_min() const { return static_cast<Real*>(a_.old_min); }
 
+  // The buffer that holds the positions after `sweeps` sweeps.
+  const Coords& latest(int sweeps) const { return latest_in_buf1(F, sweeps) ? c1_ : c0_; }
+
   void launch_sweep(int s) {
-    const Coords& read = (F == Form::A && (s & 1)) ? c1_ : c0_;
-    const Coords& write = (F == Form::A && (s & 1)) ? c0_ : c1_;
+    const Coords& read = latest(s);
+    const Coords& write = latest(s + 1);  // the same buffer in Form B
     Real* tet_q = static_cast<Real*>(a_.tet_quality);
     if (kAdaptive) {
       tet_quality_kernel<<<blocks_for((a_.num_tets + kTetsPerThread - 1) / kTetsPerThread), kBlock, 0, a_.stream>>>(
@@ -140,15 +143,9 @@ class SweepLauncher {
   void report_progress() {
     const int done = a_.host_state->sweep;
     if (done <= reported_) return;
-    std::vector<unsigned long long> acc(done), d2(done);
-    CUDA_CHECK(cudaMemcpy(acc.data(), a_.counters.accepted, done * sizeof(unsigned long long), cudaMemcpyDeviceToHost));
-    CUDA_CHECK(cudaMemcpy(d2.data(), a_.counters.max_disp2_bits, done * sizeof(unsigned long long),
-                          cudaMemcpyDeviceToHost));
+    const std::vector<SweepCount> counts = read_sweep_counts(a_.counters, done, a_.unit);
     for (int s = reported_; s < done; ++s) {
-      double disp2;
-      static_assert(sizeof disp2 == sizeof d2[s]);
-      std::memcpy(&disp2, &d2[s], sizeof disp2);
-      SweepProgress p{s + 1, static_cast<std::int64_t>(acc[s]), std::sqrt(disp2), {}};
+      SweepProgress p{s + 1, counts[s].accepted, counts[s].max_displacement, {}};
       // Only the last sweep's positions are still in the buffers.
       if (s + 1 == done) p.quality = [this, done] { return quality_after(done); };
       o_.progress(p);
@@ -157,14 +154,13 @@ class SweepLauncher {
   }
 
   // The smallest and mean radius ratio after `sweeps` sweeps, with nothing
-  // queued behind them. Form A's latest positions are in the buffer that
-  // the last sweep wrote (c1_ after an odd count, as GpuPipeline reads them).
+  // queued behind them.
   MinMeanQuality quality_after(int sweeps) {
-    const Coords& now = (F == Form::A && (sweeps & 1)) ? c1_ : c0_;
     CUDA_CHECK(cudaMemsetAsync(&a_.state->quality_sum, 0, sizeof(double), a_.stream));
     CUDA_CHECK(cudaMemsetAsync(&a_.state->quality_min_key, 0xff, sizeof(unsigned long long), a_.stream));
     const unsigned blocks = std::max(1u, std::min(blocks_for(a_.num_tets), kQualityMaxBlocks));
-    min_mean_quality_kernel<Real><<<blocks, kBlock, 0, a_.stream>>>(a_.view.tets, a_.num_tets, now, a_.state);
+    min_mean_quality_kernel<Real>
+        <<<blocks, kBlock, 0, a_.stream>>>(a_.view.tets, a_.num_tets, latest(sweeps), a_.state);
     launched();
     CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
     CUDA_CHECK(cudaStreamSynchronize(a_.stream));

@@ -433,32 +433,38 @@ TEST(GpuSmoother, MultiBlockHostChecksDoNotChangeTheRun) {
   expect_cap_and_tolerance_stops(o);
 }
 
-// The progress reports' quality (what the CLI's progress line shows): the
-// last report of each host check carries it, the others none, and it is
-// that of the mesh as the reported sweep left it, so the run's own `after`
-// at the end, and a run stopped there in between. Odd sweep counts leave
-// Form A's positions in its second buffer; ordinary smoothing of the
-// concave star leaves an inverted tet, a negative minimum.
-struct ReportedQuality {
-  std::vector<int> sweeps;  // of the reports that carried a quality
+// The progress reports (what the CLI's progress line shows). Each sweep is
+// reported once with the run's own counts, its largest move in mesh units
+// (float works in the unit box, so the model is scaled away from it); the
+// last report of each host check carries a quality, the others none, and it
+// is that of the mesh as the reported sweep left it: the run's own `after`
+// at the end, a run stopped there in between. Form A's positions after 3
+// sweeps are in its second buffer, after 8 in its first. Ordinary smoothing
+// of the concave star leaves an inverted tet, a negative minimum.
+struct Reported {
+  std::vector<int> sweeps;
+  std::vector<std::int64_t> accepted;
+  std::vector<double> max_displacement;
+  std::vector<int> quality_sweeps;  // of the reports that carried a quality
   std::vector<MinMeanQuality> quality;
-  int without = 0;  // reports that carried none
 };
 
-SmoothResult run_with_progress(TetMesh& m, SmoothOptions o, ReportedQuality& seen) {
+SmoothResult run_with_progress(TetMesh& m, SmoothOptions o, Reported& seen) {
   o.progress = [&seen](const SweepProgress& p) {
-    if (!p.quality) {
-      ++seen.without;
-      return;
-    }
     seen.sweeps.push_back(p.sweep);
+    seen.accepted.push_back(p.accepted);
+    seen.max_displacement.push_back(p.max_displacement);
+    if (!p.quality) return;
+    seen.quality_sweeps.push_back(p.sweep);
     seen.quality.push_back(p.quality());
   };
   return smooth_cuda(m, o);
 }
 
-TEST(GpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
+TEST(GpuSmoother, ProgressReportsTheSweepsAndTheirQuality) {
   SKIP_WITHOUT_GPU();
+  TetMesh scaled = model_5k();
+  for (double& x : scaled.xyz) x = 37.0 * x + 5.0;
   struct Case {
     Form form;
     Layout layout;
@@ -475,17 +481,20 @@ TEST(GpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
       SmoothOptions o = gpu_options(c.form, c.layout, c.strategy, c.method, precision);
       SCOPED_TRACE(std::string(to_string(c.form)) + "/" + to_string(c.layout) + "/" + to_string(c.strategy) + "/" +
                    to_string(c.method) + "/" + to_string(precision));
-      o.max_iterations = 7;
+      o.max_iterations = 8;
       o.tolerance = 0;
       o.check_every = 3;
-      TetMesh m = model_5k();
-      ReportedQuality seen;
+      TetMesh m = scaled;
+      Reported seen;
       const SmoothResult r = run_with_progress(m, o, seen);
-      ASSERT_EQ(r.sweeps, 7);
+      ASSERT_EQ(r.sweeps, 8);
+      EXPECT_EQ(seen.sweeps, (std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8}));
+      EXPECT_EQ(seen.accepted, r.accepted_per_sweep);
+      EXPECT_EQ(seen.max_displacement, r.max_displacement_per_sweep);
+      EXPECT_GT(r.max_displacement_per_sweep.front(), 0.01 * r.mean_edge_length) << "moves in mesh units";
       const std::vector<int> checks =
-          c.strategy == Strategy::MultiBlock ? std::vector<int>{3, 6, 7} : std::vector<int>{7};
-      EXPECT_EQ(seen.sweeps, checks);
-      EXPECT_EQ(seen.without, 7 - static_cast<int>(checks.size()));
+          c.strategy == Strategy::MultiBlock ? std::vector<int>{3, 6, 8} : std::vector<int>{8};
+      EXPECT_EQ(seen.quality_sweeps, checks);
       // Float's ratios come from float positions, the summary's from them
       // in double: a few float ulps of a ratio apart.
       const double tol = precision == Precision::Double ? 1e-12 : 2e-5;
@@ -493,7 +502,7 @@ TEST(GpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
       EXPECT_NEAR(seen.quality.back().min, r.after.min, tol);
       EXPECT_NEAR(seen.quality.back().mean, r.after.mean, tol);
       if (c.strategy == Strategy::MultiBlock && c.form == Form::A && precision == Precision::Double) {
-        TetMesh stopped = model_5k();  // Jacobi is deterministic: the same 3 sweeps
+        TetMesh stopped = scaled;  // Jacobi is deterministic: the same 3 sweeps
         o.max_iterations = 3;
         const SmoothResult r3 = smooth_cuda(stopped, o);
         EXPECT_NEAR(seen.quality.front().min, r3.after.min, tol);
@@ -502,7 +511,7 @@ TEST(GpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
       }
     }
   TetMesh star = testing::concave_star();
-  ReportedQuality seen;
+  Reported seen;
   const SmoothResult r = run_with_progress(
       star, gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Ordinary, Precision::Double), seen);
   ASSERT_EQ(seen.quality.size(), 1u);

@@ -5,15 +5,16 @@ Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
 import math
 import os
-import pty
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 import unittest
 
 import numpy as np
 
+HERE = os.path.dirname(os.path.abspath(__file__))
 BIN = os.path.join(os.environ.get("TETSMOOTH_BIN_DIR", ""), "tetsmooth")
 
 EXIT_USAGE, EXIT_INPUT, EXIT_OUTPUT, EXIT_DEVICE = 2, 3, 4, 5
@@ -250,39 +251,31 @@ class GenerateSmoothQuality(CliTestCase):
         self.assertEqual(proc.stdout, "")
 
     def test_progress_line_on_a_terminal(self):
-        """With stderr on a terminal (a pseudo-terminal here), a run that takes
-        longer than half a second redraws one progress line in place: the
-        sweep, the moves, and the mesh's smallest and mean quality, which
-        adaptive smoothing never takes below the input's minimum."""
+        """With stderr on a terminal (a pseudo-terminal, through the device
+        run's scripts/run_on_pty.py), a run longer than half a second redraws
+        one progress line in place: the sweep, the moves, and the mesh's
+        smallest and mean quality after it, which adaptive smoothing of this
+        lattice lifts far above the input's (about 0.19 to 0.7). The run is
+        sized to last several seconds here, so that the line shows even on a
+        much faster machine."""
         src = self.path("progress.tsm")
-        run("generate", "lattice-30", "-o", src, "--seed", "4", "-q")
+        run("generate", "lattice-36", "-o", src, "--seed", "4", "-q")
         before = quality_json(src)["quality"]
-        master, slave = pty.openpty()
-        proc = subprocess.Popen([BIN, "smooth", src, "-o", self.path("progress_out.tsm"), "--device", "cpu",
-                                 "--threads", "1", "--tol", "0", "--max-iter", "60"],
-                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=slave)
-        os.close(slave)
-        chunks = []
-        while True:
-            try:
-                chunk = os.read(master, 4096)
-            except OSError:  # EIO: the child closed the terminal's last writer
-                break
-            if not chunk:
-                break
-            chunks.append(chunk)
-        os.close(master)
-        self.assertEqual(proc.wait(timeout=600), 0)
-        proc.stdout.close()
-        err = b"".join(chunks).decode()
-        lines = re.findall(r"\r  sweep (\d+)/60  moved [\d,]+ up to \S+  q min (\S+)  mean (\S+) *", err)
-        self.assertTrue(lines, f"no progress line in {err!r}")
+        pty_run = os.path.join(os.environ.get("TETSMOOTH_SOURCE_DIR", os.path.join(HERE, "..", "..")), "scripts",
+                               "run_on_pty.py")
+        proc = subprocess.run([sys.executable, pty_run, BIN, "smooth", src, "-o", self.path("progress_out.tsm"),
+                               "--device", "cpu", "--threads", "1", "--tol", "0", "--max-iter", "100"],
+                              capture_output=True, text=True, timeout=600)
+        self.assertEqual(proc.returncode, 0, proc.stdout + proc.stderr)
+        lines = re.findall(r"^  sweep (\d+)/100  moved [\d,]+ up to \S+  q min (\S+)  mean (\S+) *$", proc.stdout,
+                           re.MULTILINE)
+        self.assertTrue(lines, f"no progress line in {proc.stdout!r}")
         sweeps = [int(sweep) for sweep, _, _ in lines]
-        self.assertEqual(sweeps, sorted(sweeps))
+        self.assertEqual(sweeps, sorted(set(sweeps)))
         for _, q_min, q_mean in lines:
-            self.assertGreaterEqual(float(q_min), round(before["min"], 2) - 0.01)
-            self.assertGreater(float(q_mean), float(q_min))
-        self.assertIn("before", err, "the report follows the progress line")
+            self.assertGreater(float(q_min), before["min"] + 0.3)
+            self.assertGreater(float(q_mean), before["mean"])
+        self.assertIn("before", proc.stdout, "the report follows the progress line")
 
     def test_every_format_round_trips_exactly(self):
         # The .tsm cache stores raw doubles, so byte equality after a trip

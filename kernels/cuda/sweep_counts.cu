@@ -1,3 +1,5 @@
+// The sweep loop's per-sweep counters read back to the host, for the
+// progress reports at each check and for the run's result alike.
 #include <cmath>
 #include <cstring>
 

@@ -3,8 +3,6 @@
 // sweep_loop_float.cu and sweep_loop_double.cu (splitting keeps nvcc's
 // translation units small).
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 
 #include "kernels/cuda/coloured_loop_launch.cuh"
 #include "kernels/cuda/coords_transfer_kernels.cuh"

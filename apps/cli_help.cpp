@@ -100,6 +100,10 @@ Options:
                             length in a sweep (default 1e-4)
   --report FILE.json        write options, per-sweep counts, timings and quality before/after
                             (- for standard output)
+  --progress auto|always|never
+                            a progress line (sweep, moves, current min and mean quality):
+                            auto redraws one on a terminal only; always also writes one to
+                            a log, 10 s apart or more; never shows none (default auto)
   --format F                read IN as format F
   --output-format F         write OUT as format F
   -q, --quiet               print nothing but errors

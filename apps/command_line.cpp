@@ -61,7 +61,8 @@ SmoothCommand parse_smooth(const std::vector<std::string>& args) {
                                    {"precision", 0, true},
                                    {"max-iter", 0, true},
                                    {"tol", 0, true},
-                                   {"report", 0, true}},
+                                   {"report", 0, true},
+                                   {"progress", 0, true}},
                                   "smooth");
   expect_positionals(p, 1, "input mesh IN", "smooth");
   SmoothCommand c;
@@ -79,6 +80,7 @@ SmoothCommand parse_smooth(const std::vector<std::string>& args) {
   if (p.has("precision")) c.options.precision = parse_precision("--precision", p.value("precision"));
   if (p.has("max-iter")) c.options.max_iterations = parse_int_option("--max-iter", p.value("max-iter"), 1, INT_MAX);
   if (p.has("tol")) c.options.tolerance = parse_nonnegative_option("--tol", p.value("tol"));
+  if (p.has("progress")) c.progress = parse_progress_mode("--progress", p.value("progress"));
   if (p.has("report")) {
     c.report_path = p.value("report");
     if (c.report_path.empty()) throw UsageError("--report needs a file name");

@@ -5,6 +5,7 @@
 #include <variant>
 #include <vector>
 
+#include "apps/progress_line.hpp"
 #include "kernels/smooth_options.hpp"
 #include "mesh/io/mesh_io.hpp"
 
@@ -29,6 +30,7 @@ struct SmoothCommand {
   MeshFormat input_format = MeshFormat::Auto, output_format = MeshFormat::Auto;
   SmoothOptions options;
   Device device = Device::Auto;
+  ProgressMode progress = ProgressMode::Auto;
   bool quiet = false;
   // Options only one backend uses, remembered so a run can say it ignored them.
   bool strategy_given = false, layout_given = false, threads_given = false;

@@ -16,6 +16,8 @@ constexpr std::pair<const char*, Device> kDevices[] = {
     {"auto", Device::Auto}, {"cpu", Device::Cpu}, {"cuda", Device::Cuda}};
 constexpr std::pair<const char*, Precision> kPrecisions[] = {{"float", Precision::Float},
                                                              {"double", Precision::Double}};
+constexpr std::pair<const char*, ProgressMode> kProgressModes[] = {
+    {"auto", ProgressMode::Auto}, {"always", ProgressMode::Always}, {"never", ProgressMode::Never}};
 constexpr std::pair<const char*, Ordering> kOrderings[] = {{"natural", Ordering::Natural},
                                                            {"coloured", Ordering::Coloured}};
 
@@ -45,6 +47,9 @@ Strategy parse_strategy(const std::string& option, const std::string& text) {
 }
 Layout parse_layout(const std::string& option, const std::string& text) { return parse_name(kLayouts, option, text); }
 Device parse_device(const std::string& option, const std::string& text) { return parse_name(kDevices, option, text); }
+ProgressMode parse_progress_mode(const std::string& option, const std::string& text) {
+  return parse_name(kProgressModes, option, text);
+}
 Precision parse_precision(const std::string& option, const std::string& text) {
   return parse_name(kPrecisions, option, text);
 }

@@ -4,6 +4,7 @@
 // drift apart.
 #include <string>
 
+#include "apps/progress_line.hpp"
 #include "kernels/smooth_options.hpp"
 #include "mesh/io/mesh_io.hpp"
 
@@ -16,6 +17,7 @@ Strategy parse_strategy(const std::string& option, const std::string& text);
 Layout parse_layout(const std::string& option, const std::string& text);
 Device parse_device(const std::string& option, const std::string& text);
 Precision parse_precision(const std::string& option, const std::string& text);
+ProgressMode parse_progress_mode(const std::string& option, const std::string& text);
 
 const char* option_name(Method m);
 const char* option_name(Form f);

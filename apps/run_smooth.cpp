@@ -125,8 +125,10 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   console.note(device_line(c, record.device, why_not_cuda));
 
   SmoothOptions options = c.options;
-  ProgressLine progress(console.err, console.err_is_terminal && !console.quiet, options.max_iterations);
-  options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
+  const ProgressLine::Style style = ProgressLine::style_for(c.progress, console.err_is_terminal, console.quiet);
+  ProgressLine progress(console.err, style, options.max_iterations, ProgressLine::kDelay,
+                        ProgressLine::interval_for(style));
+  if (style != ProgressLine::Style::Off) options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
   try {
     const RegionInterfacePins pins(mesh);
     if (pins.added() > 0)

@@ -111,6 +111,7 @@ TEST(CliParse, SmoothDefaultsAreThoseDocumented) {
   EXPECT_EQ(c.output_format, MeshFormat::Auto);
   EXPECT_TRUE(c.report_path.empty());
   EXPECT_FALSE(c.quiet);
+  EXPECT_EQ(c.progress, ProgressMode::Auto);
   EXPECT_FALSE(c.strategy_given || c.layout_given || c.threads_given);
 }
 
@@ -135,6 +136,7 @@ TEST(CliParse, SmoothTakesEveryOptionInBothSpellings) {
                                           "--format",
                                           "msh",
                                           "--output-format=vtk",
+                                          "--progress=always",
                                           "-q",
                                           "in.msh",
                                           "--output",
@@ -153,6 +155,7 @@ TEST(CliParse, SmoothTakesEveryOptionInBothSpellings) {
   EXPECT_EQ(c.report_path, "r.json");
   EXPECT_EQ(c.input_format, MeshFormat::Msh41);
   EXPECT_EQ(c.output_format, MeshFormat::Vtk);
+  EXPECT_EQ(c.progress, ProgressMode::Always);
   EXPECT_TRUE(c.quiet);
   EXPECT_TRUE(c.strategy_given && c.layout_given && c.threads_given);
   // Form A is Jacobi: there is no node order to choose.
@@ -247,6 +250,19 @@ TEST(CliParse, NumbersAreCheckedForRange) {
 
 TEST(CliParse, UnknownFormatNameIsAUsageError) {
   EXPECT_THROW(parse({"convert", "a.vtu", "b.vtu", "--output-format", "stl"}), UsageError);
+}
+
+TEST(CliParse, ProgressModesAndABadOne) {
+  EXPECT_EQ(parse_as<SmoothCommand>({"smooth", "a.vtu", "-o", "b.vtu", "--progress", "never"}).progress,
+            ProgressMode::Never);
+  EXPECT_EQ(parse_as<SmoothCommand>({"smooth", "a.vtu", "-o", "b.vtu", "--progress=auto"}).progress,
+            ProgressMode::Auto);
+  try {
+    parse({"smooth", "a.vtu", "-o", "b.vtu", "--progress", "sometimes"});
+    ADD_FAILURE() << "--progress sometimes was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--progress: expected auto|always|never"), std::string::npos) << e.what();
+  }
 }
 
 // --- exit codes ------------------------------------------------------------
@@ -857,7 +873,7 @@ TEST(CliPieces, ProgressLineRedrawsInPlaceAndErasesItself) {
   const auto now = [&clock] { return clock; };
   int calls = 0;
   std::ostringstream os;
-  ProgressLine line(os, true, 10, milliseconds(0), milliseconds(0), now);
+  ProgressLine line(os, ProgressLine::Style::Redraw, 10, milliseconds(0), milliseconds(0), now);
   line.update(report_with_quality(3, 1234, {0.0123456, 0.61234}, clock, milliseconds(0), calls));
   EXPECT_EQ(os.str(), "\r  sweep 3/10  moved 1,234 up to 0.5  q min 0.0123  mean 0.612");
   EXPECT_EQ(calls, 1);
@@ -865,7 +881,7 @@ TEST(CliPieces, ProgressLineRedrawsInPlaceAndErasesItself) {
   // run, without the cap for larger ones, cut short for the largest.
   const auto drawn = [&](int sweep, int max_sweeps, std::int64_t moved) {
     std::ostringstream wide;
-    ProgressLine big(wide, true, max_sweeps, milliseconds(0), milliseconds(0), now);
+    ProgressLine big(wide, ProgressLine::Style::Redraw, max_sweeps, milliseconds(0), milliseconds(0), now);
     int passes = 0;
     SweepProgress p = report_with_quality(sweep, moved, {-1.23456e-05, -0.61234}, clock, milliseconds(0), passes);
     p.max_displacement = 1.23456e-05;
@@ -885,18 +901,49 @@ TEST(CliPieces, ProgressLineRedrawsInPlaceAndErasesItself) {
   EXPECT_EQ(os.str().find('\n'), std::string::npos);
 
   std::ostringstream silent;
-  ProgressLine off(silent, false, 10, milliseconds(0), milliseconds(0), now);
+  ProgressLine off(silent, ProgressLine::Style::Off, 10, milliseconds(0), milliseconds(0), now);
   off.update(report_with_quality(1, 1, {0.5, 0.5}, clock, milliseconds(0), calls));
   off.finish();
   EXPECT_TRUE(silent.str().empty());
   EXPECT_EQ(calls, 1) << "a disabled line runs no quality pass";
 }
 
+// --progress: redraws on a terminal unless never or -q; log lines where
+// stderr is not a terminal only when asked for, whole lines ten seconds
+// apart at least, with nothing to erase.
+TEST(CliPieces, ProgressLineStylesForLogsAndTerminals) {
+  using Style = ProgressLine::Style;
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Auto, true, false), Style::Redraw);
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Auto, false, false), Style::Off);
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Always, true, false), Style::Redraw);
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Always, false, false), Style::Lines);
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Never, true, false), Style::Off);
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Always, false, true), Style::Off);
+  EXPECT_EQ(ProgressLine::style_for(ProgressMode::Auto, true, true), Style::Off);
+  EXPECT_GE(ProgressLine::interval_for(Style::Lines), std::chrono::seconds(10));
+
+  using std::chrono::milliseconds;
+  ProgressLine::Clock::time_point clock{};
+  std::ostringstream log;
+  ProgressLine lines(log, Style::Lines, 20, milliseconds(0), milliseconds(1000), [&clock] { return clock; });
+  int calls = 0;
+  lines.update(report_with_quality(1, 5, {0.25, 0.5}, clock, milliseconds(0), calls));
+  clock += milliseconds(500);
+  lines.update(report_with_quality(2, 4, {0.25, 0.5}, clock, milliseconds(0), calls));
+  clock += milliseconds(500);
+  lines.update(report_with_quality(3, 3, {0.3, 0.5}, clock, milliseconds(0), calls));
+  lines.finish();
+  EXPECT_EQ(log.str(),
+            "  sweep 1/20  moved 5 up to 0.5  q min 0.25  mean 0.5\n"
+            "  sweep 3/20  moved 3 up to 0.5  q min 0.3  mean 0.5\n");
+  EXPECT_EQ(calls, 2);
+}
+
 TEST(CliPieces, ProgressLineSkipsReportsWithoutQuality) {
   using std::chrono::milliseconds;
   ProgressLine::Clock::time_point clock{};
   std::ostringstream os;
-  ProgressLine line(os, true, 10, milliseconds(0), milliseconds(0), [&clock] { return clock; });
+  ProgressLine line(os, ProgressLine::Style::Redraw, 10, milliseconds(0), milliseconds(0), [&clock] { return clock; });
   line.update(SweepProgress{1, 5, 0.25, {}});  // a CUDA report before the last of its check
   EXPECT_TRUE(os.str().empty());
   int calls = 0;
@@ -908,7 +955,7 @@ TEST(CliPieces, ProgressLineWaitsTheDelayAndPacesItsQualityPasses) {
   using std::chrono::milliseconds;
   ProgressLine::Clock::time_point clock{};
   std::ostringstream os;
-  ProgressLine line(os, true, 100, milliseconds(500), milliseconds(100), [&clock] { return clock; });
+  ProgressLine line(os, ProgressLine::Style::Redraw, 100, milliseconds(500), milliseconds(100), [&clock] { return clock; });
   int calls = 0;
   const MinMeanQuality q{0.25, 0.5};
   line.update(report_with_quality(1, 1, q, clock, milliseconds(40), calls));

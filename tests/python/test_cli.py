@@ -250,32 +250,62 @@ class GenerateSmoothQuality(CliTestCase):
         self.assertEqual(proc.stderr, "")
         self.assertEqual(proc.stdout, "")
 
-    def test_progress_line_on_a_terminal(self):
-        """With stderr on a terminal (a pseudo-terminal, through the device
-        run's scripts/run_on_pty.py), a run longer than half a second redraws
-        one progress line in place: the sweep, the moves, and the mesh's
-        smallest and mean quality after it, which adaptive smoothing of this
-        lattice lifts far above the input's (about 0.19 to 0.7). The run is
-        sized to last several seconds here, so that the line shows even on a
-        much faster machine."""
+    PROGRESS = r"  sweep (\d+)/(\d+)  moved [\d,]+ up to \S+  q min (\S+)  mean (\S+) *"
+
+    def progress_mesh(self):
+        """A lattice whose serial smoothing lasts several seconds here (so that
+        progress shows even on a much faster machine), and its quality."""
         src = self.path("progress.tsm")
-        run("generate", "lattice-36", "-o", src, "--seed", "4", "-q")
-        before = quality_json(src)["quality"]
+        if not os.path.exists(src):
+            run("generate", "lattice-36", "-o", src, "--seed", "4", "-q")
+        return src, quality_json(src)["quality"]
+
+    def smooth_on_a_terminal(self, src, *extra):
+        """Smooths src serially with stderr on a pseudo-terminal (through the
+        device run's scripts/run_on_pty.py); what the terminal got, each
+        carriage return as a line break."""
         pty_run = os.path.join(os.environ.get("TETSMOOTH_SOURCE_DIR", os.path.join(HERE, "..", "..")), "scripts",
                                "run_on_pty.py")
         proc = subprocess.run([sys.executable, pty_run, BIN, "smooth", src, "-o", self.path("progress_out.tsm"),
-                               "--device", "cpu", "--threads", "1", "--tol", "0", "--max-iter", "100"],
+                               "--device", "cpu", "--threads", "1", "--tol", "0", *extra],
                               capture_output=True, text=True, timeout=600)
         self.assertEqual(proc.returncode, 0, proc.stdout + proc.stderr)
-        lines = re.findall(r"^  sweep (\d+)/100  moved [\d,]+ up to \S+  q min (\S+)  mean (\S+) *$", proc.stdout,
-                           re.MULTILINE)
-        self.assertTrue(lines, f"no progress line in {proc.stdout!r}")
-        sweeps = [int(sweep) for sweep, _, _ in lines]
+        return proc.stdout
+
+    def test_progress_line_on_a_terminal(self):
+        """On a terminal a run longer than half a second redraws one progress
+        line in place: the sweep, the moves, and the mesh's smallest and mean
+        quality after it, which adaptive smoothing of this lattice lifts far
+        above the input's (about 0.19 to 0.7). --progress never silences it."""
+        src, before = self.progress_mesh()
+        shown = self.smooth_on_a_terminal(src, "--max-iter", "100")
+        lines = re.findall("^" + self.PROGRESS + "$", shown, re.MULTILINE)
+        self.assertTrue(lines, f"no progress line in {shown!r}")
+        sweeps = [int(sweep) for sweep, _, _, _ in lines]
         self.assertEqual(sweeps, sorted(set(sweeps)))
-        for _, q_min, q_mean in lines:
+        for _, cap, q_min, q_mean in lines:
+            self.assertEqual(cap, "100")
             self.assertGreater(float(q_min), before["min"] + 0.3)
             self.assertGreater(float(q_mean), before["mean"])
-        self.assertIn("before", proc.stdout, "the report follows the progress line")
+        self.assertIn("before", shown, "the report follows the progress line")
+        silent = self.smooth_on_a_terminal(src, "--max-iter", "40", "--progress", "never")
+        self.assertNotRegex(silent, self.PROGRESS)
+        self.assertIn("before", silent)
+
+    def test_progress_lines_for_a_log(self):
+        """--progress always writes whole lines to a stderr that is not a
+        terminal (a batch job's log), the first after half a second and the
+        next no sooner than 10 s later; without it a log gets none."""
+        src, _ = self.progress_mesh()
+        out = self.path("progress_log.tsm")
+        proc = run("smooth", src, "-o", out, "--device", "cpu", "--threads", "1", "--tol", "0", "--max-iter", "100",
+                   "--progress", "always")
+        self.assertNotIn("\r", proc.stderr)
+        lines = re.findall("^" + self.PROGRESS + "$", proc.stderr, re.MULTILINE)
+        self.assertTrue(lines, proc.stderr)
+        self.assertLess(proc.stderr.index("  sweep "), proc.stderr.index("before"))
+        quiet = run("smooth", src, "-o", out, "--device", "cpu", "--threads", "1", "--tol", "0", "--max-iter", "40")
+        self.assertNotRegex(quiet.stderr, self.PROGRESS)
 
     def test_every_format_round_trips_exactly(self):
         # The .tsm cache stores raw doubles, so byte equality after a trip

@@ -267,7 +267,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   r.colouring_ms = m.times.colouring_ms;
   r.smoothing_ms = m.times.smoothing_ms;
   r.phase_ms = loop.phase_ms;
-  for (const SweepCount& c : read_sweep_counts(a.counters, r.sweeps, a.unit)) {
+  for (const SweepCount& c : read_sweep_counts(a.counters, 0, r.sweeps, a.unit)) {
     r.accepted_per_sweep.push_back(c.accepted);
     r.max_displacement_per_sweep.push_back(c.max_displacement);
   }

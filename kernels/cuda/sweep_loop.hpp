@@ -41,14 +41,15 @@ struct SweepLoopArgs {
 // positions are in buf1 when the count is odd. Form B works in buf0.
 inline bool latest_in_buf1(Form form, int sweeps) { return form == Form::A && (sweeps & 1); }
 
-// Sweeps [0, sweeps) of the device's per-sweep counters: each one's accepted
-// moves, and its largest move in mesh units (the working units' times
-// `unit`). Synchronous.
+// Sweeps [first, last) of the device's per-sweep counters: each one's
+// accepted moves, and its largest move in mesh units (the working units'
+// times `unit`). Synchronous; a host check reads only the sweeps it has not
+// reported yet.
 struct SweepCount {
   std::int64_t accepted = 0;
   double max_displacement = 0;
 };
-std::vector<SweepCount> read_sweep_counts(const SweepCounters& counters, int sweeps, double unit);
+std::vector<SweepCount> read_sweep_counts(const SweepCounters& counters, int first, int last, double unit);
 
 struct SweepLoopStats {
   int launches = 0;

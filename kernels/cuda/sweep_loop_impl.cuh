@@ -141,9 +141,10 @@ class SweepLauncher {
   void report_progress() {
     const int done = a_.host_state->sweep;
     if (done <= reported_) return;
-    const std::vector<SweepCount> counts = read_sweep_counts(a_.counters, done, a_.unit);
+    const std::vector<SweepCount> counts = read_sweep_counts(a_.counters, reported_, done, a_.unit);
     for (int s = reported_; s < done; ++s) {
-      SweepProgress p{s + 1, counts[s].accepted, counts[s].max_displacement, {}};
+      const SweepCount& c = counts[static_cast<std::size_t>(s - reported_)];
+      SweepProgress p{s + 1, c.accepted, c.max_displacement, {}};
       // Only the last sweep's positions are still in the buffers.
       if (s + 1 == done) p.quality = [this, done] { return quality_after(done); };
       o_.progress(p);

@@ -1,6 +1,7 @@
 #include "mesh/colouring.hpp"
 
 #include <numeric>
+#include <string>
 
 namespace tetsmooth {
 
@@ -57,15 +58,28 @@ Csr colour_classes(const std::vector<std::int32_t>& colour, int num_colours) {
   return classes;
 }
 
-bool is_valid_colouring(const Csr& neighbours, const std::vector<std::uint8_t>& movable,
-                        const std::vector<std::int32_t>& colour) {
-  for (std::size_t i = 0; i < neighbours.rows(); ++i) {
-    if (!movable[i]) continue;
-    if (colour[i] < 0) return false;
+std::string colouring_flaw(const Csr& neighbours, const std::vector<std::uint8_t>& movable, const Colouring& c) {
+  const std::size_t n = neighbours.rows();
+  if (c.colour.size() != n)
+    return "it has " + std::to_string(c.colour.size()) + " colours for " + std::to_string(n) + " nodes";
+  if (c.num_colours < 0) return "num_colours is negative";
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::int32_t k = c.colour[i];
+    if (!movable[i]) {
+      if (k != -1) return "node " + std::to_string(i) + ", which never moves, has colour " + std::to_string(k);
+      continue;
+    }
+    if (k < 0 || k >= c.num_colours)
+      return "movable node " + std::to_string(i) + " has colour " + std::to_string(k) + ", outside [0, " +
+             std::to_string(c.num_colours) + ")";
     for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j)
-      if (movable[*j] && colour[*j] == colour[i]) return false;
+      if (movable[*j] && c.colour[*j] == k)
+        return "neighbours " + std::to_string(i) + " and " + std::to_string(*j) + " share colour " + std::to_string(k);
   }
-  return true;
+  const Csr expected = colour_classes(c.colour, c.num_colours);
+  if (c.classes.offsets != expected.offsets || c.classes.items != expected.items)
+    return "its classes do not list the nodes of each colour, ascending";
+  return "";
 }
 
 }  // namespace tetsmooth

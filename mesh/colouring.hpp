@@ -9,6 +9,7 @@
 // result does not depend on the order they are processed in: the CUDA
 // version produces exactly the same colouring.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "mesh/csr.hpp"
@@ -45,8 +46,15 @@ Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& m
 // Builds `classes` from a per-node colour array (-1 = uncoloured).
 Csr colour_classes(const std::vector<std::int32_t>& colour, int num_colours);
 
-// True when no two neighbours share a colour and every movable node has one.
-bool is_valid_colouring(const Csr& neighbours, const std::vector<std::uint8_t>& movable,
-                        const std::vector<std::int32_t>& colour);
+// What keeps a colouring from fitting a mesh, in words, or "" when it fits:
+// one colour per node, a colour in [0, num_colours) for every movable node
+// and -1 for every other (the coloured sweeps would move a coloured boundary
+// node), no two movable neighbours of one colour, and `classes` exactly
+// colour_classes(colour, num_colours) (the sweeps walk the classes).
+std::string colouring_flaw(const Csr& neighbours, const std::vector<std::uint8_t>& movable, const Colouring& c);
+
+inline bool is_valid_colouring(const Csr& neighbours, const std::vector<std::uint8_t>& movable, const Colouring& c) {
+  return colouring_flaw(neighbours, movable, c).empty();
+}
 
 }  // namespace tetsmooth

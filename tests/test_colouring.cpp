@@ -14,7 +14,7 @@ TEST(Colouring, ValidOnMeshes) {
   for (const TetMesh& m : {testing::cube_grid(6, 0.2), testing::random_delaunay(1500, 5)}) {
     const Topology topo = build_topology(m);
     const Colouring c = colour_nodes(topo.neighbours, topo.movable);
-    EXPECT_TRUE(is_valid_colouring(topo.neighbours, topo.movable, c.colour));
+    EXPECT_TRUE(is_valid_colouring(topo.neighbours, topo.movable, c));
     EXPECT_GT(c.num_colours, 1);
     EXPECT_LT(c.num_colours, 40) << "first fit should need few colours on a tet mesh";
     EXPECT_GE(c.rounds, c.num_colours > 0 ? 1 : 0);
@@ -48,19 +48,52 @@ TEST(Colouring, DeterministicAndFirstFit) {
 TEST(Colouring, DetectsInvalidColouring) {
   const TetMesh m = testing::cube_grid(3);
   const Topology topo = build_topology(m);
-  Colouring c = colour_nodes(topo.neighbours, topo.movable);
-  ASSERT_TRUE(is_valid_colouring(topo.neighbours, topo.movable, c.colour));
-  // Give two interior neighbours the same colour.
-  for (std::size_t i = 0; i < m.num_nodes(); ++i) {
-    if (!topo.movable[i]) continue;
-    for (const index_t* j = topo.neighbours.row_begin(i); j != topo.neighbours.row_end(i); ++j)
-      if (topo.movable[*j]) {
-        c.colour[*j] = c.colour[i];
-        EXPECT_FALSE(is_valid_colouring(topo.neighbours, topo.movable, c.colour));
-        return;
-      }
+  const Colouring good = colour_nodes(topo.neighbours, topo.movable);
+  ASSERT_EQ(colouring_flaw(topo.neighbours, topo.movable, good), "");
+  const auto flaw = [&](const Colouring& c) { return colouring_flaw(topo.neighbours, topo.movable, c); };
+  const auto first = [&](bool movable) {
+    return static_cast<std::size_t>(std::find(topo.movable.begin(), topo.movable.end(), movable ? 1 : 0) -
+                                    topo.movable.begin());
+  };
+  {  // two interior neighbours with one colour, the classes rebuilt to match
+    Colouring c = good;
+    const std::size_t i = first(true);
+    const index_t* j = std::find_if(topo.neighbours.row_begin(i), topo.neighbours.row_end(i),
+                                    [&](index_t k) { return topo.movable[k] != 0; });
+    ASSERT_NE(j, topo.neighbours.row_end(i)) << "no two movable neighbours in a 3x3x3 grid";
+    c.colour[*j] = c.colour[i];
+    c.classes = colour_classes(c.colour, c.num_colours);
+    EXPECT_NE(flaw(c).find("share colour"), std::string::npos) << flaw(c);
   }
-  FAIL() << "no two movable neighbours in a 3x3x3 grid";
+  {  // a boundary node with a colour would be moved by the coloured sweeps
+    Colouring c = good;
+    c.colour[first(false)] = 0;
+    c.classes = colour_classes(c.colour, c.num_colours);
+    EXPECT_NE(flaw(c).find("never moves"), std::string::npos) << flaw(c);
+  }
+  {  // a movable node without one, or with one past num_colours
+    Colouring c = good;
+    c.colour[first(true)] = -1;
+    EXPECT_NE(flaw(c).find("outside"), std::string::npos) << flaw(c);
+    c.colour[first(true)] = good.num_colours;
+    EXPECT_NE(flaw(c).find("outside"), std::string::npos) << flaw(c);
+  }
+  {  // classes that disagree with the colours, or a count the classes lack
+    Colouring c = good;
+    c.classes = Csr{};
+    EXPECT_NE(flaw(c).find("classes"), std::string::npos) << flaw(c);
+    c = good;
+    c.num_colours += 3;
+    EXPECT_NE(flaw(c).find("classes"), std::string::npos) << flaw(c);
+    c = good;
+    std::swap(c.classes.items.front(), c.classes.items.back());
+    EXPECT_NE(flaw(c).find("classes"), std::string::npos) << flaw(c);
+  }
+  {  // a colour array of another mesh
+    Colouring c = good;
+    c.colour.pop_back();
+    EXPECT_NE(flaw(c).find("nodes"), std::string::npos) << flaw(c);
+  }
 }
 
 }  // namespace

@@ -173,8 +173,8 @@ SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& opt, const Colouring
   if (coloured) {
     t0 = Clock::now();
     if (given) {
-      if (given->colour.size() != mesh.num_nodes() || !is_valid_colouring(topo.neighbours, topo.movable, given->colour))
-        throw UsageError("the colouring given to smooth_cpu does not fit this mesh");
+      const std::string flaw = colouring_flaw(topo.neighbours, topo.movable, *given);
+      if (!flaw.empty()) throw UsageError("the colouring given to smooth_cpu does not fit this mesh: " + flaw);
       colouring = given;
     } else {
       computed = colour_nodes(topo.neighbours, topo.movable);

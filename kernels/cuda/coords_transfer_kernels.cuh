@@ -35,4 +35,17 @@ __global__ void store_coords_kernel(Coords in, double* out, const std::uint8_t* 
   out[3 * i + 2] = static_cast<double>(v.z) * scale + cz;
 }
 
+// Counts the nodes that never move whose working coordinates differ from
+// `loaded`, the input converted afresh the way the run's were: the sweeps
+// must leave such nodes as they were loaded, and store_coords_kernel, which
+// writes back only movable nodes, would hide it if they did not.
+template <class Real, class Coords>
+__global__ void count_moved_fixed_kernel(Coords working, Coords loaded, const std::uint8_t* movable, index_t n,
+                                         unsigned long long* count) {
+  const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
+  if (i >= n || movable[i]) return;
+  const Vec3<Real> a = working.get(i), b = loaded.get(i);
+  if (a.x != b.x || a.y != b.y || a.z != b.z) atomicAdd(count, 1ull);
+}
+
 }  // namespace tetsmooth::cuda

@@ -33,6 +33,11 @@ SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colo
   // The summaries need the movable flags; the host topology is cheap next to
   // reading and writing the mesh files around this call.
   const Topology topo = build_topology(mesh);
+  // The coloured loop trusts its classes: a node listed there moves.
+  if (colouring && options.strategy == Strategy::Coloured) {
+    const std::string flaw = colouring_flaw(topo.neighbours, topo.movable, *colouring);
+    if (!flaw.empty()) throw UsageError("the colouring given to smooth_cuda does not fit this mesh: " + flaw);
+  }
   const QualitySummary before = summarize_quality(mesh, topo.movable);
   cuda::GpuPipeline pipeline(mesh);
   pipeline.restore_coordinates(options);

@@ -48,6 +48,10 @@ struct GpuPipeline::Impl {
   bool result_in_buf1 = false;
   GpuRunTimes times;
 
+  // The input converted into buffer `b` (3n Real) in the precision and
+  // layout of the last restore_coordinates.
+  void load_input(void* b);
+
   ~Impl() {
     if (host_state) CUDA_CHECK_NOTHROW(cudaFreeHost(host_state));
     if (stream) CUDA_CHECK_NOTHROW(cudaStreamDestroy(stream));
@@ -113,23 +117,26 @@ std::size_t GpuPipeline::num_tets() const { return impl_->t; }
 std::size_t GpuPipeline::neighbour_entries() const { return impl_->topo.nbr.size(); }
 const GpuRunTimes& GpuPipeline::last_times() const { return impl_->times; }
 
+// Double works in mesh units, so it does the CPU's arithmetic; float works
+// in the unit box around the mesh, where its precision is best.
+void GpuPipeline::Impl::load_input(void* b) {
+  Impl& m = *this;
+  const index_t n = static_cast<index_t>(m.n);
+  const double identity[3] = {0, 0, 0};
+  const bool is_float = m.precision == Precision::Float;
+  const double* c = is_float ? m.centre : identity;
+  const double inv = is_float ? 1.0 / m.scale : 1.0;
+  if (is_float)
+    load_working_coords<float>(m.input.data(), b, n, m.layout, c, inv, m.stream);
+  else
+    load_working_coords<double>(m.input.data(), b, n, m.layout, c, inv, m.stream);
+}
+
 void GpuPipeline::restore_coordinates(const SmoothOptions& o) {
   Impl& m = *impl_;
   m.precision = o.precision;
   m.layout = o.layout;
-  const index_t n = static_cast<index_t>(m.n);
-  // Double works in mesh units, so it does the CPU's arithmetic; float works
-  // in the unit box around the mesh, where its precision is best.
-  const double identity[3] = {0, 0, 0};
-  const bool is_float = o.precision == Precision::Float;
-  const double* c = is_float ? m.centre : identity;
-  const double inv = is_float ? 1.0 / m.scale : 1.0;
-  for (DeviceBuffer<double>* b : {&m.buf0, &m.buf1}) {
-    if (is_float)
-      load_working_coords<float>(m.input.data(), b->data(), n, o.layout, c, inv, m.stream);
-    else
-      load_working_coords<double>(m.input.data(), b->data(), n, o.layout, c, inv, m.stream);
-  }
+  for (DeviceBuffer<double>* b : {&m.buf0, &m.buf1}) m.load_input(b->data());
   m.result_in_buf1 = false;
   CUDA_CHECK(cudaStreamSynchronize(m.stream));
 }
@@ -295,6 +302,23 @@ std::vector<double> GpuPipeline::download_xyz() const {
   else
     store_movable_coords<double>(src, m.output.data(), m.topo.movable.data(), n, m.layout, identity, 1.0, m.stream);
   return m.output.download(m.stream);
+}
+
+std::size_t GpuPipeline::fixed_nodes_moved() const {
+  Impl& m = *impl_;
+  if (m.topo.movable.size() != m.n)
+    throw UsageError("GpuPipeline::fixed_nodes_moved: run() has not been called");
+  const index_t n = static_cast<index_t>(m.n);
+  DeviceBuffer<double> loaded(m.buf0.size());
+  DeviceBuffer<unsigned long long> count(1);
+  CUDA_CHECK(cudaMemsetAsync(count.data(), 0, sizeof(unsigned long long), m.stream));
+  m.load_input(loaded.data());
+  const void* working = m.result_in_buf1 ? m.buf1.data() : m.buf0.data();
+  if (m.precision == Precision::Float)
+    count_moved_fixed<float>(working, loaded.data(), m.topo.movable.data(), n, m.layout, count.data(), m.stream);
+  else
+    count_moved_fixed<double>(working, loaded.data(), m.topo.movable.data(), n, m.layout, count.data(), m.stream);
+  return static_cast<std::size_t>(count.download(m.stream).front());
 }
 
 double measure_copy_bandwidth(std::size_t bytes, int repetitions) {

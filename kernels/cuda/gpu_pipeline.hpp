@@ -47,13 +47,21 @@ class GpuPipeline {
   // Runs topology + colouring + smoothing on the working coordinates; the
   // result has sweeps, per-sweep counters, stop reason and phase times
   // (quality summaries are left for the caller). `colouring` replaces the
-  // device colouring (tests use the CPU one). Synchronises at the end.
+  // device colouring (tests use the CPU one); it must fit the mesh
+  // (colouring_flaw, which smooth_cuda checks on the host topology), since
+  // every node its classes list may move. Synchronises at the end.
   SmoothResult run(const SmoothOptions& options, const Colouring* colouring = nullptr);
 
   const GpuRunTimes& last_times() const;
 
   // The working coordinates as double AoS (3 per node), in mesh units.
   std::vector<double> download_xyz() const;
+
+  // After run(): how many nodes that never move (boundary, pinned, in no
+  // tet) the run left other than restore_coordinates loaded them, in the
+  // working coordinates themselves (download_xyz writes back movable nodes
+  // only, so it cannot show this). 0 unless a kernel is wrong; for tests.
+  std::size_t fixed_nodes_moved() const;
 
   // Entries of the device neighbour CSR (twice the unique edges), after run().
   std::size_t neighbour_entries() const;

@@ -69,6 +69,11 @@ void load_working_coords(const double* input, void* buf, index_t n, Layout layou
 template <class Real>
 void store_movable_coords(const void* buf, double* out, const std::uint8_t* movable, index_t n, Layout layout,
                           const double centre[3], double scale, cudaStream_t stream);
+// How many nodes that never move have working coordinates other than
+// `loaded` (the same layout and precision) holds; adds them to *count.
+template <class Real>
+void count_moved_fixed(const void* working, const void* loaded, const std::uint8_t* movable, index_t n, Layout layout,
+                       unsigned long long* count, cudaStream_t stream);
 template <class Real>
 void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout layout, SweepState* state,
                       cudaStream_t stream);

@@ -3,6 +3,7 @@
 // sweep_loop_float.cu and sweep_loop_double.cu (splitting keeps nvcc's
 // translation units small).
 #include <algorithm>
+#include <type_traits>
 
 #include "kernels/cuda/coloured_loop_launch.cuh"
 #include "kernels/cuda/coords_transfer_kernels.cuh"
@@ -228,6 +229,19 @@ void store_movable_coords(const void* buf, double* out, const std::uint8_t* mova
 }
 
 template <class Real>
+void count_moved_fixed(const void* working, const void* loaded, const std::uint8_t* movable, index_t n, Layout layout,
+                       unsigned long long* count, cudaStream_t stream) {
+  detail::with_layout<Real>(layout, const_cast<void*>(working), n, [&](auto w) {
+    detail::with_layout<Real>(layout, const_cast<void*>(loaded), n, [&](auto l) {
+      if constexpr (std::is_same_v<decltype(w), decltype(l)>) {
+        count_moved_fixed_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(w, l, movable, n, count);
+        CUDA_CHECK_LAUNCH();
+      }
+    });
+  });
+}
+
+template <class Real>
 void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout layout, SweepState* state,
                       cudaStream_t stream) {
   detail::with_layout<Real>(layout, const_cast<void*>(buf), n, [&](auto coords) {
@@ -244,6 +258,8 @@ void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout l
                                           cudaStream_t);                                                           \
   template void store_movable_coords<Real>(const void*, double*, const std::uint8_t*, index_t, Layout,            \
                                            const double*, double, cudaStream_t);                                   \
+  template void count_moved_fixed<Real>(const void*, const void*, const std::uint8_t*, index_t, Layout,               \
+                                        unsigned long long*, cudaStream_t);                                        \
   template void sum_edge_lengths<Real>(const MeshView&, const void*, index_t, Layout, SweepState*, cudaStream_t);
 
 }  // namespace tetsmooth::cuda

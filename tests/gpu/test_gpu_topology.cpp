@@ -57,7 +57,7 @@ void expect_same_as_cpu(const TetMesh& mesh, unsigned colour_blocks, bool order_
   EXPECT_EQ(gpu.colouring.rounds, cpu_colouring.rounds);
   EXPECT_TRUE(same(gpu.colouring.classes.offsets, cpu_colouring.classes.offsets)) << "class offsets";
   EXPECT_TRUE(same(gpu.colouring.classes.items, cpu_colouring.classes.items)) << "class nodes";
-  EXPECT_TRUE(is_valid_colouring(cpu.neighbours, cpu.movable, gpu.colouring.colour));
+  EXPECT_TRUE(is_valid_colouring(cpu.neighbours, cpu.movable, gpu.colouring));
 }
 
 // Twice: with the colouring's priority order sorted by the colouring, and

@@ -81,6 +81,59 @@ TEST(CpuSmoother, AdaptiveNeverLowersMinimumSweepBySweep) {
   }
 }
 
+// The rule node by node and tet by tet, one sweep at a time, on meshes with
+// inverted tets (nodes pushed through their neighbours): no valid tet
+// becomes invalid and no invalid one gets worse (both forms); and in Form A,
+// whose movers are judged together and repaired where they share a tet,
+// every node that moved ends the sweep with a higher minimum over its tets
+// than it started with. (In Form B a later neighbour's move may lower a
+// node's minimum again; that neighbour's own minimum rises.)
+TEST(CpuSmoother, EachSweepKeepsTheRuleNodeByNodeAndTetByTet) {
+  long long movers = 0, reverted = 0, inverted_seen = 0;
+  for (Form form : {Form::A, Form::B})
+    for (int threads : {1, 2}) {
+      TetMesh m = testing::cube_grid(7, 0.3, 5);
+      const Topology topo = build_topology(m);
+      for (std::size_t n = 0; n < m.num_nodes(); n += 5)
+        if (topo.movable[n]) m.xyz[3 * n] += 1.5;  // the spacing is 1: inverts tets
+      SmoothOptions o = options(Method::Adaptive, form, threads);
+      o.max_iterations = 1;
+      for (int sweep = 0; sweep < 6; ++sweep) {
+        SCOPED_TRACE(std::string("form ") + to_string(form) + ", threads " + std::to_string(threads) + ", sweep " +
+                     std::to_string(sweep));
+        const std::vector<double> xyz = m.xyz;
+        const std::vector<double> q0 = tet_qualities(m);
+        const SmoothResult r = smooth_cpu(m, o);
+        reverted += r.reverted_moves;
+        const std::vector<double> q1 = tet_qualities(m);
+        for (std::size_t t = 0; t < q0.size(); ++t) {
+          inverted_seen += q0[t] <= 0;
+          if (q0[t] > 0) {
+            EXPECT_GT(q1[t], 0) << "tet " << t;
+          } else {
+            EXPECT_GE(q1[t], q0[t]) << "tet " << t;
+          }
+        }
+        if (form != Form::A) continue;
+        for (std::size_t i = 0; i < m.num_nodes(); ++i) {
+          if (std::equal(xyz.begin() + 3 * i, xyz.begin() + 3 * i + 3, m.xyz.begin() + 3 * i)) continue;
+          double min0 = 2, min1 = 2;
+          for (const index_t* t = topo.node_tets.row_begin(i); t != topo.node_tets.row_end(i); ++t) {
+            min0 = std::min(min0, q0[*t]);
+            min1 = std::min(min1, q1[*t]);
+          }
+          EXPECT_GT(min1, min0) << "node " << i;
+          ++movers;
+        }
+      }
+    }
+  // The meshes reach the clauses under test: inverted tets, Form A movers,
+  // and conflicts that the repair resolved.
+  EXPECT_GT(inverted_seen, 0);
+  EXPECT_GT(movers, 0);
+  EXPECT_GT(reverted, 0);
+}
+
 TEST(CpuSmoother, ColouredFormBIsIdenticalForAnyThreadCount) {
   TetMesh serial = testing::random_delaunay(2000, 21);
   TetMesh threaded = serial;
@@ -116,9 +169,29 @@ TEST(CpuSmoother, GivenColouringIsUsedAndChecked) {
   ASSERT_EQ(r.colour_sizes.size(), static_cast<std::size_t>(c.num_colours));
   for (int k = 0; k < c.num_colours; ++k) EXPECT_EQ(r.colour_sizes[k], c.classes.row_size(k)) << "colour " << k;
   EXPECT_TRUE(r.colour_ms.empty());  // timed per colour by the GPU loop only
-  std::fill(c.colour.begin(), c.colour.end(), 0);
-  copy = m;
-  EXPECT_THROW(smooth_cpu(copy, o, &c), UsageError);
+  // Refused, and the mesh untouched: every colour the same; classes that
+  // disagree with the colours (the sweeps walk the classes); a coloured
+  // boundary node.
+  const auto refused = [&](const Colouring& bad) {
+    TetMesh untouched = m;
+    EXPECT_THROW(smooth_cpu(untouched, o, &bad), UsageError);
+    EXPECT_EQ(untouched.xyz, m.xyz);
+  };
+  Colouring bad = c;
+  std::fill(bad.colour.begin(), bad.colour.end(), 0);
+  refused(bad);
+  bad = c;
+  bad.classes = Csr{};
+  bad.num_colours = 0;
+  refused(bad);
+  bad = c;
+  bad.num_colours += 3;
+  refused(bad);
+  bad = c;
+  const auto boundary = std::find(topo.movable.begin(), topo.movable.end(), 0) - topo.movable.begin();
+  bad.colour[static_cast<std::size_t>(boundary)] = 0;
+  bad.classes = colour_classes(bad.colour, bad.num_colours);
+  refused(bad);
 }
 
 TEST(CpuSmoother, InvertedInputTetIsNeverMadeWorse) {
@@ -156,12 +229,28 @@ TEST(CpuSmoother, StoppingRule) {
   r = smooth_cpu(m, o);
   EXPECT_EQ(r.sweeps, 1);
   EXPECT_EQ(r.stop, StopReason::Tolerance);
+  o.max_iterations = 1;  // the cap and the tolerance in the same sweep: the tolerance is the reason
+  r = smooth_cpu(m, o);
+  EXPECT_EQ(r.sweeps, 1);
+  EXPECT_EQ(r.stop, StopReason::Tolerance);
+  o.max_iterations = 100;
   o.tolerance = 0;    // only "no moves" or the cap can stop it now
   r = smooth_cpu(m, o);
-  EXPECT_TRUE(r.stop == StopReason::NoMoves || r.sweeps == 100);
   if (r.stop == StopReason::NoMoves) {
     EXPECT_EQ(r.accepted_per_sweep.back(), 0);
+  } else {
+    EXPECT_EQ(r.stop, StopReason::MaxIterations);
+    EXPECT_EQ(r.sweeps, 100);
   }
+  // A centre node already at its neighbours' centroid: its move changes no
+  // quality, so the minimum cannot rise and the first sweep moves nothing.
+  TetMesh settled = testing::cube_with_centre();
+  const std::vector<double> settled_input = settled.xyz;
+  r = smooth_cpu(settled, o);
+  EXPECT_EQ(r.stop, StopReason::NoMoves);
+  EXPECT_EQ(r.sweeps, 1);
+  EXPECT_EQ(r.accepted_per_sweep, std::vector<std::int64_t>{0});
+  EXPECT_EQ(settled.xyz, settled_input);
   int calls = 0;
   o.max_iterations = 3;
   o.progress = [&](const SweepProgress& p) { EXPECT_EQ(p.sweep, ++calls); };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/atomic_file.hpp"
 #include "mesh/io/tetgen_io.hpp"
 
 namespace tetsmooth::cli {
@@ -38,7 +39,10 @@ void check_output_location(const std::string& path) {
   const auto fail = [&](const std::string& why) { throw OutputError("cannot write '" + path + "': " + why); };
   std::error_code ec;
   if (fs::is_directory(path, ec)) fail("it is a directory");
-  const fs::path parent = fs::path(path).parent_path();
+  // The write lands where the target's links end: that directory must exist.
+  const LinkEnd end = follow_links(path);
+  if (end.endless) fail(std::strerror(ELOOP));
+  const fs::path parent = fs::path(end.path).parent_path();
   const std::string dir = parent.empty() ? "." : parent.string();
   const fs::file_status status = fs::status(dir, ec);
   if (!fs::exists(status)) fail("directory '" + dir + "' does not exist");

@@ -985,6 +985,14 @@ TEST_F(CliFiles, OutputCheckRejectsDirectoriesAndMissingParents) {
   std::ofstream(path("file")) << "x";
   EXPECT_THROW(check_output_location(path("file/x.vtu")), OutputError);
   EXPECT_NO_THROW(check_output_location(path("fine.vtu")));
+  // Where links lead: into a missing directory, or round in a cycle.
+  std::filesystem::create_symlink("missing/x.vtu", path("dangling.vtu"));
+  EXPECT_THROW(check_output_location(path("dangling.vtu")), OutputError);
+  std::filesystem::create_symlink("fine_b.vtu", path("loop_a.vtu"));
+  std::filesystem::create_symlink("loop_a.vtu", path("fine_b.vtu"));
+  EXPECT_THROW(check_output_location(path("loop_a.vtu")), OutputError);
+  std::filesystem::create_symlink("fine.vtu", path("to_fine.vtu"));
+  EXPECT_NO_THROW(check_output_location(path("to_fine.vtu")));
 }
 
 }  // namespace

@@ -6,8 +6,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <csignal>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
@@ -225,6 +226,22 @@ TEST_F(IoDir, AtomicWriteFollowsSymbolicLinks) {
   write_atomically(path("dangling.txt"), [](std::ostream& out) { out << "made"; });
   EXPECT_TRUE(fs::is_symlink(path("dangling.txt")));
   EXPECT_EQ(contents(path("real/later.txt")), "made");
+  // Links in a cycle name no file: refused as open() refuses them, both
+  // links left as they were and no temporary.
+  fs::create_symlink("loop_b.txt", path("loop_a.txt"));
+  fs::create_symlink("loop_a.txt", path("loop_b.txt"));
+  EXPECT_TRUE(follow_links(path("loop_a.txt")).endless);
+  EXPECT_FALSE(follow_links(path("link.txt")).endless);
+  EXPECT_EQ(follow_links(path("link.txt")).path, path("real/t.txt"));
+  try {
+    write_atomically(path("loop_a.txt"), [](std::ostream& out) { out << "lost"; });
+    ADD_FAILURE() << "a write through a cycle of links succeeded";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(std::strerror(ELOOP)), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::is_symlink(path("loop_a.txt")));
+  EXPECT_TRUE(fs::is_symlink(path("loop_b.txt")));
+  EXPECT_EQ(files(), 4u);
 }
 
 TEST_F(IoDir, AtomicWriteKeepsTheModeOfTheFileItReplaces) {
@@ -255,14 +272,19 @@ TEST_F(IoDir, AtomicWriteIntoAFifoWritesThrough) {
 // process, and the old file stays.
 TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
   write_atomically(path("t.txt"), [](std::ostream& out) { out << "old"; });
-  EXPECT_EXIT(write_atomically(path("t.txt"),
-                               [](std::ostream& out) {
-                                 out << std::string(1 << 20, 'x');  // part of it already in the file
-                                 std::raise(SIGTERM);
-                               }),
-              ::testing::KilledBySignal(SIGTERM), "");
-  EXPECT_EQ(contents(path("t.txt")), "old");
-  EXPECT_EQ(files(), 1u);
+  // Ctrl-C and kill, and the quieter ends: a broken pipe, a timer, a user
+  // signal, a CPU or file-size limit.
+  for (int sig : {SIGTERM, SIGINT, SIGPIPE, SIGALRM, SIGUSR1, SIGXCPU, SIGXFSZ}) {
+    SCOPED_TRACE(strsignal(sig));
+    EXPECT_EXIT(write_atomically(path("t.txt"),
+                                 [sig](std::ostream& out) {
+                                   out << std::string(1 << 20, 'x');  // part of it already in the file
+                                   std::raise(sig);
+                                 }),
+                ::testing::KilledBySignal(sig), "");
+    EXPECT_EQ(contents(path("t.txt")), "old");
+    EXPECT_EQ(files(), 1u);
+  }
 }
 
 TEST_F(IoDir, WriteMeshFailureLeavesNoFile) {

@@ -65,36 +65,16 @@ class FdBuf : public std::streambuf {
   char buf_[1 << 16];
 };
 
-// The path a write to `path` lands on: symbolic links followed to their
-// end, each relative one against its own directory. A cycle or a chain too
-// long ends with the path reached, and the write reports what open() says.
-// `held` is set when the chain goes through /proc (/dev/stdout is a link to
-// /proc/self/fd/1): the file is one this process has open, and renaming
-// another over it would cut it off from that descriptor.
-std::string resolve_links(std::string path, bool& held) {
-  held = false;
-  for (int hop = 0; hop < 40; ++hop) {
-    struct stat st {};
-    if (::lstat(path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return path;
-    std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
-    const ssize_t n = ::readlink(path.c_str(), link.data(), link.size());
-    if (n < 0 || static_cast<std::size_t>(n) >= link.size()) return path;
-    link.resize(static_cast<std::size_t>(n));
-    const std::size_t slash = path.rfind('/');
-    path = link[0] == '/' || slash == std::string::npos ? link : path.substr(0, slash + 1) + link;
-    if (path.compare(0, 6, "/proc/") == 0) held = true;
-  }
-  return path;
-}
-
 // Where the bytes go: a temporary beside the target, renamed over it by
 // commit() and removed otherwise; or, for a target that is a device, FIFO or
 // socket, or a file this process holds open through /proc, the target itself.
 class TempFile {
  public:
   explicit TempFile(const std::string& target) : target_(target) {
-    bool held = false;
-    dest_ = resolve_links(target_, held);
+    const LinkEnd end = follow_links(target_);
+    if (end.endless) fail(target_, "", ELOOP);
+    const bool held = end.held;
+    dest_ = end.path;
     struct stat st {};
     const bool exists = ::stat(target_.c_str(), &st) == 0;  // through every link, /proc's too
     if (exists && ((!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) || held)) {
@@ -183,6 +163,24 @@ class TempFile {
 };
 
 }  // namespace
+
+LinkEnd follow_links(const std::string& start) {
+  LinkEnd end{start};
+  for (int hop = 0; hop < 40; ++hop) {
+    struct stat st {};
+    if (::lstat(end.path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return end;
+    std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');
+    const ssize_t n = ::readlink(end.path.c_str(), link.data(), link.size());
+    if (n < 0 || static_cast<std::size_t>(n) >= link.size()) return end;
+    link.resize(static_cast<std::size_t>(n));
+    const std::size_t slash = end.path.rfind('/');
+    end.path = link[0] == '/' || slash == std::string::npos ? link : end.path.substr(0, slash + 1) + link;
+    if (end.path.compare(0, 6, "/proc/") == 0) end.held = true;
+  }
+  struct stat st {};
+  end.endless = ::lstat(end.path.c_str(), &st) == 0 && S_ISLNK(st.st_mode);
+  return end;
+}
 
 void write_atomically(const std::string& path, const StreamBody& body, bool binary) {
   write_atomically(std::vector<AtomicPart>{{path, body}}, binary);

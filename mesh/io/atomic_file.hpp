@@ -5,11 +5,13 @@
 // target. On any failure the temporary is removed and OutputError names the
 // path and the reason (strerror). Exceptions thrown by the body itself are
 // passed on unchanged, after the same clean-up, and an interrupting signal
-// (SIGINT, SIGTERM, SIGHUP) removes the temporary too (temp_file_cleanup.hpp).
+// (SIGINT, SIGTERM, SIGHUP, ...) removes the temporary too
+// (temp_file_cleanup.hpp).
 //
 // What stands at the target decides the rest:
 //  * a symbolic link is followed (to its end, even a dangling one): the file
-//    it names is replaced and the link stays a link;
+//    it names is replaced and the link stays a link; links that never end (a
+//    cycle, or more than 40) fail as open() would, with ELOOP;
 //  * an existing regular file keeps its permission bits;
 //  * a device, FIFO or socket (a terminal, a pipe), or a file the process
 //    holds open, reached through /proc (/dev/stdout sent to a file), is
@@ -24,6 +26,18 @@
 namespace tetsmooth {
 
 using StreamBody = std::function<void(std::ostream&)>;
+
+// Where a write to `path` lands: symbolic links followed to their end, each
+// relative one against its own directory. `held` when the chain goes through
+// /proc (/dev/stdout is a link to /proc/self/fd/1): the file is one this
+// process has open, and renaming another over it would cut it off from that
+// descriptor. `endless` when the links do not end (a cycle, or more than 40
+// of them); `path` is then the last one reached.
+struct LinkEnd {
+  std::string path;
+  bool held = false, endless = false;
+};
+LinkEnd follow_links(const std::string& path);
 
 // `binary` states the body's intent; on POSIX both modes write the bytes as
 // given (no newline translation), so it only matters on platforms with a

@@ -23,7 +23,11 @@ struct Slot {
 Slot g_slots[kSlots];
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
 
-constexpr int kSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// Every signal whose default action ends the process without a core dump's
+// debugging value to lose, or with one (SIGQUIT): a temporary left by any of
+// them would be as stray as one left by Ctrl-C. (SIGKILL cannot be caught.)
+constexpr int kSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGPIPE,   SIGALRM,
+                            SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
 
 extern "C" void remove_temps_and_die(int sig) {
   for (Slot& s : g_slots)

@@ -3,9 +3,10 @@
 //
 // write_atomically (atomic_file.hpp) writes beside its target and renames at
 // the end; a Ctrl-C or a kill during a long write would otherwise leave the
-// hidden temporary behind. While a temporary is registered here, SIGINT,
-// SIGTERM and SIGHUP unlink it and then end the process as the signal's
-// default action would. The handlers are installed on first use, and only
+// hidden temporary behind. While a temporary is registered here, the
+// signals whose default action ends the process (SIGINT, SIGTERM, SIGHUP,
+// SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1/2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF)
+// unlink it and then end the process as that default action would. The handlers are installed on first use, and only
 // for signals whose disposition is still the default: a program that
 // handles them itself keeps its own handlers (and its own clean-up).
 #include <string>

@@ -688,6 +688,19 @@ TEST_F(CliFiles, RepeatedTetsAreNamedAndKeepTheBoundary) {
   EXPECT_GT(moved, 0u);
 }
 
+// Coordinates so large or so small that the radius ratio leaves double's
+// range: a warning says so, for the mesh units in which it reads q = 0.
+TEST_F(CliFiles, CoordinatesBeyondTheRadiusRatiosRangeAreNamed) {
+  for (double scale : {1e40, 1e-40, 1.0}) {
+    TetMesh mesh = testing::cube_with_centre();
+    for (double& x : mesh.xyz) x *= scale;
+    write_mesh(mesh, path("scaled.vtu"));
+    const CliRun r = run({"quality", path("scaled.vtu")});
+    EXPECT_EQ(r.code, kExitOk);
+    EXPECT_EQ(r.err.find("the nodes span") != std::string::npos, scale != 1.0) << scale << ": " << r.err;
+  }
+}
+
 // Every tet inverted: the warning points at the file's orientation.
 TEST_F(CliFiles, AllTetsInvertedSuggestsTheOppositeOrientation) {
   TetMesh mesh = testing::cube_with_centre();

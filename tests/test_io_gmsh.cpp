@@ -18,6 +18,7 @@
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "mesh/io/writable_check.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
 
@@ -711,6 +712,100 @@ TEST(GmshIo, FileWriterReplacesTargetOrThrows) {
   EXPECT_EQ(read_gmsh_file(path).xyz, mesh.xyz);
   EXPECT_THROW(write_gmsh_file(mesh, (dir / "missing" / "out.msh").string(), MshFlavour::V41Ascii, {}), OutputError);
   std::filesystem::remove_all(dir);
+}
+
+// Two tets on volumes 1 and 2, both volumes in physical group 13 as well
+// as in 11 and 12 (as Gmsh saves two fragmented boxes with groups
+// (3,11)=[1], (3,12)=[2], (3,13)=[1,2]).
+const char* kTwoGroups41 =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$Entities\n0 0 0 2\n1 0 0 0 1 1 1 2 11 13 0\n2 0 0 -1 1 1 0 2 12 13 0\n$EndEntities\n"
+    "$Nodes\n1 5 1 5\n3 1 0 5\n1\n2\n3\n4\n5\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n0 0 -1\n$EndNodes\n"
+    "$Elements\n2 2 1 2\n3 1 4 1\n1 1 2 3 4\n3 2 4 1\n2 1 3 2 5\n$EndElements\n";
+
+TEST(GmshIo, Msh22WritesAnElementOncePerPhysicalGroupUnderOneNumber) {
+  const TetMesh mesh = read_text(kTwoGroups41);
+  MeshFields fields;
+  fields.tet_scalars.emplace_back("quality", std::vector<double>{0.5, 0.25});  // not noted on reading
+  const std::string v22 = write_text(mesh, MshFlavour::V22Ascii, fields);
+  EXPECT_NE(v22.find("$Elements\n4\n1 4 2 11 1 1 2 3 4\n1 4 2 13 1 1 2 3 4\n2 4 2 12 2 1 3 2 5\n"
+                     "2 4 2 13 2 1 3 2 5\n$EndElements\n"),
+            std::string::npos)
+      << v22;
+  // A value a line, for readers that take them in the order of the lines.
+  EXPECT_NE(v22.find("\n4\n1 0.5\n1 0.5\n2 0.25\n2 0.25\n$EndElementData\n"), std::string::npos) << v22;
+
+  // Read back: each tet once, the first group its region tag, and every
+  // group kept for the next MSH output.
+  const TetMesh back = read_text(v22);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.tet_tags, (std::vector<int>{11, 12}));
+  EXPECT_EQ(back.extras.tet_element_tags, (std::vector<long long>{1, 2}));
+  EXPECT_TRUE(back.extras.read_notes.empty());
+  EXPECT_EQ(write_text(back, MshFlavour::V22Ascii, fields), v22);
+  const TetMesh v41 = read_text(write_text(back, MshFlavour::V41Ascii));
+  const gmsh::Entities entities = gmsh::parse_entities_text(*raw_section(v41, "$Entities"), "v41");
+  ASSERT_NE(entities.find(3, 1), nullptr);
+  ASSERT_NE(entities.find(3, 2), nullptr);
+  EXPECT_EQ(entities.find(3, 1)->physicals, (std::vector<int>{11, 13}));
+  EXPECT_EQ(entities.find(3, 2)->physicals, (std::vector<int>{12, 13}));
+  EXPECT_EQ(v41.tets, mesh.tets);
+}
+
+TEST(GmshIo, Msh22ElementsOfOneEntityInDifferentGroupsKeepTheirFirst) {
+  // Tet 1 in groups 11 and 13, tet 2 of the same volume only in 11.
+  const std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n$EndNodes\n"
+      "$Elements\n3\n1 4 2 11 1 1 2 3 4\n1 4 2 13 1 1 2 3 4\n2 4 2 11 1 1 3 2 5\n$EndElements\n";
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.num_tets(), 2u);
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{11, 11}));
+  EXPECT_EQ(raw_section(mesh, "$Entities"), nullptr);
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"1 elements are listed once per physical group, but not every element of "
+                                      "their elementary entity is in the same groups: they keep only their first "
+                                      "group"}));
+  // Lines under different numbers are different elements, as Gmsh reads them.
+  const TetMesh twice = read_text(replaced(text, "1 4 2 13", "3 4 2 13"));
+  EXPECT_EQ(twice.num_tets(), 3u);
+}
+
+TEST(GmshIo, Msh22PartitionTagsAreNoted) {
+  const std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n$EndNodes\n"
+      "$Elements\n2\n1 4 4 7 1 1 1 1 2 3 4\n2 4 4 7 1 1 2 1 3 2 5\n$EndElements\n";
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"the partition tags of 2 elements are dropped: the partitions are merged; "
+                                      "the written file is not partitioned"}));
+  // Three tags where the third counts no partitions: nothing dropped.
+  EXPECT_TRUE(read_text(replaced(replaced(text, "1 4 4 7 1 1 1 1", "1 4 3 7 1 0 1"), "2 4 4 7 1 1 2 1", "2 4 2 7 1 1"))
+                  .extras.read_notes.empty());
+}
+
+TEST(GmshIo, EmptyElementBlockMakesNoPassThroughBlock) {
+  const TetMesh mesh = read_text(replaced(kMinimal, "$Elements\n1 1 1 1\n", "$Elements\n2 1 1 1\n3 1 5 0\n"));
+  EXPECT_TRUE(mesh.extras.blocks.empty());
+  EXPECT_TRUE(mesh.fixed.empty());
+}
+
+// VTU, VTK, Medit and TetGen give a cell one region tag, the first group.
+TEST(GmshIo, OneTagFormatsNoteTheGroupsTheyDrop) {
+  const TetMesh mesh = read_text(kTwoGroups41);
+  for (const char* name : {"out.vtu", "out.vtk", "out.mesh"})
+    EXPECT_EQ(output_losses(mesh, name),
+              (std::vector<std::string>{"2 elements in several Gmsh physical groups will keep only the first: " +
+                                        std::string(format_name(format_from_path(name))) +
+                                        " holds one region tag per element"}))
+        << name;
+  EXPECT_EQ(output_losses(mesh, "out.node"),
+            (std::vector<std::string>{
+                "2 elements in several Gmsh physical groups will keep only the first: tetgen holds one region tag "
+                "per tet"}));
+  for (const char* name : {"out.msh", "out.tsm"})
+    for (const std::string& loss : output_losses(mesh, name))
+      EXPECT_EQ(loss.find("physical groups"), std::string::npos) << name << ": " << loss;
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
+#include "mesh/io/vtk_legacy.hpp"
+#include "mesh/io/vtu_io.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
 
@@ -181,6 +183,21 @@ TEST(MeditIo, FileWriterReplacesTargetOrThrows) {
   EXPECT_EQ(read_medit_file(path).xyz, mesh.xyz);
   EXPECT_THROW(write_medit_file(mesh, (dir / "missing" / "out.mesh").string()), OutputError);
   std::filesystem::remove_all(dir);
+}
+
+// An empty element section leaves no block behind, so a format that has no
+// place for its kind (VTK: no hexahedra here) still takes the mesh.
+TEST(MeditIo, EmptyElementSectionMakesNoBlock) {
+  const TetMesh mesh = read_text(
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n4\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n"
+      "Tetrahedra\n1\n1 2 3 4 1\nHexahedra\n0\nEnd\n");
+  EXPECT_TRUE(mesh.extras.blocks.empty());
+  EXPECT_TRUE(mesh.fixed.empty());
+  std::ostringstream vtu, vtk;
+  write_vtu(mesh, vtu, {});
+  write_vtk(mesh, vtk, {});
+  std::istringstream in(vtu.str());
+  EXPECT_EQ(read_vtu(in, "m.vtu").tets, mesh.tets);
 }
 
 }  // namespace

@@ -253,5 +253,17 @@ TEST(TetGenErrors, ReadsRegionAttributesWrittenAsReals) {
   EXPECT_EQ(read_tetgen(n, "box.node", e, "box.ele").extras.tet_tags, (std::vector<int>{1, -2}));
 }
 
+// meshio writes the markers of its float point data as "1.0"; TetGen reads
+// them with strtol. A whole value in any form is a marker, "1.5" is not.
+TEST(TetGenErrors, BoundaryMarkersWrittenAsWholeRealsAreRead) {
+  const std::string node = "5 3 0 1\n0 0 0 0 1.0\n1 1 0 0 -2e0\n2 0 1 0 0.0\n3 0 0 1 1E+1\n4 1 1 1 3\n";
+  std::istringstream n(node), e(kEle);
+  EXPECT_EQ(read_tetgen(n, "box.node", e, "box.ele").extras.node_markers, (std::vector<int>{1, -2, 0, 10, 3}));
+  std::string msg = read_error("5 3 0 1\n0 0 0 0 1\n1 1 0 0 1.5\n2 0 1 0 0\n3 0 0 1 0\n4 1 1 1 0\n", kEle);
+  EXPECT_NE(msg.find("box.node:3: expected an integer boundary marker, found '1.5'"), std::string::npos) << msg;
+  msg = read_error("5 3 0 1\n0 0 0 0 1\n1 1 0 0 1e30\n2 0 1 0 0\n3 0 0 1 0\n4 1 1 1 0\n", kEle);
+  EXPECT_NE(msg.find("box.node:3: expected an integer boundary marker, found '1e30'"), std::string::npos) << msg;
+}
+
 }  // namespace
 }  // namespace tetsmooth

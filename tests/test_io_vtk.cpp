@@ -457,7 +457,7 @@ TEST(VtkTagArrays, LegacyVtkPrefersTheEarlierNameWhereverItStands) {
                                        "SCALARS medit:ref int\n1 1 1\nVECTORS flow");
   const TetMesh mesh = vtk_from_text(neither);
   expect_vtk_fixture_tags(mesh);
-  ASSERT_EQ(mesh.extras.read_notes.size(), 2u);
+  ASSERT_EQ(mesh.extras.read_notes.size(), 3u);  // point, cell and field data (TIME)
   EXPECT_EQ(mesh.extras.read_notes[1], "cell data arrays 'medit:ref', 'flow' are ignored and not written back");
 }
 
@@ -497,12 +497,13 @@ TEST(VtkTagArraysErrors, TagsOutsideTheRangeOfIntOrOfTheWrongCount) {
 
 TEST(VtkTagArrays, EveryArrayNotCarriedOverIsNotedOncePerKind) {
   // vtk_v51.vtk: a cell VECTORS array, and point SCALARS, NORMALS and FIELD
-  // arrays; the dataset's own FIELD (TIME) is not point or cell data.
+  // arrays; the dataset's own FIELD (TIME) is field data, noted last.
   const TetMesh vtk = read_vtk_file(testing::data_path("vtk_v51.vtk"));
   EXPECT_EQ(
       vtk.extras.read_notes,
       (std::vector<std::string>{"point data arrays 'pressure head', 'n', 'a', 'b' are ignored and not written back",
-                                "cell data array 'flow' is ignored and not written back"}));
+                                "cell data array 'flow' is ignored and not written back",
+                                "field data array 'TIME' is ignored and not written back"}));
   // A tag or fixed-node array of the wrong kind or shape is an ordinary one.
   const std::string arrays = vtu_cell_array("tetsmooth:tag", "7 -3 2 0") +
                              vtu_cell_array("tetsmooth:fixed", "0 0 0 0") +
@@ -894,6 +895,25 @@ TEST(VtuCompressedErrors, AHugeDeclaredSizeIsNotAllocatedBeforeTheDataYieldIt) {
   EXPECT_NE(msg.find("Points: block 1 of 1: decompresses to 216 bytes, the header says 240000000000"),
             std::string::npos)
       << msg;
+}
+
+// Data of the whole dataset (ParaView's TimeValue) has no place in the
+// output: both readers name it, as they name other arrays they drop.
+TEST(VtkTagArrays, FieldDataOfTheDatasetIsNoted) {
+  const std::string vtu = replaced(file_text("vtu_ascii.vtu"), "<Piece",
+                                   "<FieldData><DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" "
+                                   "format=\"ascii\">0.5</DataArray></FieldData>\n<Piece");
+  const TetMesh from_vtu = vtu_from_text(vtu);
+  expect_vtu_fixture_tags(from_vtu);
+  ASSERT_FALSE(from_vtu.extras.read_notes.empty());
+  EXPECT_EQ(from_vtu.extras.read_notes.back(), "field data array 'TimeValue' is ignored and not written back");
+
+  const std::string vtk = replaced(file_text("vtk_v51.vtk"), "FIELD FieldData 1\nTIME 1 1 double\n0.25\n",
+                                   "FIELD FieldData 2\nTimeValue 1 1 double\n0.5\nCYCLE 1 1 int\n3\n");
+  const TetMesh from_vtk = vtk_from_text(vtk);
+  expect_vtk_fixture_tags(from_vtk);
+  ASSERT_FALSE(from_vtk.extras.read_notes.empty());
+  EXPECT_EQ(from_vtk.extras.read_notes.back(), "field data arrays 'TimeValue', 'CYCLE' are ignored and not written back");
 }
 
 }  // namespace

@@ -68,6 +68,28 @@ class Entities {
 // entity is unknown: the one physical tag an element carries in MSH 2.
 int first_physical(const Entities& entities, int dim, int tag);
 
+// Entities made up from the elements on them, for a file that declares none:
+// each (dim, tag) in order of first use, with the bounding box of its
+// elements' nodes (a point entity: its node's coordinates).
+class EntityBuilder {
+ public:
+  // Adds an element on entity (dim, tag) over `count` 0-based node indices
+  // into `xyz` (3 coordinates a node); returns the entity, whose physicals
+  // the caller fills.
+  Entity& add(int dim, int tag, const double* xyz, const std::int32_t* nodes, int count);
+  Entities take();
+
+ private:
+  std::vector<Entity> made_;
+  std::map<std::pair<int, int>, std::size_t> at_;
+};
+
+// How many elements lie on an entity of several physical groups, per the
+// file's $Entities (none without them): the tets, and with `blocks` the
+// other elements too. Formats with one tag per element keep only the first
+// group of those.
+std::size_t elements_in_several_groups(const FileExtras& extras, bool blocks);
+
 // Tags a written file can carry are positive, distinct and at most
 // `largest`: a tag of `tags` that is not, or nullopt when all are.
 std::optional<long long> unusable_tag(std::vector<long long> tags, long long largest = INT64_MAX);

@@ -1,5 +1,9 @@
+#include <algorithm>
+#include <limits>
 #include <sstream>
 
+#include "mesh/errors.hpp"
+#include "mesh/file_extras.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_source.hpp"
 #include "mesh/io/number_text.hpp"
@@ -28,6 +32,59 @@ std::size_t Entities::count(int dim) const {
 int first_physical(const Entities& entities, int dim, int tag) {
   const Entity* e = entities.find(dim, tag);
   return e == nullptr || e->physicals.empty() ? 0 : e->physicals.front();
+}
+
+Entity& EntityBuilder::add(int dim, int tag, const double* xyz, const std::int32_t* nodes, int count) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const auto [it, fresh] = at_.emplace(std::make_pair(dim, tag), made_.size());
+  if (fresh) {
+    Entity& x = made_.emplace_back();
+    x.dim = dim;
+    x.tag = tag;
+    std::fill(x.box, x.box + 3, kInf);
+    std::fill(x.box + 3, x.box + 6, -kInf);
+  }
+  Entity& x = made_[it->second];
+  for (int k = 0; k < count; ++k) {
+    const double* p = &xyz[3 * static_cast<std::size_t>(nodes[k])];
+    for (int c = 0; c < 3; ++c) {
+      x.box[c] = std::min(x.box[c], p[c]);
+      x.box[c + 3] = std::max(x.box[c + 3], p[c]);
+    }
+  }
+  return x;
+}
+
+Entities EntityBuilder::take() {
+  Entities entities;
+  for (Entity& x : made_) entities.add(std::move(x));
+  made_.clear();
+  at_.clear();
+  return entities;
+}
+
+std::size_t elements_in_several_groups(const FileExtras& extras, bool blocks) {
+  const std::string* raw = raw_section(extras, "$Entities");
+  if (raw == nullptr) return 0;
+  Entities entities;
+  try {
+    entities = parse_entities_text(*raw, "$Entities");
+  } catch (const InputError&) {
+    return 0;  // not what a reader stored; the writers make entities up then
+  }
+  const auto count = [&](int dim, const std::vector<int>& tags) {
+    std::size_t n = 0;
+    for (int tag : tags) {
+      const Entity* e = entities.find(dim, tag);
+      n += e != nullptr && e->physicals.size() > 1;
+    }
+    return n;
+  };
+  std::size_t n = count(3, extras.tet_entity_tags);
+  for (const PassThroughBlock& block : extras.blocks)
+    if (const ElementType* type = element_type_of_kind(block.kind); blocks && type != nullptr)
+      n += count(type->dim, block.entity_tags);
+  return n;
 }
 
 namespace {

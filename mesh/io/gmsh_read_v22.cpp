@@ -1,5 +1,6 @@
 // MSH 2.2 $Nodes and $Elements. The binary encoding is not the ASCII one
 // written in bytes: counts stay text and elements come in typed runs.
+#include <algorithm>
 #include <limits>
 
 #include "mesh/io/gmsh_source.hpp"
@@ -25,6 +26,38 @@ void add_element(ReadState& state, const ElementType& type, const std::vector<in
   block.tags.push_back(physical);
   block.entity_tags.push_back(elementary);
   block.element_tags.push_back(id);
+}
+
+// One element line: a new element, or a further physical group of the
+// element on the line before (V22Lines). `tags` is the line's number of
+// tags: past the elementary tag come the partitions, first their count.
+void take_line(ReadState& state, const ElementType& type, const std::vector<index_t>& nodes, long long id,
+               int physical, int elementary, std::uint64_t tags, int partitions) {
+  V22Lines& lines = state.v22;
+  const bool again = lines.any && id == lines.id && type.id == lines.type && elementary == lines.elementary &&
+                     nodes == lines.nodes;
+  V22Lines::Groups& groups = lines.entities[{type.dim, elementary}];
+  if (physical != 0 && std::find(groups.physicals.begin(), groups.physicals.end(), physical) == groups.physicals.end())
+    groups.physicals.push_back(physical);
+  ++groups.lines;
+  if (again) {
+    lines.repeated += !lines.repeats;  // an element counts once, at its second line
+    lines.repeats = true;
+    return;
+  }
+  add_element(state, type, nodes, id, physical, elementary);
+  ++groups.elements;
+  if (physical == 0)
+    groups.ungrouped = true;
+  else
+    groups.first_agrees = groups.first_agrees && physical == groups.physicals.front();
+  lines.partitioned += tags > 2 && partitions > 0;
+  lines.any = true;
+  lines.repeats = false;
+  lines.id = id;
+  lines.type = type.id;
+  lines.elementary = elementary;
+  lines.nodes = nodes;
 }
 
 template <class Source>
@@ -70,15 +103,16 @@ void read_elements_v22(AsciiSource& src, ReadState& state) {
     const long long id = tag_value(src, "element tag");
     const ElementType& type = checked_type(src, src.int_value("element type"));
     const std::uint64_t tags = src.size_value("number of element tags");
-    int physical = 0, elementary = 0;
+    int physical = 0, elementary = 0, partitions = 0;
     for (std::uint64_t k = 0; k < tags; ++k) {
       const int value = src.int_value("element tag value");
       if (k == 0) physical = value;
       if (k == 1) elementary = value;
+      if (k == 2) partitions = value;
     }
     nodes.resize(static_cast<std::size_t>(type.nodes));
     for (index_t& n : nodes) n = node_index(src, state, src.size_value("node tag"));
-    add_element(state, type, nodes, id, physical, elementary);
+    take_line(state, type, nodes, id, physical, elementary, tags, partitions);
   }
 }
 
@@ -98,21 +132,57 @@ void read_elements_v22(BinarySource& src, ReadState& state) {
     nodes.resize(static_cast<std::size_t>(type.nodes));
     for (int e = 0; e < count; ++e) {
       const int id = src.int_value("element number");  // one not positive is noted after reading
-      int physical = 0, elementary = 0;
+      int physical = 0, elementary = 0, partitions = 0;
       for (int k = 0; k < tags; ++k) {
         const int value = src.int_value("element tag value");
         if (k == 0) physical = value;
         if (k == 1) elementary = value;
+        if (k == 2) partitions = value;
       }
       for (index_t& n : nodes) {
         const int tag = src.int_value("node tag");
         if (tag < 0) src.fail("negative node tag " + std::to_string(tag));
         n = node_index(src, state, static_cast<std::uint64_t>(tag));
       }
-      add_element(state, type, nodes, id, physical, elementary);
+      take_line(state, type, nodes, id, physical, elementary, static_cast<std::uint64_t>(tags), partitions);
     }
     seen += static_cast<std::uint64_t>(count);
   }
+}
+
+void finish_elements_v22(ReadState& state) {
+  V22Lines& lines = state.v22;
+  FileExtras& extras = state.mesh.extras;
+  if (lines.partitioned > 0)
+    extras.read_notes.push_back("the partition tags of " + std::to_string(lines.partitioned) +
+                                " elements are dropped: the partitions are merged; the written file is not "
+                                "partitioned");
+  if (lines.repeated == 0) return;
+  const bool every_group = std::all_of(lines.entities.begin(), lines.entities.end(), [](const auto& entry) {
+    const auto& [key, groups] = entry;
+    if (groups.physicals.empty()) return groups.lines == groups.elements;
+    return key.second > 0 && !groups.ungrouped && groups.first_agrees &&
+           groups.lines == groups.elements * groups.physicals.size();
+  });
+  if (!every_group) {
+    extras.read_notes.push_back(std::to_string(lines.repeated) +
+                                " elements are listed once per physical group, but not every element of their "
+                                "elementary entity is in the same groups: they keep only their first group");
+    return;
+  }
+  EntityBuilder builder;
+  const auto add = [&](int dim, const std::vector<int>& entities, const std::vector<index_t>& connectivity,
+                       int nodes) {
+    for (std::size_t e = 0; e < entities.size(); ++e)
+      builder.add(dim, entities[e], state.mesh.xyz.data(), &connectivity[e * static_cast<std::size_t>(nodes)], nodes)
+          .physicals = lines.entities.at({dim, entities[e]}).physicals;
+  };
+  add(3, extras.tet_entity_tags, state.mesh.tets, 4);
+  for (const PassThroughBlock& block : extras.blocks) {
+    const ElementType* type = element_type_of_kind(block.kind);
+    add(type->dim, block.entity_tags, block.connectivity, type->nodes);
+  }
+  extras.raw_sections.emplace_back("$Entities", format_entities_text(builder.take()));
 }
 
 }  // namespace tetsmooth::gmsh

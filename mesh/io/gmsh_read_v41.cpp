@@ -131,7 +131,8 @@ void read_elements_v41(Source& src, ReadState& state) {
 
     nodes.resize(static_cast<std::size_t>(type->nodes));
     const bool tet = type->id == kTetType;
-    PassThroughBlock* block = tet ? nullptr : &state.block_for(*type);
+    // An empty block makes no PassThroughBlock (see MeditReader::elements).
+    PassThroughBlock* block = tet || count == 0 ? nullptr : &state.block_for(*type);
     if (tet) {
       mesh.tets.reserve(mesh.tets.size() + 4 * reserve);
       mesh.extras.tet_entity_tags.reserve(mesh.extras.tet_entity_tags.size() + reserve);

@@ -290,6 +290,7 @@ TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   if (state.mesh.tets.empty()) src.fail("no tetrahedra (element type 4): a volume mesh is needed");
   if (state.major == 4 && (state.has_entities || state.has_partitions)) map_physicals(state);
   if (state.has_partitions) merge_partitions(state);
+  if (state.major == 2) gmsh::finish_elements_v22(state);
   check_element_tags(state.mesh.extras, state.mesh.num_tets());
 
   TetMesh& mesh = state.mesh;

@@ -6,6 +6,7 @@
 // parsers fill a ReadState, which gmsh_reader.cpp turns into the TetMesh.
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -131,6 +132,34 @@ class NodeLookup {
   std::vector<std::pair<long long, index_t>> sparse_;  // sorted by tag, otherwise
 };
 
+// MSH 2.2 element lines beyond one element each: an element in several
+// physical groups is listed once per group (see v22_physicals), and a
+// partitioned file gives elements partition tags after the elementary one.
+struct V22Lines {
+  // The previous line's element, to tell a repeat of it from a new element:
+  // same number, type, elementary tag and nodes.
+  bool any = false;
+  bool repeats = false;  // whether it was listed more than once
+  long long id = 0;
+  int type = 0;
+  int elementary = 0;
+  std::vector<index_t> nodes;
+  // The physical groups met on each entity (dimension, elementary tag), in
+  // order, with its element and line counts, whether each element's first
+  // line names the first group and whether an element is in none: every
+  // element is in all of the entity's groups when lines == elements *
+  // groups, each first line names the first and none is in no group.
+  struct Groups {
+    std::vector<int> physicals;
+    std::size_t elements = 0, lines = 0;
+    bool first_agrees = true;
+    bool ungrouped = false;
+  };
+  std::map<std::pair<int, int>, Groups> entities;
+  std::size_t repeated = 0;     // elements listed more than once
+  std::size_t partitioned = 0;  // elements with partition tags
+};
+
 // What the section parsers build up while reading one file.
 struct ReadState {
   int major = 0;  // MSH version, 2 or 4
@@ -143,6 +172,7 @@ struct ReadState {
   Entities entities;
   Entities partitions;  // of $PartitionedEntities: tags distinct from those of `entities`
   std::vector<std::pair<int, std::size_t>> block_of_type;  // element type id -> index in mesh.extras.blocks
+  V22Lines v22;
 
   PassThroughBlock& block_for(const ElementType& type);
 };
@@ -173,5 +203,12 @@ template <class Source>
 void read_nodes_v22(Source& src, ReadState& state);
 void read_elements_v22(AsciiSource& src, ReadState& state);
 void read_elements_v22(BinarySource& src, ReadState& state);
+
+// After an MSH 2.2 $Elements: makes the groups of elements listed once per
+// group the physical groups of their entities, in a "$Entities" raw section
+// that the writer keeps, where every element of an entity is in all of its
+// groups (files Gmsh and tetsmooth write are so); otherwise the elements
+// keep their first group, with a note. Notes the partition tags dropped.
+void finish_elements_v22(ReadState& state);
 
 }  // namespace tetsmooth::gmsh

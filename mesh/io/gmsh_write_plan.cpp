@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <climits>
 #include <cstddef>
-#include <limits>
 #include <map>
 #include <numeric>
 
@@ -78,13 +77,12 @@ bool adopt_file_entities(const FileExtras& extras, std::vector<ElementGroup>& gr
   }
   plan.entities = std::move(entities);
   plan.entities_text = *raw;
+  plan.groups_of_entities = true;
   return true;
 }
 
 void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, WritePlan& plan) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<Entity> made;
-  std::map<std::pair<int, int>, std::size_t> at;
+  EntityBuilder builder;
   for (ElementGroup& g : groups) {
     const int dim = g.type->dim;
     const int nodes = g.type->nodes;
@@ -95,28 +93,13 @@ void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, Write
       const int tag = given > 0 ? given : (p > 0 ? p : 1);
       entity[e] = tag;
       physical[e] = p;
-      const auto [it, fresh] = at.emplace(std::make_pair(dim, tag), made.size());
-      if (fresh) {
-        Entity& x = made.emplace_back();
-        x.dim = dim;
-        x.tag = tag;
-        std::fill(x.box, x.box + 3, kInf);
-        std::fill(x.box + 3, x.box + 6, -kInf);
-      }
-      Entity& x = made[it->second];
+      Entity& x = builder.add(dim, tag, mesh.xyz.data(), &g.connectivity[e * static_cast<std::size_t>(nodes)], nodes);
       if (p > 0 && std::find(x.physicals.begin(), x.physicals.end(), p) == x.physicals.end()) x.physicals.push_back(p);
-      for (int k = 0; k < nodes; ++k) {
-        const double* xyz = &mesh.xyz[3 * static_cast<std::size_t>(g.connectivity[e * nodes + k])];
-        for (int c = 0; c < 3; ++c) {
-          x.box[c] = std::min(x.box[c], xyz[c]);
-          x.box[c + 3] = std::max(x.box[c + 3], xyz[c]);
-        }
-      }
     }
     g.entity = std::move(entity);
     g.physical = std::move(physical);
   }
-  for (Entity& x : made) plan.entities.add(std::move(x));
+  plan.entities = builder.take();
   plan.entities_text = format_entities_text(plan.entities);
 }
 
@@ -203,6 +186,20 @@ WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour) {
   order_groups_by_tag(groups, plan.element_tags);
   plan.groups = std::move(groups);
   return plan;
+}
+
+std::pair<const int*, std::size_t> v22_physicals(const WritePlan& plan, const ElementGroup& g, std::size_t e) {
+  if (plan.groups_of_entities)
+    if (const Entity* x = plan.entities.find(g.type->dim, g.entity[e]); x != nullptr && x->physicals.size() > 1)
+      return {x->physicals.data(), x->physicals.size()};
+  return {&g.physical[e], 1};
+}
+
+std::size_t v22_lines(const WritePlan& plan) {
+  std::size_t lines = 0;
+  for (const ElementGroup& g : plan.groups)
+    for (std::size_t e = 0; e < g.count; ++e) lines += v22_physicals(plan, g, e).second;
+  return lines;
 }
 
 }  // namespace tetsmooth::gmsh

@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/io/gmsh_detail.hpp"
@@ -53,9 +54,24 @@ struct WritePlan {
   // kLargestIntTag, else 1, 2, ...
   std::vector<long long> element_tags;
   std::size_t element_count = 0;
+  // Whether the file's $Entities were kept, so that an element is in every
+  // physical group of its entity (MSH 2.2 repeats it for each, see
+  // v22_physicals), not only in `physical`, the first.
+  bool groups_of_entities = false;
 };
 
 // Throws OutputError for pass-through blocks that MSH cannot hold.
 WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour);
+
+// The physical tags element e of `g` is written with in MSH 2.2, which gives
+// an element one physical tag a line: as Gmsh does, an element of several
+// groups is written once per group, every line with the same element tag
+// (Gmsh 4.8 reads such lines as one element in all the groups; its own
+// writer numbers them apart, and reading that back, Gmsh and tetsmooth both
+// find the element once per group). Every group of its entity where the
+// plan kept the file's entities, else its one tag (0 for none).
+std::pair<const int*, std::size_t> v22_physicals(const WritePlan& plan, const ElementGroup& g, std::size_t e);
+// The number of MSH 2.2 element lines: every element once per group.
+std::size_t v22_lines(const WritePlan& plan);
 
 }  // namespace tetsmooth::gmsh

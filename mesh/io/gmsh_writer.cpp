@@ -86,8 +86,11 @@ void write_data_header(std::ostream& out, const char* section, const std::string
   out << '$' << section << "\n1\n\"" << title << "\"\n1\n0\n3\n0\n1\n" << count << '\n';
 }
 
+// In MSH 2.2 (`v22`) an element written once per physical group gets its
+// value once per line, so that readers that take the values in the order of
+// the element lines (meshio) find one for each.
 template <class Sink>
-void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const MeshFields& fields) {
+void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const MeshFields& fields, bool v22) {
   // Field data name nodes by int; node tags past that, which only MSH 4.1's
   // $Nodes holds, cost the file its node fields (output_losses says so
   // before the work). Element tags always fit: the plan keeps no others.
@@ -106,14 +109,17 @@ void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const Me
   // get NaN ("no value") rather than no entry: readers such as meshio
   // expect a value for every element.
   for (const auto& [name, values] : fields.tet_scalars) {
-    write_data_header(out, "ElementData", name, plan.element_count);
+    write_data_header(out, "ElementData", name, v22 ? gmsh::v22_lines(plan) : plan.element_count);
     std::size_t written = 0;
     for (const ElementGroup& g : plan.groups) {
       const bool tets = g.type->id == gmsh::kTetType;
-      for (std::size_t e = 0; e < g.count; ++e) {
-        sink.integer(plan.element_tags[written++]);
-        sink.real(tets ? values[e] : std::numeric_limits<double>::quiet_NaN());
-        sink.end_record();
+      for (std::size_t e = 0; e < g.count; ++e, ++written) {
+        const std::size_t copies = v22 ? gmsh::v22_physicals(plan, g, e).second : 1;
+        for (std::size_t c = 0; c < copies; ++c) {
+          sink.integer(plan.element_tags[written]);
+          sink.real(tets ? values[e] : std::numeric_limits<double>::quiet_NaN());
+          sink.end_record();
+        }
       }
     }
     sink.end_body();
@@ -237,11 +243,11 @@ void write_v41(std::ostream& out, const TetMesh& mesh, const WritePlan& plan, co
   out << "$EndEntities\n";
   write_nodes_v41(out, sink, mesh, plan);
   write_elements_v41(out, sink, plan);
-  write_fields(out, sink, plan, fields);
+  write_fields(out, sink, plan, fields, false);
 }
 
 // MSH 2.2 has no entities: each element carries its physical and
-// elementary tag (the entity tag of the plan).
+// elementary tag (the entity tag of the plan), on a line per physical group.
 void write_v22(std::ostream& out, const TetMesh& mesh, const WritePlan& plan, const MeshFields& fields) {
   AsciiSink sink(out);
   out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n";
@@ -252,23 +258,26 @@ void write_v22(std::ostream& out, const TetMesh& mesh, const WritePlan& plan, co
     for (int c = 0; c < 3; ++c) sink.real(mesh.xyz[3 * i + c]);
     sink.end_record();
   }
-  out << "$EndNodes\n$Elements\n" << plan.element_count << '\n';
+  out << "$EndNodes\n$Elements\n" << gmsh::v22_lines(plan) << '\n';
   std::size_t written = 0;
   for (const ElementGroup& g : plan.groups) {
     const auto nodes = static_cast<std::size_t>(g.type->nodes);
-    for (std::size_t e = 0; e < g.count; ++e) {
-      sink.integer(plan.element_tags[written++]);
-      sink.integer(g.type->id);
-      sink.integer(2);
-      sink.integer(g.physical[e]);
-      sink.integer(g.entity[e]);
-      for (std::size_t k = 0; k < nodes; ++k)
-        sink.integer(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]);
-      sink.end_record();
+    for (std::size_t e = 0; e < g.count; ++e, ++written) {
+      const auto [physicals, count] = gmsh::v22_physicals(plan, g, e);
+      for (std::size_t p = 0; p < count; ++p) {
+        sink.integer(plan.element_tags[written]);
+        sink.integer(g.type->id);
+        sink.integer(2);
+        sink.integer(physicals[p]);
+        sink.integer(g.entity[e]);
+        for (std::size_t k = 0; k < nodes; ++k)
+          sink.integer(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]);
+        sink.end_record();
+      }
     }
   }
   out << "$EndElements\n";
-  write_fields(out, sink, plan, fields);
+  write_fields(out, sink, plan, fields, true);
 }
 
 void write_planned(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, const WritePlan& plan,

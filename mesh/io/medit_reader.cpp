@@ -115,6 +115,9 @@ void MeditReader::tetrahedra() {
 void MeditReader::elements(const medit::ElementKeyword& kw) {
   need_vertices(kw.keyword);
   const std::size_t n = count("number of elements");
+  // An empty section leaves no block: a block of a kind that another format
+  // cannot hold would stop the write, though there is nothing to write.
+  if (n == 0) return;
   PassThroughBlock& block = mesh_.extras.blocks.emplace_back();
   block.kind = kw.kind;
   block.nodes_per_element = kw.nodes;

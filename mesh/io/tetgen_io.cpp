@@ -128,7 +128,7 @@ int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh)
     for (std::size_t k = 0; k < 3; ++k) mesh.xyz.push_back(lines.real(1 + k, "coordinate"));
     for (std::size_t k = 0; k < attrs; ++k) mesh.extras.node_attributes.push_back(lines.real(4 + k, "node attribute"));
     if (markers != 0) {
-      const long long marker = lines.integer(4 + attrs, "boundary marker");
+      const long long marker = lines.whole_number(4 + attrs, "boundary marker");
       if (marker < std::numeric_limits<int>::min() || marker > std::numeric_limits<int>::max())
         lines.fail("boundary marker " + std::to_string(marker) + " out of range");
       mesh.extras.node_markers.push_back(static_cast<int>(marker));

@@ -121,6 +121,16 @@ double TextLines::to_real(std::string_view token, const char* what) const {
 long long TextLines::integer(std::size_t i, const char* what) const { return to_integer(token(i, what), what); }
 double TextLines::real(std::size_t i, const char* what) const { return to_real(token(i, what), what); }
 
+long long TextLines::whole_number(std::size_t i, const char* what) const {
+  const std::string_view t = token(i, what);
+  long long value = 0;
+  if (parse_integer(t, value)) return value;
+  double real = 0;
+  // 2^63 as a double: the first whole value past long long.
+  if (!parse_real(t, real) || real != std::trunc(real) || !(std::abs(real) < 0x1p63)) return to_integer(t, what);
+  return static_cast<long long>(real);
+}
+
 bool TextLines::at_end() {
   while (cursor_ >= tokens_.size())
     if (!read_raw_line()) return true;

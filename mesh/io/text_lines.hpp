@@ -45,6 +45,11 @@ class TextLines {
   std::string_view token(std::size_t i, const char* what) const;
   long long integer(std::size_t i, const char* what) const;
   double real(std::size_t i, const char* what) const;  // finite values only
+  // An integer that may be written as a real with a whole value ("1.0",
+  // "1e0"), as TetGen, which reads such fields with strtol, and meshio,
+  // which writes them from float arrays, have it; "1.5" fails like a bad
+  // integer().
+  long long whole_number(std::size_t i, const char* what) const;
 
   // Token mode, for formats whose values may wrap across lines at will
   // (legacy VTK): the tokens after the ones already taken, line by line.

@@ -85,6 +85,10 @@ VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vecto
   return pick;
 }
 
+void note_vtk_field_data(const std::vector<std::string>& names, std::vector<std::string>& notes) {
+  if (!names.empty()) notes.push_back(dropped_note("field data", names));
+}
+
 std::vector<int> vtk_region_tags(const std::vector<double>& values, std::size_t cells, const std::string& name,
                                  const std::string& where) {
   check_count(values, cells, name, "cells", where);

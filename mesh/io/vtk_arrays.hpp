@@ -47,6 +47,11 @@ bool vtk_array_wanted(const VtkArrayDecl& a);
 // command line computes them afresh on every write).
 VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vector<std::string>& notes);
 
+// Adds to `notes` a sentence naming the field data arrays (data of the
+// whole dataset, such as ParaView's TimeValue), which no output carries;
+// nothing when there are none.
+void note_vtk_field_data(const std::vector<std::string>& names, std::vector<std::string>& notes);
+
 // The values of the region tag array `name`, one per cell, as ints.
 // InputError at `where` (the file and the array's line) for a count other
 // than `cells`, or naming the cell whose value is not a whole number in the

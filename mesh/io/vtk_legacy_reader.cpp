@@ -49,6 +49,7 @@ class LegacyReader {
     if (!have_cells_) lines_.fail("no CELLS section");
     if (!have_types_) lines_.fail("no CELL_TYPES section");
     const VtkArrayPick pick = pick_vtk_arrays(arrays_, mesh_.extras.read_notes);
+    note_vtk_field_data(field_data_, mesh_.extras.read_notes);
     std::vector<int> tags;
     if (pick.tags != kNoVtkArray)
       tags = vtk_region_tags(kept_[pick.tags].values, types_.size(), arrays_[pick.tags].name, kept_[pick.tags].where);
@@ -324,7 +325,8 @@ class LegacyReader {
 
   // FIELD data: in POINT_DATA or CELL_DATA, each array is a point or cell
   // data array (meshio and VTK write their arrays so); before them, data of
-  // the whole dataset (TIME, ...), which is skipped.
+  // the whole dataset (TIME, ParaView's TimeValue, ...), which is skipped
+  // with a note.
   void field() {
     arg("field name");
     const std::size_t arrays = count("array count");
@@ -335,10 +337,12 @@ class LegacyReader {
       const std::size_t components = count("component count");
       const std::size_t tuples = count("tuple count");
       const std::string type(arg("type"));
-      if (attach_ == Attach::None)
+      if (attach_ == Attach::None) {
+        field_data_.push_back(name);
         skip_values(components * tuples, type, "value");
-      else
+      } else {
         data_array(name, components, tuples, type, where);
+      }
       if (upper(lines_.peek_token()) == "METADATA") {
         lines_.next_token("METADATA");
         lines_.skip_past_blank_line();
@@ -356,6 +360,7 @@ class LegacyReader {
   std::vector<long long> connectivity_, offsets_, types_;
   std::vector<VtkArrayDecl> arrays_;  // every point and cell data array, in file order
   std::vector<Kept> kept_;            // one per array
+  std::vector<std::string> field_data_;  // arrays of the whole dataset, skipped
   bool have_points_ = false, have_cells_ = false, have_types_ = false;
   std::string types_where_;
   Attach attach_ = Attach::None;

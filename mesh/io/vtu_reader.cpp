@@ -24,6 +24,7 @@ struct VtuLayout {
   // The PointData and CellData arrays, in file order.
   std::vector<const VtuDataArray*> data;
   std::vector<VtkArrayDecl> data_decls;
+  std::vector<std::string> field_data;  // names of the FieldData arrays, which are not read
   std::vector<VtuDataArray> arrays;  // stable once scanning is done
 };
 
@@ -119,6 +120,7 @@ VtuLayout scan(std::string_view text, XmlScanner& xml) {
     if (tag.name == "DataArray") {
       const std::string parent = stack.size() >= 2 && stack[stack.size() - 2] == "Piece" ? stack.back() : "";
       const std::string* name = tag.attribute("Name");
+      if (stack.back() == "FieldData") layout.field_data.push_back(name ? *name : "");
       layout.arrays.push_back(read_data_array(xml, tag));
       roles.emplace_back(parent, name ? *name : "");
       continue;
@@ -168,6 +170,7 @@ TetMesh read_vtu(std::istream& in, const std::string& source) {
       decode.integers(*layout.connectivity, static_cast<std::size_t>(conn_size), "connectivity");
   const std::vector<long long> types = decode.integers(*layout.types, cells, "types");
   const VtkArrayPick pick = pick_vtk_arrays(layout.data_decls, mesh.extras.read_notes);
+  note_vtk_field_data(layout.field_data, mesh.extras.read_notes);
   // Read as reals, so that a tag array of a floating-point type is accepted
   // when its values are whole numbers, and rejected naming the cell if not.
   const auto values = [&](std::size_t i, std::size_t count) {

@@ -170,6 +170,12 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
       notes.push_back(std::string("the Gmsh ") + (names && entities ? "physical names and entity tags" : names ? "physical names" : "entity tags") +
                       " will not be written: " + name + " has no place for them");
   }
+  // MSH keeps an element in every physical group of its entity; the other
+  // formats with region tags give a cell one, the first group.
+  if (!msh && f != MeshFormat::Cache)
+    if (const std::size_t several = gmsh::elements_in_several_groups(e, f != MeshFormat::TetGen); several > 0)
+      notes.push_back(count_of(several, "element") + " in several Gmsh physical groups will keep only the first: " +
+                      name + " holds one region tag per " + (f == MeshFormat::TetGen ? "tet" : "element"));
   if (const std::map<int, int> renumbered = gmsh::negative_tag_renumbering(e); msh && !renumbered.empty()) {
     std::string pairs;
     for (const auto& [from, to] : renumbered)

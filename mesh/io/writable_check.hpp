@@ -26,7 +26,9 @@ void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat for
 //  * TetGen node markers (non-zero ones), node attributes and tet
 //    attributes (what tet_tags cannot give back);
 //  * Medit-only sections (Ridges, Normals, Identifier, ...);
-//  * region tags (.tsm);
+//  * region tags (.tsm), and the physical groups after the first of
+//    elements whose Gmsh entity is in several (one tag per element:
+//    VTU, VTK, Medit, TetGen);
 //  * Gmsh node and element tags, physical names and entity tags (formats
 //    other than MSH), and what node tags past the 32-bit ints of field
 //    data cost in MSH (the node fields in 4.1, the tags themselves in 2.2).

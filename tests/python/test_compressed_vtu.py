@@ -25,7 +25,7 @@ import zlib
 import meshio
 import numpy as np
 
-from test_cli import BIN, EXIT_INPUT, kuhn_lattice, run
+from test_cli import EXIT_INPUT, kuhn_lattice, require_binary, run
 
 BLOCK_SIZE = 32768  # meshio's, and VTK's default
 COMPRESSORS = {"zlib": ("vtkZLibDataCompressor", zlib), "lzma": ("vtkLZMADataCompressor", lzma)}
@@ -76,8 +76,7 @@ def write_appended(path, xyz, tets, codec, encoding, header_type):
 class CompressedVtu(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        if not os.access(BIN, os.X_OK):
-            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
+        require_binary()
         cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_compressed_")
         cls.xyz, cls.tets = kuhn_lattice(12, seed=5)
         # Several blocks per array: the points alone take two.

@@ -12,8 +12,8 @@ import unittest
 
 import meshio
 
-from test_cli import BIN, run
-from test_independent_readers import gmsh_module, gmsh_session, physical_groups
+from test_cli import require_binary, run
+from test_independent_readers import gmsh_session, physical_groups, require_gmsh
 
 
 def physical_group_sizes(gmsh, path):
@@ -43,11 +43,8 @@ def write_box_with_groups(gmsh, path, version):
 class ForeignTags(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        if not os.access(BIN, os.X_OK):
-            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
-        cls.gmsh, why = gmsh_module()
-        if cls.gmsh is None:
-            raise unittest.SkipTest(why)
+        require_binary()
+        cls.gmsh = require_gmsh()
         cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_tags_")
 
     @classmethod

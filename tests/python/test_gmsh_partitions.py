@@ -14,8 +14,8 @@ import unittest
 import meshio
 import numpy as np
 
-from test_cli import BIN, run
-from test_independent_readers import gmsh_module, gmsh_session, physical_groups
+from test_cli import require_binary, run
+from test_independent_readers import gmsh_session, physical_groups, require_gmsh
 
 INPUTS = [("part-ascii.msh", 0), ("part-binary.msh", 1)]
 
@@ -38,11 +38,8 @@ def boundary_node_tags(gmsh):
 class PartitionedGmshMeshes(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        if not os.access(BIN, os.X_OK):
-            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
-        cls.gmsh, why = gmsh_module()
-        if cls.gmsh is None:
-            raise unittest.SkipTest(why)
+        require_binary()
+        cls.gmsh = require_gmsh()
         gmsh = cls.gmsh
         cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_partitions_")
         with gmsh_session(gmsh):

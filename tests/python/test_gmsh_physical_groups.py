@@ -14,10 +14,9 @@ import tempfile
 import unittest
 
 import meshio
-import numpy as np
 
-from test_cli import BIN, run
-from test_independent_readers import gmsh_module, gmsh_session, physical_groups
+from test_cli import require_binary, run
+from test_independent_readers import gmsh_session, physical_groups, require_gmsh
 
 GROUPS = {(3, 11): [1], (3, 12): [2], (3, 13): [1, 2]}
 
@@ -47,11 +46,8 @@ def mesh_boxes(gmsh):
 class SeveralPhysicalGroups(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        if not os.access(BIN, os.X_OK):
-            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
-        cls.gmsh, why = gmsh_module()
-        if cls.gmsh is None:
-            raise unittest.SkipTest(why)
+        require_binary()
+        cls.gmsh = require_gmsh()
         gmsh = cls.gmsh
         cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_groups_")
         cls.src = os.path.join(cls.tmp, "boxes.msh")

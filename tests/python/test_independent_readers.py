@@ -8,14 +8,13 @@ import contextlib
 import json
 import os
 import shutil
-import subprocess
 import tempfile
 import unittest
 
 import meshio
 import numpy as np
 
-from test_cli import BIN, kuhn_lattice, run
+from test_cli import kuhn_lattice, missing, require_binary, run
 
 # The reference coordinates are short binary fractions, so any writer and
 # reader that do not lose precision reproduce them exactly; this allows a
@@ -30,6 +29,14 @@ def gmsh_module():
     except Exception as e:  # an import of a compiled module can fail in many ways
         return None, f"cannot import gmsh: {e}"
     return gmsh, ""
+
+
+def require_gmsh():
+    """The Gmsh API, which scripts/install_deps.sh installs (see missing)."""
+    gmsh, why = gmsh_module()
+    if gmsh is None:
+        missing(why)
+    return gmsh
 
 
 @contextlib.contextmanager
@@ -90,8 +97,7 @@ def read_with_gmsh(gmsh, path):
 class IndependentReaders(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        if not os.access(BIN, os.X_OK):
-            raise unittest.SkipTest(f"no tetsmooth binary at {BIN!r}: set TETSMOOTH_BIN_DIR")
+        require_binary()
         cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_readers_")
         # The reference: a mesh built here, with coordinates known exactly,
         # given to tetsmooth by meshio's ASCII VTU writer.
@@ -164,9 +170,7 @@ class IndependentReaders(unittest.TestCase):
         self.assert_same_mesh(m.points, m.cells_dict["tetra"])
 
     def test_gmsh_reads_the_msh_files(self):
-        gmsh, why = gmsh_module()
-        if gmsh is None:
-            self.skipTest(why)
+        gmsh = require_gmsh()
         for name, fmt in self.OUTPUTS:
             if not name.endswith(".msh"):
                 continue
@@ -237,9 +241,7 @@ class IndependentReaders(unittest.TestCase):
                 self.assertIn(reason, proc.stderr)
 
     def test_gmsh_written_mesh(self):
-        gmsh, why = gmsh_module()
-        if gmsh is None:
-            self.skipTest(why)
+        gmsh = require_gmsh()
         src = self.path("gmsh-box.msh")
         gmsh.initialize([""], readConfigFiles=False)
         try:

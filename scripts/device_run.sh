@@ -40,8 +40,8 @@ for step in $steps; do
     sanitize)
       cs=$(command -v compute-sanitizer || echo /usr/local/cuda/bin/compute-sanitizer)
       {
-        echo "== memcheck: every variant on the 5k model"
-        timeout 300 "$cs" --tool memcheck --error-exitcode 9 "$b/test_gpu_smoother" --gtest_filter='Variants/*:GpuSmoother.ColouredFormB*:GpuSmoother.Skipping*:GpuSmoother.ProgressReports*' 2>&1 | tail -8
+        echo "== memcheck: every variant on the 5k model, and the stopping rule of each strategy"
+        timeout 300 "$cs" --tool memcheck --error-exitcode 9 "$b/test_gpu_smoother" --gtest_filter='Variants/*:GpuSmoother.ColouredFormB*:GpuSmoother.Skipping*:GpuSmoother.ProgressReports*:GpuSmoother.StoppingRule*' 2>&1 | tail -8
         echo "memcheck exit ${PIPESTATUS[0]}"
         echo "== memcheck: GPU topology and colouring"
         timeout 200 "$cs" --tool memcheck --error-exitcode 9 "$b/test_gpu_topology" 2>&1 | tail -4

@@ -12,40 +12,60 @@
 
 namespace tetsmooth::cuda {
 
-// Input (double AoS, mesh units) -> working coordinates: (x - centre) * inv_scale.
+// The working frame: x_working = (x - centre) * inv_scale, and back
+// x = x_working * scale + centre. Double passes centre 0 and scale 1.
+struct WorkingFrame {
+  double cx, cy, cz, scale, inv_scale;
+};
+
+// Node i of the input (double AoS, mesh units) in working coordinates: the
+// one conversion, for loading and for telling a node the run left alone.
+inline WorkingFrame working_frame(const double centre[3], double scale) {
+  return WorkingFrame{centre[0], centre[1], centre[2], scale, 1.0 / scale};
+}
+
+template <class Real>
+__device__ __forceinline__ Vec3<Real> working_position(const double* in, index_t i, const WorkingFrame& f) {
+  return Vec3<Real>{static_cast<Real>((in[3 * i] - f.cx) * f.inv_scale),
+                    static_cast<Real>((in[3 * i + 1] - f.cy) * f.inv_scale),
+                    static_cast<Real>((in[3 * i + 2] - f.cz) * f.inv_scale)};
+}
+
 template <class Real, class Coords>
-__global__ void load_coords_kernel(const double* in, Coords out, index_t n, double cx, double cy, double cz,
-                                   double inv_scale) {
+__global__ void load_coords_kernel(const double* in, Coords out, index_t n, WorkingFrame f) {
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
   if (i >= n) return;
-  out.set(i, Vec3<Real>{static_cast<Real>((in[3 * i] - cx) * inv_scale), static_cast<Real>((in[3 * i + 1] - cy) * inv_scale),
-                        static_cast<Real>((in[3 * i + 2] - cz) * inv_scale)});
+  out.set(i, working_position<Real>(in, i, f));
 }
 
-// Only movable nodes are written back, so the others keep their input bits
-// even when the working precision is float.
+// Writes back the movable nodes that the run moved, into `out`, which holds
+// the input already: a node whose working position is still the one it was
+// loaded at keeps its input bits, so that float, whose working position is
+// the input rounded, returns unmoved nodes exactly as they came (a run of no
+// sweeps returns the input), and nodes that never move are never written.
 template <class Real, class Coords>
-__global__ void store_coords_kernel(Coords in, double* out, const std::uint8_t* movable, index_t n, double cx,
-                                    double cy, double cz, double scale) {
+__global__ void store_coords_kernel(Coords working, const double* input, double* out, const std::uint8_t* movable,
+                                    index_t n, WorkingFrame f) {
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
   if (i >= n || !movable[i]) return;
-  const Vec3<Real> v = in.get(i);
-  out[3 * i] = static_cast<double>(v.x) * scale + cx;
-  out[3 * i + 1] = static_cast<double>(v.y) * scale + cy;
-  out[3 * i + 2] = static_cast<double>(v.z) * scale + cz;
+  const Vec3<Real> v = working.get(i), loaded = working_position<Real>(input, i, f);
+  if (v.x == loaded.x && v.y == loaded.y && v.z == loaded.z) return;
+  out[3 * i] = static_cast<double>(v.x) * f.scale + f.cx;
+  out[3 * i + 1] = static_cast<double>(v.y) * f.scale + f.cy;
+  out[3 * i + 2] = static_cast<double>(v.z) * f.scale + f.cz;
 }
 
-// Counts the nodes that never move whose working coordinates differ from
-// `loaded`, the input converted afresh the way the run's were: the sweeps
-// must leave such nodes as they were loaded, and store_coords_kernel, which
-// writes back only movable nodes, would hide it if they did not.
+// Counts the nodes that never move whose working coordinates are not those
+// they were loaded at: the sweeps must leave such nodes alone, and
+// store_coords_kernel, which writes back movable nodes only, would hide it
+// if they did not.
 template <class Real, class Coords>
-__global__ void count_moved_fixed_kernel(Coords working, Coords loaded, const std::uint8_t* movable, index_t n,
-                                         unsigned long long* count) {
+__global__ void count_moved_fixed_kernel(Coords working, const double* input, const std::uint8_t* movable, index_t n,
+                                         WorkingFrame f, unsigned long long* count) {
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
   if (i >= n || movable[i]) return;
-  const Vec3<Real> a = working.get(i), b = loaded.get(i);
-  if (a.x != b.x || a.y != b.y || a.z != b.z) atomicAdd(count, 1ull);
+  const Vec3<Real> v = working.get(i), loaded = working_position<Real>(input, i, f);
+  if (v.x != loaded.x || v.y != loaded.y || v.z != loaded.z) atomicAdd(count, 1ull);
 }
 
 }  // namespace tetsmooth::cuda

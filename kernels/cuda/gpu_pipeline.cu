@@ -48,9 +48,9 @@ struct GpuPipeline::Impl {
   bool result_in_buf1 = false;
   GpuRunTimes times;
 
-  // The input converted into buffer `b` (3n Real) in the precision and
-  // layout of the last restore_coordinates.
-  void load_input(void* b);
+  // The working frame of the last restore_coordinates (sweep_loop.hpp).
+  const double* frame_centre() const;
+  double frame_scale() const;
 
   ~Impl() {
     if (host_state) CUDA_CHECK_NOTHROW(cudaFreeHost(host_state));
@@ -119,24 +119,23 @@ const GpuRunTimes& GpuPipeline::last_times() const { return impl_->times; }
 
 // Double works in mesh units, so it does the CPU's arithmetic; float works
 // in the unit box around the mesh, where its precision is best.
-void GpuPipeline::Impl::load_input(void* b) {
-  Impl& m = *this;
-  const index_t n = static_cast<index_t>(m.n);
-  const double identity[3] = {0, 0, 0};
-  const bool is_float = m.precision == Precision::Float;
-  const double* c = is_float ? m.centre : identity;
-  const double inv = is_float ? 1.0 / m.scale : 1.0;
-  if (is_float)
-    load_working_coords<float>(m.input.data(), b, n, m.layout, c, inv, m.stream);
-  else
-    load_working_coords<double>(m.input.data(), b, n, m.layout, c, inv, m.stream);
+const double* GpuPipeline::Impl::frame_centre() const {
+  static const double origin[3] = {0, 0, 0};
+  return precision == Precision::Float ? centre : origin;
 }
+double GpuPipeline::Impl::frame_scale() const { return precision == Precision::Float ? scale : 1.0; }
 
 void GpuPipeline::restore_coordinates(const SmoothOptions& o) {
   Impl& m = *impl_;
   m.precision = o.precision;
   m.layout = o.layout;
-  for (DeviceBuffer<double>* b : {&m.buf0, &m.buf1}) m.load_input(b->data());
+  const index_t n = static_cast<index_t>(m.n);
+  for (DeviceBuffer<double>* b : {&m.buf0, &m.buf1}) {
+    if (o.precision == Precision::Float)
+      load_working_coords<float>(m.input.data(), b->data(), n, o.layout, m.frame_centre(), m.frame_scale(), m.stream);
+    else
+      load_working_coords<double>(m.input.data(), b->data(), n, o.layout, m.frame_centre(), m.frame_scale(), m.stream);
+  }
   m.result_in_buf1 = false;
   CUDA_CHECK(cudaStreamSynchronize(m.stream));
 }
@@ -293,14 +292,14 @@ std::vector<double> GpuPipeline::download_xyz() const {
   if (m.topo.movable.size() != m.n)
     throw UsageError("GpuPipeline::download_xyz: run() has not been called");
   const index_t n = static_cast<index_t>(m.n);
-  const double identity[3] = {0, 0, 0};
-  const bool is_float = m.precision == Precision::Float;
   const void* src = m.result_in_buf1 ? m.buf1.data() : m.buf0.data();
   CUDA_CHECK(cudaMemcpyAsync(m.output.data(), m.input.data(), m.input.bytes(), cudaMemcpyDeviceToDevice, m.stream));
-  if (is_float)
-    store_movable_coords<float>(src, m.output.data(), m.topo.movable.data(), n, m.layout, m.centre, m.scale, m.stream);
+  if (m.precision == Precision::Float)
+    store_movable_coords<float>(src, m.input.data(), m.output.data(), m.topo.movable.data(), n, m.layout,
+                                m.frame_centre(), m.frame_scale(), m.stream);
   else
-    store_movable_coords<double>(src, m.output.data(), m.topo.movable.data(), n, m.layout, identity, 1.0, m.stream);
+    store_movable_coords<double>(src, m.input.data(), m.output.data(), m.topo.movable.data(), n, m.layout,
+                                 m.frame_centre(), m.frame_scale(), m.stream);
   return m.output.download(m.stream);
 }
 
@@ -309,15 +308,15 @@ std::size_t GpuPipeline::fixed_nodes_moved() const {
   if (m.topo.movable.size() != m.n)
     throw UsageError("GpuPipeline::fixed_nodes_moved: run() has not been called");
   const index_t n = static_cast<index_t>(m.n);
-  DeviceBuffer<double> loaded(m.buf0.size());
   DeviceBuffer<unsigned long long> count(1);
   CUDA_CHECK(cudaMemsetAsync(count.data(), 0, sizeof(unsigned long long), m.stream));
-  m.load_input(loaded.data());
   const void* working = m.result_in_buf1 ? m.buf1.data() : m.buf0.data();
   if (m.precision == Precision::Float)
-    count_moved_fixed<float>(working, loaded.data(), m.topo.movable.data(), n, m.layout, count.data(), m.stream);
+    count_moved_fixed<float>(working, m.input.data(), m.topo.movable.data(), n, m.layout, m.frame_centre(),
+                             m.frame_scale(), count.data(), m.stream);
   else
-    count_moved_fixed<double>(working, loaded.data(), m.topo.movable.data(), n, m.layout, count.data(), m.stream);
+    count_moved_fixed<double>(working, m.input.data(), m.topo.movable.data(), n, m.layout, m.frame_centre(),
+                              m.frame_scale(), count.data(), m.stream);
   return static_cast<std::size_t>(count.download(m.stream).front());
 }
 

@@ -54,12 +54,14 @@ class GpuPipeline {
 
   const GpuRunTimes& last_times() const;
 
-  // The working coordinates as double AoS (3 per node), in mesh units.
+  // The working coordinates as double AoS (3 per node), in mesh units; a
+  // node the run left where it was loaded keeps its input value exactly,
+  // in float too (so a run of no sweeps gives the input back).
   std::vector<double> download_xyz() const;
 
   // After run(): how many nodes that never move (boundary, pinned, in no
-  // tet) the run left other than restore_coordinates loaded them, in the
-  // working coordinates themselves (download_xyz writes back movable nodes
+  // tet) the run did not leave where restore_coordinates loaded them, in
+  // the working coordinates themselves (download_xyz writes back movable nodes
   // only, so it cannot show this). 0 unless a kernel is wrong; for tests.
   std::size_t fixed_nodes_moved() const;
 

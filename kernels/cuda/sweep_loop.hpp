@@ -62,18 +62,21 @@ struct SweepLoopStats {
 template <class Real>
 SweepLoopStats run_sweep_loop(const SweepLoopArgs& args, const SmoothOptions& options);
 
-// Loads the input (double AoS) into a working buffer, and back.
+// Loads the input (double AoS) into a working buffer, in the frame
+// x_working = (x - centre) / scale (coords_transfer_kernels.cuh), and back:
+// store_movable_coords writes into `out`, which holds the input, the
+// movable nodes whose working position is not the one they were loaded at.
 template <class Real>
 void load_working_coords(const double* input, void* buf, index_t n, Layout layout, const double centre[3],
-                         double inv_scale, cudaStream_t stream);
+                         double scale, cudaStream_t stream);
 template <class Real>
-void store_movable_coords(const void* buf, double* out, const std::uint8_t* movable, index_t n, Layout layout,
-                          const double centre[3], double scale, cudaStream_t stream);
-// How many nodes that never move have working coordinates other than
-// `loaded` (the same layout and precision) holds; adds them to *count.
+void store_movable_coords(const void* buf, const double* input, double* out, const std::uint8_t* movable, index_t n,
+                          Layout layout, const double centre[3], double scale, cudaStream_t stream);
+// How many nodes that never move are not where they were loaded; adds
+// them to *count.
 template <class Real>
-void count_moved_fixed(const void* working, const void* loaded, const std::uint8_t* movable, index_t n, Layout layout,
-                       unsigned long long* count, cudaStream_t stream);
+void count_moved_fixed(const void* working, const double* input, const std::uint8_t* movable, index_t n, Layout layout,
+                       const double centre[3], double scale, unsigned long long* count, cudaStream_t stream);
 template <class Real>
 void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout layout, SweepState* state,
                       cudaStream_t stream);

@@ -3,7 +3,6 @@
 // sweep_loop_float.cu and sweep_loop_double.cu (splitting keeps nvcc's
 // translation units small).
 #include <algorithm>
-#include <type_traits>
 
 #include "kernels/cuda/coloured_loop_launch.cuh"
 #include "kernels/cuda/coords_transfer_kernels.cuh"
@@ -210,34 +209,31 @@ SweepLoopStats run_sweep_loop(const SweepLoopArgs& a, const SmoothOptions& o) {
 
 template <class Real>
 void load_working_coords(const double* input, void* buf, index_t n, Layout layout, const double centre[3],
-                         double inv_scale, cudaStream_t stream) {
+                         double scale, cudaStream_t stream) {
   detail::with_layout<Real>(layout, buf, n, [&](auto coords) {
-    load_coords_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(input, coords, n, centre[0],
-                                                                                   centre[1], centre[2], inv_scale);
+    load_coords_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(input, coords, n,
+                                                                                   working_frame(centre, scale));
     CUDA_CHECK_LAUNCH();
   });
 }
 
 template <class Real>
-void store_movable_coords(const void* buf, double* out, const std::uint8_t* movable, index_t n, Layout layout,
-                          const double centre[3], double scale, cudaStream_t stream) {
+void store_movable_coords(const void* buf, const double* input, double* out, const std::uint8_t* movable, index_t n,
+                          Layout layout, const double centre[3], double scale, cudaStream_t stream) {
   detail::with_layout<Real>(layout, const_cast<void*>(buf), n, [&](auto coords) {
-    store_coords_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(coords, out, movable, n, centre[0],
-                                                                                    centre[1], centre[2], scale);
+    store_coords_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(coords, input, out, movable, n,
+                                                                                    working_frame(centre, scale));
     CUDA_CHECK_LAUNCH();
   });
 }
 
 template <class Real>
-void count_moved_fixed(const void* working, const void* loaded, const std::uint8_t* movable, index_t n, Layout layout,
-                       unsigned long long* count, cudaStream_t stream) {
-  detail::with_layout<Real>(layout, const_cast<void*>(working), n, [&](auto w) {
-    detail::with_layout<Real>(layout, const_cast<void*>(loaded), n, [&](auto l) {
-      if constexpr (std::is_same_v<decltype(w), decltype(l)>) {
-        count_moved_fixed_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(w, l, movable, n, count);
-        CUDA_CHECK_LAUNCH();
-      }
-    });
+void count_moved_fixed(const void* working, const double* input, const std::uint8_t* movable, index_t n, Layout layout,
+                       const double centre[3], double scale, unsigned long long* count, cudaStream_t stream) {
+  detail::with_layout<Real>(layout, const_cast<void*>(working), n, [&](auto coords) {
+    count_moved_fixed_kernel<Real><<<detail::blocks_for(n), detail::kBlock, 0, stream>>>(
+        coords, input, movable, n, working_frame(centre, scale), count);
+    CUDA_CHECK_LAUNCH();
   });
 }
 
@@ -256,10 +252,10 @@ void sum_edge_lengths(const MeshView& view, const void* buf, index_t n, Layout l
   template SweepLoopStats run_sweep_loop<Real>(const SweepLoopArgs&, const SmoothOptions&);                       \
   template void load_working_coords<Real>(const double*, void*, index_t, Layout, const double*, double,           \
                                           cudaStream_t);                                                           \
-  template void store_movable_coords<Real>(const void*, double*, const std::uint8_t*, index_t, Layout,            \
-                                           const double*, double, cudaStream_t);                                   \
-  template void count_moved_fixed<Real>(const void*, const void*, const std::uint8_t*, index_t, Layout,               \
-                                        unsigned long long*, cudaStream_t);                                        \
+  template void store_movable_coords<Real>(const void*, const double*, double*, const std::uint8_t*, index_t,      \
+                                           Layout, const double*, double, cudaStream_t);                           \
+  template void count_moved_fixed<Real>(const void*, const double*, const std::uint8_t*, index_t, Layout,          \
+                                        const double*, double, unsigned long long*, cudaStream_t);                 \
   template void sum_edge_lengths<Real>(const MeshView&, const void*, index_t, Layout, SweepState*, cudaStream_t);
 
 }  // namespace tetsmooth::cuda

@@ -316,6 +316,24 @@ TEST(GmshIo, SkippedSectionsAreNoted) {
   EXPECT_TRUE(read_gmsh_file(testing::data_path("gmsh_sparse41.msh")).extras.read_notes.empty());
 }
 
+// A section name is file text: the note, and the error when its end marker
+// never comes, quote it escaped and cut short, one line whatever it holds.
+TEST(GmshIo, EchoedSectionNamesAreOneShortEscapedLine) {
+  const std::string name = "$Y\x1dY\x7f" + std::string(1 << 20, 'Y');
+  const std::string excerpt = "$Y\\x1dY\\x7f" + std::string(35, 'Y') + "...";
+  const TetMesh mesh = read_text(std::string(kMinimal) + name + "\n1\n$End" + name.substr(1) + "\n");
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{excerpt + " section skipped; it will not be in the written file"}));
+  const std::string unended = read_error(std::string(kMinimal) + name + "\n1\n");
+  EXPECT_NE(unended.find("unexpected end of file, expected $EndY\\x1dY\\x7f"), std::string::npos)
+      << unended.substr(0, 200);
+  EXPECT_LT(unended.size(), 200u);
+  const std::string bad = read_error(replaced(kMinimal, "$Elements\n", "gar\x1d" "bage\n$Elements\n"));
+  EXPECT_NE(bad.find("expected a section such as $Nodes, found 'gar\\x1dbage'"), std::string::npos) << bad;
+  const std::string after = read_error(replaced(kMinimal, "$Elements\n", "$Elements\x1d x\n"));
+  EXPECT_NE(after.find("after $Elements\\x1d"), std::string::npos) << after;
+}
+
 // The quality and boundary fields tetsmooth writes are recomputed on every
 // write, so a file it wrote reads back without notes; a user's own field of
 // another name, or under the other section, is still noted.

@@ -142,6 +142,10 @@ TEST(MeditIo, BadInputNamesFileAndLine) {
       {"1 0 0 0\n", "nan 0 0 0\n", "t.mesh:6:", "non-finite vertex coordinate"},
       {"0 1 0 0\n", "0 inf 0 0\n", "t.mesh:7:", "non-finite vertex coordinate"},
       {"End\n", "Foo 1\nEnd\n", "t.mesh:12:", "unknown or unsupported Medit keyword 'Foo'"},
+      // File text is echoed escaped and cut short: a control byte, a long keyword.
+      {"End\n", "F\x1doo 1\nEnd\n", "t.mesh:12:", "unknown or unsupported Medit keyword 'F\\x1doo'"},
+      {"End\n", "Foooooooooooooooooooooooooooooooooooooooooooooo 1\nEnd\n", "t.mesh:12:",
+       "keyword 'Fooooooooooooooooooooooooooooooooooooooo...'"},
       {"Vertices\n4\n", "Vertices\n3\n", "t.mesh:8:", "unexpected number '0' where a keyword belongs"},
       {"Tetrahedra\n1\n", "Tetrahedra\n2\n", "t.mesh:12:", "expected an integer vertex index, found 'End'"},
       {"Tetrahedra\n1\n1 2 3 4 0\n", "Tetrahedra\n0\n", "t.mesh:11:", "no Tetrahedra"},

@@ -230,7 +230,7 @@ TEST(VtuErrors, StructuralProblems) {
                 .find("several pieces"),
             std::string::npos);
   EXPECT_NE(vtu_error(replaced(ascii, "</Points>", "</Cells>")).find("does not match"), std::string::npos);
-  EXPECT_NE(vtu_error("just text").find("empty file"), std::string::npos);
+  EXPECT_NE(vtu_error("just text").find("not a VTK XML file"), std::string::npos);
   EXPECT_NE(
       vtu_error(replaced(ascii, "NumberOfPoints=\"5\"", "NumberOfPoints=\"99999999999\"")).find("more than the file"),
       std::string::npos);
@@ -914,6 +914,134 @@ TEST(VtkTagArrays, FieldDataOfTheDatasetIsNoted) {
   expect_vtk_fixture_tags(from_vtk);
   ASSERT_FALSE(from_vtk.extras.read_notes.empty());
   EXPECT_EQ(from_vtk.extras.read_notes.back(), "field data arrays 'TimeValue', 'CYCLE' are ignored and not written back");
+}
+
+
+// Positions of values at fault ----------------------------------------------
+//
+// A node index or offset is checked only once every section is read, long
+// after its value: the message names the value's own line or byte, found
+// again from the array's start, not the line the reader stands at.
+
+const std::string kV42 =
+    "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+    "0 0 0 1 0 0 0 1 0\n0 0 1 1 1 1\nCELLS 2 10\n4 0 1\n2 3 4 1 2\n3\n4\nCELL_TYPES 2\n10\n10\n";
+
+TEST(VtkValuePlaces, LegacyAsciiNodeIndexOutOfRangeNamesItsOwnLine) {
+  // Cell 1's values wrap over lines 10-12; each bad one is named on its line.
+  EXPECT_NE(vtk_error(replaced(kV42, "3\n4\nCELL_TYPES", "3\n7\nCELL_TYPES"))
+                .find("mesh.vtk:12: cell 1: node 7 out of range [0, 5)"),
+            std::string::npos)
+      << vtk_error(replaced(kV42, "3\n4\nCELL_TYPES", "3\n7\nCELL_TYPES"));
+  EXPECT_NE(vtk_error(replaced(kV42, "2 3 4 1 2\n", "2 3 4 9 2\n")).find("mesh.vtk:10: cell 1: node 9 out of range"),
+            std::string::npos);
+  EXPECT_NE(vtk_error(replaced(kV42, "4 0 1\n", "4 -1 1\n")).find("mesh.vtk:9: cell 0: node -1 out of range"),
+            std::string::npos);
+}
+
+TEST(VtkValuePlaces, LegacyAscii51NamesTheConnectivityAndOffsetsLines) {
+  const std::string v51 = file_text("vtk_v51.vtk");
+  const std::string bad_node = replaced(v51, "1 2 3 4\n4\nCELL_TYPES", "1 2 3 4\n8\nCELL_TYPES");
+  EXPECT_NE(vtk_error(bad_node).find(line_of(bad_node, "8\nCELL_TYPES", "mesh.vtk") +
+                                     " cell 2: node 8 out of range [0, 5)"),
+            std::string::npos)
+      << vtk_error(bad_node);
+  const std::string bad_offset = replaced(v51, "0 4 8\n9\n", "0 4 8\n12\n");
+  EXPECT_NE(vtk_error(bad_offset).find(line_of(bad_offset, "12\n", "mesh.vtk") +
+                                       " cell 2: offset 12 outside the connectivity array of 9"),
+            std::string::npos)
+      << vtk_error(bad_offset);
+}
+
+// A stream that cannot seek back, as a pipe: the value cannot be read
+// again, so the message names the array's line and which value it is.
+class OneWayBuffer : public std::streambuf {
+ public:
+  explicit OneWayBuffer(std::string text) : text_(std::move(text)) {
+    setg(text_.data(), text_.data(), text_.data() + text_.size());
+  }
+
+ private:
+  std::string text_;
+};
+
+TEST(VtkValuePlaces, LegacyAsciiFromAnUnseekableStreamNamesTheArrayAndTheEntry) {
+  OneWayBuffer buffer(replaced(kV42, "3\n4\nCELL_TYPES", "3\n7\nCELL_TYPES"));
+  std::istream in(&buffer);
+  const std::string msg = testing::input_error_message([&] { read_vtk(in, "pipe"); }, "a pipe");
+  EXPECT_EQ(msg, "pipe:8: cell 1: node 7 out of range [0, 5) (value 9, counted from 0, of the CELLS data after this "
+                 "keyword)");
+}
+
+TEST(VtkValuePlaces, VtuAsciiNodeIndexOutOfRangeNamesItsOwnLine) {
+  // The connectivity spread over lines, one value on a line of its own.
+  const std::string text = replaced(file_text("vtu_ascii.vtu"), "1 2 3 4\n", "1 2 3\n5\n");
+  const std::string msg = vtu_error(text);
+  EXPECT_EQ(msg.rfind("mesh.vtu:29: cell 1: node 5 out of range [0, 5)", 0), 0u) << msg;  // the 5's line
+  const std::string offsets = replaced(file_text("vtu_ascii.vtu"), "4 8 11 13", "4 8\n99 13");
+  EXPECT_EQ(vtu_error(offsets).rfind(line_of(offsets, "99 13", "mesh.vtu") +
+                                         " cell 2: offset 99 outside the connectivity array of 13", 0),
+            0u)
+      << vtu_error(offsets);
+}
+
+TEST(VtkValuePlaces, VtuBinaryNamesTheValuesByteOrTheArraysDataAndTheEntry) {
+  TetMesh mesh = decorated_mesh();
+  mesh.tets[5] = 99;  // cell 1, its second node
+  const std::string plain = vtu_text(mesh);
+  // Raw uncompressed appended data: the value's own byte.
+  const std::size_t data = appended_data_at(plain, "connectivity");
+  const std::string tag = plain.substr(plain.rfind("<DataArray", plain.find("Name=\"connectivity\"")));
+  const std::size_t size = attribute(tag, "type") == "Int32" ? 4 : 8;
+  EXPECT_EQ(vtu_error(plain), "mesh.vtu, byte " + std::to_string(data + 8 + 5 * size) +
+                                  ": cell 1: node 99 out of range [0, 9)");
+  // Compressed or base64 data: where the array's data start, and the entry.
+  for (const VtuForm form : {VtuForm::Inline, VtuForm::AppendedRaw, VtuForm::AppendedBase64}) {
+    Packing p;
+    p.form = form;
+    SCOPED_TRACE(describe(p));
+    const std::string text = compressed_vtu(plain, p);
+    const std::size_t decl = text.find("Name=\"connectivity\"");
+    const std::size_t at = form == VtuForm::Inline ? text.find('>', decl) + 1 : appended_data_at(text, "connectivity");
+    EXPECT_EQ(vtu_error(text), "mesh.vtu, byte " + std::to_string(at) +
+                                   ": cell 1: node 99 out of range [0, 9) (value 5, counted from 0, of the "
+                                   "connectivity array, whose compressed data start at this byte)");
+  }
+}
+
+// File text in messages ------------------------------------------------------
+
+TEST(VtuErrors, EchoedTextIsOneShortEscapedLine) {
+  const std::string ascii = file_text("vtu_ascii.vtu");
+  const std::string newline = vtu_error(replaced(ascii, "type=\"Int64\" Name=\"connectivity\"",
+                                                 "type=\"UInt\n8\" Name=\"connectivity\""));
+  EXPECT_NE(newline.find("unsupported DataArray type 'UInt\\x0a8'"), std::string::npos) << newline;
+  const std::string huge = vtu_error(replaced(ascii, "type=\"Int64\" Name=\"connectivity\"",
+                                              "type=\"" + std::string(1 << 20, 'Y') + "\" Name=\"connectivity\""));
+  EXPECT_NE(huge.find("unsupported DataArray type '" + std::string(40, 'Y') + "...'"), std::string::npos);
+  EXPECT_LT(huge.size(), 200u);
+  const std::string control = vtu_error(replaced(ascii, "</Points>", "</Po\x1dints\x0b>"));
+  EXPECT_NE(control.find("end tag 'Po\\x1dints\\x0b' does not match"), std::string::npos) << control;
+  for (const std::string& msg : {newline, huge, control}) {
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\x1d'), std::string::npos) << msg;
+  }
+  // Array names in the notes on dropped arrays.
+  const TetMesh noted = vtu_from_text(vtu_with_cell_data(vtu_cell_array("a\nb", "1 2 3 4")));
+  ASSERT_FALSE(noted.extras.read_notes.empty());
+  EXPECT_EQ(noted.extras.read_notes.back(), "cell data array 'a\\x0ab' is ignored and not written back");
+}
+
+TEST(VtuErrors, AFileThatIsNotXmlIsNamedByWhatItHolds) {
+  EXPECT_EQ(vtu_error("hello world\n"),
+            "mesh.vtu:1: not a VTK XML file: expected <VTKFile type=\"UnstructuredGrid\">, found 'hello world\\x0a'");
+  const std::string msh = vtu_error("\n$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+  EXPECT_EQ(msh.rfind("mesh.vtu:2: not a VTK XML file: expected <VTKFile type=\"UnstructuredGrid\">, found "
+                      "'$MeshFormat\\x0a4.1 0 8\\x0a$EndMeshFormat\\x0a'", 0),
+            0u)
+      << msh;
+  EXPECT_EQ(vtu_error(""), "mesh.vtu:1: empty file, expected <VTKFile type=\"UnstructuredGrid\">");
+  EXPECT_EQ(vtu_error(" \n\t\r\n"), "mesh.vtu:1: empty file, expected <VTKFile type=\"UnstructuredGrid\">");
 }
 
 }  // namespace

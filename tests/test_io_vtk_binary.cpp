@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -277,6 +279,42 @@ TEST(LegacyVtkBinaryErrors, LinesAreNamedByTheirByteOffset) {
                                      ": DATASET 'POLYDATA' is not supported"),
             std::string::npos)
       << vtk_error(polydata);
+}
+
+
+// A node index or offset is checked once the whole file is read: the message
+// names the byte of the value itself (its array's start plus its place times
+// its type's size), in both layouts, not the line the reader stands at.
+TEST(LegacyVtkBinaryErrors, ANodeIndexOrOffsetOutOfRangeNamesItsOwnByte) {
+  TetMesh mesh = testing::cube_with_centre(0.4, 0.5, 0.6);
+  mesh.tets[5] = 99;  // cell 1, its second node
+  const std::string range = ": cell 1: node 99 out of range [0, " + std::to_string(mesh.num_nodes()) + ")";
+  const std::string v42 = binary_file(mesh, false);
+  const std::size_t cells = v42.find('\n', v42.find("\nCELLS ") + 1) + 1;
+  // Cell 0's count and 4 nodes, cell 1's count and first node before it.
+  EXPECT_EQ(vtk_error(v42), "mesh.vtk, byte " + std::to_string(cells + 4 * 7) + range);
+  const std::string v51 = binary_file(mesh, true);
+  const std::size_t connectivity = v51.find("CONNECTIVITY vtktypeint64\n") + 26;
+  EXPECT_EQ(vtk_error(v51), "mesh.vtk, byte " + std::to_string(connectivity + 8 * 5) + range);
+
+  // The last offset past the connectivity.
+  mesh.tets[5] = 1;
+  std::string offsets = binary_file(mesh, true);
+  const std::size_t tets = mesh.num_tets();
+  const std::size_t last = offsets.find("OFFSETS vtktypeint64\n") + 21 + 8 * tets;
+  offsets.replace(last, 8, be<std::int64_t>({99}));
+  EXPECT_EQ(vtk_error(offsets), "mesh.vtk, byte " + std::to_string(last) + ": cell " + std::to_string(tets - 1) +
+                                    ": offset 99 outside the connectivity array of " + std::to_string(4 * tets));
+}
+
+// Meshio's own 5.1 BINARY file, a node index made 99.
+TEST(LegacyVtkBinaryErrors, ANodeIndexOutOfRangeInMeshiosFileNamesItsByte) {
+  std::ifstream in(testing::data_path("vtk_binary51.vtk"), std::ios::binary);
+  std::string text(std::istreambuf_iterator<char>(in), {});
+  const std::size_t connectivity = text.find("CONNECTIVITY vtktypeint64\n") + 26;
+  text.replace(connectivity + 8 * 6, 8, be<std::int64_t>({99}));  // cell 1, its third node
+  EXPECT_EQ(vtk_error(text), "mesh.vtk, byte " + std::to_string(connectivity + 48) +
+                                 ": cell 1: node 99 out of range [0, 5)");
 }
 
 }  // namespace

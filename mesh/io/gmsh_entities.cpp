@@ -177,7 +177,7 @@ Entities parse_entities_text(const std::string& body, const std::string& source)
   AsciiSource src(lines);
   Entities entities = read_entities(src);
   const std::string_view rest = src.next_section();
-  if (!rest.empty()) src.fail("unexpected '" + std::string(rest.substr(0, 40)) + "' after the last entity");
+  if (!rest.empty()) src.fail("unexpected " + quoted_token(rest) + " after the last entity");
   return entities;
 }
 

@@ -37,7 +37,7 @@ void read_physical_names(Source& src, ReadState& state) {
   std::string body(src.line("the number of physical names"));
   long long count = 0;
   if (!parse_integer(body, count) || count < 0)
-    src.fail("expected the number of physical names, found '" + body.substr(0, 40) + "'");
+    src.fail("expected the number of physical names, found " + quoted_token(body));
   body += '\n';
   for (long long i = 0; i < count; ++i) {
     const std::string_view line = src.line("a physical name");
@@ -79,7 +79,7 @@ void check_partition_tags(Source& src, const ReadState& state) {
 // once. $Comments holds nothing a mesh would miss.
 void note_skipped(const std::string& section, FileExtras& extras) {
   if (section == "$Comments") return;
-  std::string note = section + " section skipped; it will not be in the written file";
+  std::string note = text_excerpt(section) + " section skipped; it will not be in the written file";
   if (std::find(extras.read_notes.begin(), extras.read_notes.end(), note) == extras.read_notes.end())
     extras.read_notes.push_back(std::move(note));
 }
@@ -118,7 +118,7 @@ void read_sections(Source& src, ReadState& state) {
     const std::string section(src.next_section());
     if (section.empty()) return;
     if (section[0] != '$' || section.compare(0, 4, "$End") == 0 || section.find_first_of(" \t") != std::string::npos)
-      src.fail("expected a section such as $Nodes, found '" + section.substr(0, 40) + "'");
+      src.fail("expected a section such as $Nodes, found " + quoted_token(section));
     const std::string end = "$End" + section.substr(1);
     const auto once = [&](bool& seen) {
       if (seen) src.fail("a second " + section + " section");
@@ -322,8 +322,7 @@ TetMesh read_gmsh(std::istream& in, const std::string& source) {
   } else if (version == "2.2" || version == "2.1" || version == "2" || version == "2.0") {
     state.major = 2;
   } else {
-    lines.fail("unsupported MSH version '" + std::string(version.substr(0, 20)) +
-               "'; 4.1 and 2.2 are read (Gmsh can convert others)");
+    lines.fail("unsupported MSH version " + quoted_token(version) + "; 4.1 and 2.2 are read (Gmsh can convert others)");
   }
   if (file_type != 0 && file_type != 1) lines.fail("file type " + std::to_string(file_type) + " is not 0 or 1");
 

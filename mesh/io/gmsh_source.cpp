@@ -64,7 +64,7 @@ void AsciiSource::expect_end(std::string_view end_name) {
 // of its own (and is kept verbatim as whole lines).
 void AsciiSource::alone_on_line(std::string_view name) const {
   if (taken_ < lines_.size())
-    fail("unexpected " + quoted_token(lines_.token(taken_, "a value")) + " after " + std::string(name.substr(0, 40)));
+    fail("unexpected " + quoted_token(lines_.token(taken_, "a value")) + " after " + text_excerpt(name));
 }
 
 void AsciiSource::skip_section(std::string_view end_name) {
@@ -74,7 +74,7 @@ void AsciiSource::skip_section(std::string_view end_name) {
       return;
     }
   }
-  fail("unexpected end of file, expected " + std::string(end_name));
+  fail("unexpected end of file, expected " + text_excerpt(end_name));
 }
 
 std::string_view AsciiSource::line(const char* what) {
@@ -157,7 +157,7 @@ void BinarySource::skip_section(std::string_view end_name) {
   // standing alone at the start of a line.
   for (std::size_t from = pos_;;) {
     const std::size_t at = data_.find(end_name, from);
-    if (at == std::string::npos) fail("unexpected end of file, expected " + std::string(end_name));
+    if (at == std::string::npos) fail("unexpected end of file, expected " + text_excerpt(end_name));
     const std::size_t after = at + end_name.size();
     const bool starts_line = at == pos_ || data_[at - 1] == '\n';
     const bool ends_line = after == data_.size() || data_[after] == '\n' || data_[after] == '\r';

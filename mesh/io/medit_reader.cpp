@@ -146,11 +146,11 @@ void MeditReader::kept(const medit::KeptKeyword& kw) {
       if (k < kw.integers) {
         long long v = 0;
         if (!parse_integer(token, v) || v < 1)
-          lines_.fail("expected a positive index, found '" + std::string(token.substr(0, 40)) + "'");
+          lines_.fail("expected a positive index, found " + quoted_token(token));
       } else {
         double v = 0;
         if (!parse_real(token, v) || !std::isfinite(v))
-          lines_.fail("expected a finite number, found '" + std::string(token.substr(0, 40)) + "'");
+          lines_.fail("expected a finite number, found " + quoted_token(token));
       }
       body += token;
       body += k + 1 < kw.integers + kw.reals ? ' ' : '\n';
@@ -182,9 +182,9 @@ void MeditReader::section(const std::string& keyword) {
     if (same_keyword(keyword, kw)) return string_section(kw);
   const char c = keyword[0];
   if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.')
-    lines_.fail("unexpected number '" + keyword.substr(0, 40) +
-                "' where a keyword belongs (does the previous section's count match its data?)");
-  lines_.fail("unknown or unsupported Medit keyword '" + keyword.substr(0, 40) + "'");
+    lines_.fail("unexpected number " + quoted_token(keyword) +
+                " where a keyword belongs (does the previous section's count match its data?)");
+  lines_.fail("unknown or unsupported Medit keyword " + quoted_token(keyword));
 }
 
 TetMesh MeditReader::read(const std::string& source) {

@@ -102,8 +102,8 @@ int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh)
   lines.require_line("the .node header \"<#nodes> 3 <#attributes> <markers 0|1>\"");
   const std::size_t count = count_field(lines, 0, "node count");
   if (count == 0) lines.fail("the .node file declares no nodes");
-  if (lines.size() > 1 && lines.integer(1, "dimension") != 3)
-    lines.fail("dimension " + std::string(lines.token(1, "dimension")) + " is not supported, only 3");
+  if (const long long dim = lines.size() > 1 ? lines.integer(1, "dimension") : 3; dim != 3)
+    lines.fail("dimension " + std::to_string(dim) + " is not supported, only 3");
   const std::size_t attrs = lines.size() > 2 ? count_field(lines, 2, "attribute count") : 0;
   const long long markers = lines.size() > 3 ? lines.integer(3, "boundary marker flag") : 0;
   if (markers != 0 && markers != 1) lines.fail("boundary marker flag must be 0 or 1, found " + std::to_string(markers));

@@ -1,5 +1,6 @@
 #include "mesh/io/text_lines.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -18,11 +19,11 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' |
 
 }  // namespace
 
-std::string quoted_token(std::string_view token) {
+std::string text_excerpt(std::string_view text) {
   constexpr std::size_t kMax = 40;  // a binary blob must not flood the message
   constexpr char kHex[] = "0123456789abcdef";
-  std::string s = "'";
-  for (const char c : token.substr(0, kMax)) {
+  std::string s;
+  for (const char c : text.substr(0, kMax)) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte >= 0x20 && byte < 0x7f) {
       s += c;
@@ -32,9 +33,11 @@ std::string quoted_token(std::string_view token) {
       s += kHex[byte & 15];
     }
   }
-  if (token.size() > kMax) s += "...";
-  return s + "'";
+  if (text.size() > kMax) s += "...";
+  return s;
 }
+
+std::string quoted_token(std::string_view token) { return "'" + text_excerpt(token) + "'"; }
 
 bool parse_integer(std::string_view token, long long& value) {
   token = strip_plus(token);
@@ -179,8 +182,40 @@ bool TextLines::at_line_break() {
   return c == std::char_traits<char>::eof() || c == '\n' || c == '\r';
 }
 
+std::string TextLines::where_at_byte(std::uint64_t offset) const {
+  return source_ + ", byte " + std::to_string(offset);
+}
+
 void TextLines::fail_at_byte(std::uint64_t offset, const std::string& what) const {
-  throw InputError(source_ + ", byte " + std::to_string(offset), what);
+  throw InputError(where_at_byte(offset), what);
+}
+
+TextLines::Mark TextLines::mark() const {
+  // The stream stands after the current line: step back over it.
+  const std::streamoff after = in_.tellg();
+  Mark m;
+  const auto line_bytes = static_cast<std::int64_t>(next_offset_ - line_offset_);
+  m.stream_at = after < 0 ? -1 : static_cast<std::int64_t>(after) - line_bytes;
+  m.line = line_no_;
+  m.token = cursor_;
+  return m;
+}
+
+std::string TextLines::where_of_token(const Mark& mark, std::uint64_t n) const {
+  if (mark.stream_at < 0) return {};
+  in_.clear();
+  if (!in_.seekg(mark.stream_at)) return {};
+  // Tokenized by the same code as the first reading, so the count agrees.
+  TextLines again(in_, source_, comment_);
+  again.line_no_ = mark.line == 0 ? 0 : mark.line - 1;
+  if (mark.line > 0 && !again.read_raw_line()) return {};
+  again.cursor_ = std::min(mark.token, again.tokens_.size());
+  for (std::uint64_t i = 0; i < n; ++i) {
+    if (again.at_end()) return {};
+    ++again.cursor_;
+  }
+  if (again.at_end()) return {};
+  return again.where();
 }
 
 // An empty file reports line 1, where the missing content was expected.

@@ -18,9 +18,13 @@ namespace tetsmooth {
 bool parse_integer(std::string_view token, long long& value);
 bool parse_real(std::string_view token, double& value);
 
-// A token from a file for a message: in single quotes, cut to 40
-// characters, bytes outside printable ASCII written as \xNN (a token of a
-// binary file must not put raw bytes in a message).
+// Text from a file for a message (a token, a name, an attribute value, a
+// section name): cut to 40 characters with "..." after, bytes outside
+// printable ASCII (line breaks, control bytes, bytes of a binary file)
+// written as \xNN, so that a message stays one short line whatever the file
+// holds. Every message that echoes file text goes through this;
+// quoted_token puts it in single quotes, as most messages want it.
+std::string text_excerpt(std::string_view text);
 std::string quoted_token(std::string_view token);
 
 class TextLines {
@@ -87,8 +91,24 @@ class TextLines {
   // starts ("source, byte N") instead of its number: once binary blocks are
   // read, line numbers no longer locate anything.
   void locate_by_byte() { by_byte_ = true; }
-  // InputError at byte `offset` ("source, byte N: what").
+  // "source, byte N", and InputError there ("source, byte N: what").
+  std::string where_at_byte(std::uint64_t offset) const;
   [[noreturn]] void fail_at_byte(std::uint64_t offset, const std::string& what) const;
+
+  // A place in the input to count tokens from again: a message about a value
+  // read long before (a node index found out of range only once every
+  // section is read) can then name its line without a place kept per value.
+  struct Mark {
+    std::int64_t stream_at = -1;  // stream position of the marked line's start; -1 if the input cannot seek
+    std::size_t line = 0;         // its number
+    std::size_t token = 0;        // tokens of it already taken
+  };
+  // The place of the token next_token() would return next.
+  Mark mark() const;
+  // "source:line" of token n (0 for the first) from `mark` on, read again from
+  // the input, which is left at some other place: for a message just before
+  // failing. Empty when the input cannot seek back or holds fewer tokens.
+  std::string where_of_token(const Mark& mark, std::uint64_t n) const;
 
   const std::string& source() const { return source_; }
   std::size_t line_number() const { return line_no_; }

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -31,7 +32,7 @@ bool is_recomputed_field(const VtkArrayDecl& a) {
 
 std::string quoted_list(const std::vector<std::string>& names) {
   std::string out;
-  for (const std::string& name : names) out += (out.empty() ? "'" : ", '") + name + "'";
+  for (const std::string& name : names) out += (out.empty() ? "" : ", ") + quoted_token(name);
   return out;
 }
 

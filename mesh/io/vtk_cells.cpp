@@ -121,10 +121,15 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
 
 void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
                          const std::vector<long long>& offsets, const std::vector<long long>& types,
-                         const std::vector<int>& tags, const std::string& where) {
+                         const std::vector<int>& tags, const std::string& where, const VtkCellPlace& place) {
   const std::size_t count = types.size();
   const auto fail = [&](std::size_t cell, const std::string& what) {
     throw InputError(where, "cell " + std::to_string(cell) + ": " + what);
+  };
+  const auto fail_at = [&](VtkCellArray array, std::size_t index, std::size_t cell, const std::string& what) {
+    const VtkValuePlace at = place(array, index, cell);
+    throw InputError(at.where,
+                     "cell " + std::to_string(cell) + ": " + what + (at.entry.empty() ? "" : " (" + at.entry + ")"));
   };
   if (offsets.size() != count + 1 || offsets.front() != 0)
     throw InputError(where, "cell offsets do not match the " + std::to_string(count) + " cell types");
@@ -138,11 +143,13 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
   for (std::size_t c = 0; c < count; ++c) {
     const long long begin = offsets[c], end = offsets[c + 1];
     if (end < begin || end > static_cast<long long>(connectivity.size()))
-      fail(c, "offset " + std::to_string(end) + " outside the connectivity array of " +
+      fail_at(VtkCellArray::Offsets, c + 1, c,
+              "offset " + std::to_string(end) + " outside the connectivity array of " +
                   std::to_string(connectivity.size()));
     for (long long k = begin; k < end; ++k)
       if (connectivity[k] < 0 || connectivity[k] >= num_nodes)
-        fail(c, "node " + std::to_string(connectivity[k]) + " out of range [0, " + std::to_string(num_nodes) + ")");
+        fail_at(VtkCellArray::Connectivity, static_cast<std::size_t>(k), c,
+                "node " + std::to_string(connectivity[k]) + " out of range [0, " + std::to_string(num_nodes) + ")");
     const long long type = types[c];
     const PassThroughType* pass = by_vtk(type);
     const long long expected = type == kVtkTetra ? 4 : pass ? pass->nodes : -1;

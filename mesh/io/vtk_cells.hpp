@@ -6,6 +6,7 @@
 // in a per-point 0/1 array named kVtkFixedArray; readers also take tags
 // under other names (vtk_arrays.hpp).
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -34,13 +35,30 @@ void check_vtk_blocks(const TetMesh& mesh, const std::string& where);
 // Checks the blocks as above (where = "VTK output").
 VtkCells vtk_cells_of(const TetMesh& mesh);
 
+// The arrays of cell data that mesh_from_vtk_cells reads by index.
+enum class VtkCellArray { Offsets, Connectivity };
+
+// Where a value of a file stands, for a message about it: `where` is the
+// value's own line or byte, and `entry` empty; or, where a reader cannot tell
+// that, `where` is the start of the array and `entry` says which value of
+// which array it is ("value 17 of the connectivity data, which start here").
+struct VtkValuePlace {
+  std::string where;
+  std::string entry;
+};
+
+// The place of value `index` of the offsets or connectivity vector a reader
+// passed to mesh_from_vtk_cells, a value of cell `cell`.
+using VtkCellPlace = std::function<VtkValuePlace(VtkCellArray array, std::size_t index, std::size_t cell)>;
+
 // Splits cells read from a file into mesh.tets and mesh.extras.blocks (one
 // block per cell type, in order of first appearance) and fixes the nodes of
 // the blocks. mesh.xyz must be filled; offsets has #cells + 1 entries from 0;
 // tags is one per cell (from vtk_region_tags) or empty. Errors are
-// InputErrors at `where`, naming the cell.
+// InputErrors naming the cell: at the value at fault for an offset or a node
+// index (`place`), else at `where` (the cell types).
 void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
                          const std::vector<long long>& offsets, const std::vector<long long>& types,
-                         const std::vector<int>& tags, const std::string& where);
+                         const std::vector<int>& tags, const std::string& where, const VtkCellPlace& place);
 
 }  // namespace tetsmooth

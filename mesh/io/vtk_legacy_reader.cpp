@@ -53,7 +53,10 @@ class LegacyReader {
     std::vector<int> tags;
     if (pick.tags != kNoVtkArray)
       tags = vtk_region_tags(kept_[pick.tags].values, types_.size(), arrays_[pick.tags].name, kept_[pick.tags].where);
-    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, tags, types_where_);
+    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, tags, types_where_,
+                        [this](VtkCellArray array, std::size_t index, std::size_t cell) {
+                          return cell_value_place(array, index, cell);
+                        });
     if (pick.fixed != kNoVtkArray)
       fix_vtk_nodes(mesh_, kept_[pick.fixed].values, arrays_[pick.fixed].name, kept_[pick.fixed].where);
     validate_mesh(mesh_, lines_.source());
@@ -69,6 +72,49 @@ class LegacyReader {
     std::string where;
     std::vector<double> values;
   };
+
+  // Where an array of cell data starts, to find one of its values again
+  // when mesh_from_vtk_cells finds it wrong, without a place kept per value.
+  struct ArrayStart {
+    const char* name = "";
+    std::string where;          // the keyword's line (ASCII) or its start (BINARY)
+    std::uint64_t data = 0;     // BINARY: byte offset of the first value
+    std::size_t size = 0;       // BINARY: bytes a value
+    TextLines::Mark first;      // ASCII: the place of the first value
+  };
+
+  // Call right before the array's first value is read.
+  ArrayStart array_start(const char* name, std::size_t value_size) const {
+    ArrayStart a;
+    a.name = name;
+    a.where = lines_.where();
+    if (binary_) {
+      a.data = lines_.next_offset();
+      a.size = value_size;
+    } else {
+      a.first = lines_.mark();
+    }
+    return a;
+  }
+
+  // Value `position` (from 0) of the array that starts at `a`: its byte, or
+  // its line found by reading the tokens again; the array's line and the
+  // entry where the input cannot be read again.
+  VtkValuePlace value_place(const ArrayStart& a, std::uint64_t position) const {
+    if (binary_) return {lines_.where_at_byte(a.data + position * a.size), ""};
+    std::string where = lines_.where_of_token(a.first, position);
+    if (!where.empty()) return {std::move(where), ""};
+    return {a.where, "value " + std::to_string(position) + ", counted from 0, of the " + a.name + " data after " +
+                         "this keyword"};
+  }
+
+  VtkValuePlace cell_value_place(VtkCellArray array, std::size_t index, std::size_t cell) const {
+    if (major_ >= 5) return value_place(array == VtkCellArray::Offsets ? offsets_at_ : connectivity_at_, index);
+    // Up to 4.2 one CELLS array holds each cell's node count then its nodes;
+    // an offset stands for the count of its cell.
+    const std::uint64_t before = static_cast<std::uint64_t>(offsets_[cell]) + cell;  // values before cell's count
+    return value_place(connectivity_at_, array == VtkCellArray::Offsets ? before : index + cell + 1);
+  }
 
   void header() {
     lines_.require_line("the header \"# vtk DataFile Version x.y\"");
@@ -272,9 +318,11 @@ class LegacyReader {
       // 5.x: "CELLS <#offsets> <#connectivity>", then OFFSETS and CONNECTIVITY arrays.
       if (upper(lines_.next_token("OFFSETS")) != "OFFSETS") lines_.fail("expected OFFSETS");
       const std::string offset_type(arg("offset type"));
+      offsets_at_ = array_start("OFFSETS", binary_ ? binary_type(offset_type, "offset").size : 0);
       offsets_ = integers(first, offset_type, "offset");
       if (upper(lines_.next_token("CONNECTIVITY")) != "CONNECTIVITY") lines_.fail("expected CONNECTIVITY");
       const std::string connectivity_type(arg("connectivity type"));
+      connectivity_at_ = array_start("CONNECTIVITY", binary_ ? binary_type(connectivity_type, "node index").size : 0);
       connectivity_ = integers(second, connectivity_type, "node index");
       if (offsets_.empty()) lines_.fail("OFFSETS needs at least the leading 0");
       return;
@@ -282,6 +330,7 @@ class LegacyReader {
     // Up to 4.2: "CELLS <#cells> <size>", each cell its node count then its
     // nodes, as tokens or (BINARY) one block of `second` ints.
     const std::uint64_t block_begin = lines_.next_offset();
+    connectivity_at_ = array_start("CELLS", 4);
     std::vector<long long> block;
     if (binary_) block = binary_values<long long>(second, "int", "CELLS data");
     std::size_t taken = 0;  // values of the block taken
@@ -318,7 +367,7 @@ class LegacyReader {
       lines_.next_token("LOOKUP_TABLE");
       arg("table name");
     } else if (binary_) {
-      lines_.fail("SCALARS " + name + ": a BINARY file needs the LOOKUP_TABLE line before the values");
+      lines_.fail("SCALARS " + text_excerpt(name) + ": a BINARY file needs the LOOKUP_TABLE line before the values");
     }
     data_array(name, components, tuples_, type, where);
   }
@@ -363,6 +412,7 @@ class LegacyReader {
   std::vector<std::string> field_data_;  // arrays of the whole dataset, skipped
   bool have_points_ = false, have_cells_ = false, have_types_ = false;
   std::string types_where_;
+  ArrayStart offsets_at_, connectivity_at_;  // CELLS up to 4.2 is connectivity_at_
   Attach attach_ = Attach::None;
   std::size_t tuples_ = 0;
 };

@@ -15,6 +15,16 @@ namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t'; }
 
+// The next whitespace-separated token of text[i, end), i moved past it; empty
+// at the end. One tokenizer for reading an ascii array and for finding a
+// value of it again.
+std::string_view next_ascii_token(std::string_view text, std::size_t& i, std::size_t end) {
+  while (i < end && is_space(text[i])) ++i;
+  const std::size_t start = i;
+  while (i < end && !is_space(text[i])) ++i;
+  return text.substr(start, i - start);
+}
+
 }  // namespace
 
 std::string VtuArrayDecoder::byte_where(std::size_t offset) const {
@@ -39,11 +49,9 @@ void VtuArrayDecoder::parse_ascii(const VtuDataArray& a, std::size_t expected, c
                                   std::vector<Out>& out) const {
   std::size_t i = a.content_begin;
   while (true) {
-    while (i < a.content_end && is_space(text_[i])) ++i;
-    if (i >= a.content_end) break;
-    const std::size_t start = i;
-    while (i < a.content_end && !is_space(text_[i])) ++i;
-    const std::string_view token = text_.substr(start, i - start);
+    const std::string_view token = next_ascii_token(text_, i, a.content_end);
+    if (token.empty()) break;
+    const std::size_t start = i - token.size();
     if (out.size() == expected)
       xml_.fail(start, std::string(what) + " holds more than the expected " + std::to_string(expected) + " values");
     bool ok;
@@ -56,7 +64,7 @@ void VtuArrayDecoder::parse_ascii(const VtuDataArray& a, std::size_t expected, c
       ok = parse_real(token, v);
       out.push_back(v);
     }
-    if (!ok) xml_.fail(start, std::string(what) + ": bad value '" + std::string(token.substr(0, 40)) + "'");
+    if (!ok) xml_.fail(start, std::string(what) + ": bad value " + quoted_token(token));
   }
   if (out.size() != expected)
     xml_.fail(a.tag.begin, std::string(what) + " holds " + std::to_string(out.size()) + " values, expected " +
@@ -69,13 +77,14 @@ std::vector<Out> VtuArrayDecoder::decode(const VtuDataArray& a, std::size_t tupl
   const std::string at_tag = xml_.where(a.tag.begin);
   const std::string* type_name = a.tag.attribute("type");
   const VtkScalarInfo* info = type_name ? vtu_scalar(*type_name) : nullptr;
-  if (!info) fail(at_tag, what, "unsupported DataArray type '" + (type_name ? *type_name : std::string()) + "'");
+  if (!info) fail(at_tag, what, "unsupported DataArray type " + quoted_token(type_name ? *type_name : std::string()));
   if (std::is_integral_v<Out> && info->is_float)
     fail(at_tag, what, std::string("needs an integer type, found ") + info->name);
   const std::string* comps = a.tag.attribute("NumberOfComponents");
   if (std::to_string(components) != (comps ? *comps : std::string("1")))
     fail(at_tag, what,
-         "has " + (comps ? *comps : std::string("1")) + " components, expected " + std::to_string(components));
+         "has " + (comps ? quoted_token(*comps) : std::string("1")) + " components, expected " +
+             std::to_string(components));
   if (tuples > max_tuples())
     fail(at_tag, what, "expects " + std::to_string(tuples) + " tuples, more than the file can hold");
   const std::size_t expected = tuples * static_cast<std::size_t>(components);
@@ -119,7 +128,7 @@ VtuArrayDecoder::Framed VtuArrayDecoder::framed(const VtuDataArray& a, const cha
     // Raw: the array's data run from its offset to at most the end of the file.
     return {reinterpret_cast<const unsigned char*>(text_.data()) + at, text_.size() - at, at};
   }
-  fail(xml_.where(a.tag.begin), what, "unknown format '" + (format ? *format : std::string()) + "'");
+  fail(xml_.where(a.tag.begin), what, "unknown format " + quoted_token(format ? *format : std::string()));
 }
 
 std::size_t VtuArrayDecoder::appended_at(const VtuDataArray& a, const char* what) const {
@@ -130,7 +139,8 @@ std::size_t VtuArrayDecoder::appended_at(const VtuDataArray& a, const char* what
   if (!off || !parse_integer(*off, offset) || offset < 0) fail(at_tag, what, "missing or bad offset attribute");
   const std::size_t at = enc_.appended_begin + static_cast<std::size_t>(offset);
   if (at > text_.size())
-    fail(byte_where(at), what, "truncated: the block at appended offset " + *off + " lies beyond the end of the file");
+    fail(byte_where(at), what,
+         "truncated: the block at appended offset " + std::to_string(offset) + " lies beyond the end of the file");
   return at;
 }
 
@@ -158,6 +168,35 @@ void VtuArrayDecoder::base64_run(std::size_t at, std::size_t chars, const char* 
   const std::string_view run = at < text_.size() ? text_.substr(at, chars) : std::string_view();
   std::size_t bad_at = 0;
   if (!base64_decode(run, storage, bad_at)) fail(byte_where(at + bad_at), what, std::string("invalid base64 ") + part);
+}
+
+VtkValuePlace VtuArrayDecoder::place(const VtuDataArray& a, std::size_t index, const char* what) const {
+  const std::string* format = a.tag.attribute("format");
+  if (format && *format == "ascii") {
+    std::size_t i = a.content_begin;
+    for (std::size_t k = 0;; ++k) {
+      const std::string_view token = next_ascii_token(text_, i, a.content_end);
+      if (token.empty()) break;
+      if (k == index) return {xml_.where(i - token.size()), ""};
+    }
+    return {xml_.where(a.tag.begin), "value " + std::to_string(index) + " of the " + what + " array"};
+  }
+  const std::string* type_name = a.tag.attribute("type");
+  const VtkScalarInfo* info = type_name ? vtu_scalar(*type_name) : nullptr;
+  const bool appended = format && *format == "appended";
+  // Raw uncompressed appended data hold the value itself at a known byte;
+  // base64 and compressed data only the start of the array's data.
+  if (appended && !enc_.appended_base64 && enc_.compressor == VtuCompressor::None && info)
+    return {byte_where(appended_at(a, what) + enc_.header_bytes + index * info->size), ""};
+  std::size_t at = a.content_begin;
+  if (appended) {
+    at = appended_at(a, what);
+  } else {
+    while (at < a.content_end && is_space(text_[at])) ++at;
+  }
+  return {byte_where(at), "value " + std::to_string(index) + ", counted from 0, of the " + what + " array, whose " +
+                              (enc_.compressor == VtuCompressor::None ? "encoded" : "compressed") +
+                              " data start at this byte"};
 }
 
 std::vector<double> VtuArrayDecoder::reals(const VtuDataArray& a, std::size_t tuples, int components,

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtu_blocks.hpp"
 #include "mesh/io/xml_scan.hpp"
 
@@ -29,6 +30,13 @@ class VtuArrayDecoder {
   // array in messages.
   std::vector<double> reals(const VtuDataArray& a, std::size_t tuples, int components, const char* what) const;
   std::vector<long long> integers(const VtuDataArray& a, std::size_t values, const char* what) const;
+
+  // Where value `index` (from 0) of `a`, an array these functions read
+  // without error, stands in the file: its line (ascii) or byte (raw
+  // uncompressed appended data); else the byte where the array's data start,
+  // with the entry named. Found again from the text, so that no place is kept
+  // per value.
+  VtkValuePlace place(const VtuDataArray& a, std::size_t index, const char* what) const;
 
  private:
   // An array's framed binary data (vtu_blocks.hpp) and the byte offset in

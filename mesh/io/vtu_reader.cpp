@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <limits>
 
 #include "mesh/errors.hpp"
@@ -36,21 +37,24 @@ long long count_attribute(const XmlScanner& xml, const XmlTag& tag, const char* 
 }
 
 void read_vtkfile_tag(const XmlScanner& xml, const XmlTag& tag, VtuEncoding& enc) {
-  if (tag.name != "VTKFile") xml.fail(tag.begin, "not a VTK XML file: the first element is <" + tag.name + ">");
+  if (tag.name != "VTKFile")
+    xml.fail(tag.begin, "not a VTK XML file: the first element is " + quoted_token(tag.name) + ", not VTKFile");
   const std::string* type = tag.attribute("type");
   if (!type || *type != "UnstructuredGrid")
-    xml.fail(tag.begin, "VTK XML type '" + (type ? *type : std::string()) + "' is not UnstructuredGrid");
+    xml.fail(tag.begin, "VTK XML type " + quoted_token(type ? *type : std::string()) + " is not UnstructuredGrid");
   if (const std::string* c = tag.attribute("compressor"); c && !vtu_compressor(*c, enc.compressor))
-    xml.fail(tag.begin, "compressed VTU data (" + *c +
+    xml.fail(tag.begin, "compressed VTU data (" + text_excerpt(*c) +
                             ") is not supported: tetsmooth reads zlib (vtkZLibDataCompressor) and LZMA "
                             "(vtkLZMADataCompressor) compression; save the file with one of those or uncompressed "
                             "(ParaView: Compressor Type ZLib or None)");
   if (const std::string* order = tag.attribute("byte_order")) {
-    if (*order != "LittleEndian" && *order != "BigEndian") xml.fail(tag.begin, "unknown byte_order '" + *order + "'");
+    if (*order != "LittleEndian" && *order != "BigEndian")
+      xml.fail(tag.begin, "unknown byte_order " + quoted_token(*order));
     enc.big_endian = *order == "BigEndian";
   }
   if (const std::string* h = tag.attribute("header_type")) {
-    if (*h != "UInt32" && *h != "UInt64") xml.fail(tag.begin, "header_type '" + *h + "' is neither UInt32 nor UInt64");
+    if (*h != "UInt32" && *h != "UInt64")
+      xml.fail(tag.begin, "header_type " + quoted_token(*h) + " is neither UInt32 nor UInt64");
     enc.header_bytes = *h == "UInt64" ? 8 : 4;
   }
 }
@@ -66,7 +70,7 @@ VtuDataArray read_data_array(XmlScanner& xml, const XmlTag& open) {
   while (xml.next(tag)) {
     if (tag.kind == XmlTag::Kind::Open) ++depth;
     if (tag.kind == XmlTag::Kind::Close && depth-- == 0) {
-      if (tag.name != "DataArray") xml.fail(tag.begin, "</" + tag.name + "> closes <DataArray>");
+      if (tag.name != "DataArray") xml.fail(tag.begin, "end tag " + quoted_token(tag.name) + " closes <DataArray>");
       a.content_end = tag.begin;
       return a;
     }
@@ -86,8 +90,16 @@ std::size_t components(const XmlTag& tag) {
 
 VtuLayout scan(std::string_view text, XmlScanner& xml) {
   VtuLayout layout;
+  // A file that is not XML at all (another format, a wrong --format) is
+  // told by what it holds; "empty" only where it holds nothing.
+  constexpr std::string_view kExpected = "expected <VTKFile type=\"UnstructuredGrid\">";
+  std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
+  start = std::min(text.find_first_not_of(" \t\r\n", start), text.size());
+  if (start == text.size()) xml.fail(0, "empty file, " + std::string(kExpected));
+  if (text[start] != '<')
+    xml.fail(start, "not a VTK XML file: " + std::string(kExpected) + ", found " + quoted_token(text.substr(start)));
   XmlTag tag;
-  if (!xml.next(tag)) xml.fail(0, "empty file, expected <VTKFile type=\"UnstructuredGrid\">");
+  if (!xml.next(tag)) xml.fail(start, std::string(kExpected) + ", found no element");
   read_vtkfile_tag(xml, tag, layout.encoding);
   std::vector<std::pair<std::string, std::string>> roles;  // (parent, name) per array
   std::vector<std::string> stack{"VTKFile"};
@@ -95,14 +107,16 @@ VtuLayout scan(std::string_view text, XmlScanner& xml) {
   while (xml.next(tag)) {
     if (tag.kind == XmlTag::Kind::Close) {
       if (stack.empty() || stack.back() != tag.name)
-        xml.fail(tag.begin, "</" + tag.name + "> does not match <" + (stack.empty() ? "" : stack.back()) + ">");
+        xml.fail(tag.begin, "end tag " + quoted_token(tag.name) + " does not match the open element " +
+                                quoted_token(stack.empty() ? "" : stack.back()));
       stack.pop_back();
       continue;
     }
     if (tag.name == "AppendedData") {
       const std::string* enc = tag.attribute("encoding");
       if (!enc || (*enc != "raw" && *enc != "base64"))
-        xml.fail(tag.begin, "AppendedData encoding '" + (enc ? *enc : std::string()) + "' is neither raw nor base64");
+        xml.fail(tag.begin, "AppendedData encoding " + quoted_token(enc ? *enc : std::string()) +
+                                " is neither raw nor base64");
       std::size_t i = tag.end;
       while (i < text.size() && (text[i] == ' ' || text[i] == '\n' || text[i] == '\r' || text[i] == '\t')) ++i;
       if (i >= text.size() || text[i] != '_') xml.fail(i, "AppendedData must start with '_'");
@@ -181,7 +195,12 @@ TetMesh read_vtu(std::istream& in, const std::string& source) {
   std::vector<int> tags;
   if (pick.tags != kNoVtkArray)
     tags = vtk_region_tags(values(pick.tags, cells), cells, layout.data_decls[pick.tags].name, where(pick.tags));
-  mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, xml.where(layout.types->tag.begin));
+  // offsets[0] is the 0 put in front above, not a value of the file.
+  const auto place = [&](VtkCellArray array, std::size_t index, std::size_t) {
+    return array == VtkCellArray::Offsets ? decode.place(*layout.offsets, index - 1, "offsets")
+                                          : decode.place(*layout.connectivity, index, "connectivity");
+  };
+  mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, xml.where(layout.types->tag.begin), place);
   if (pick.fixed != kNoVtkArray)
     fix_vtk_nodes(mesh, values(pick.fixed, points), layout.data_decls[pick.fixed].name, where(pick.fixed));
   validate_mesh(mesh, source);

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -30,6 +31,9 @@ void append_utf8(std::string& out, std::uint32_t cp) {
     out += static_cast<char>(0x80 | (cp & 0x3F));
   }
 }
+
+// "element 'name'", for messages.
+std::string in_tag(const XmlTag& tag) { return "element " + quoted_token(tag.name); }
 
 }  // namespace
 
@@ -82,10 +86,10 @@ std::string XmlScanner::decode(std::string_view raw, std::size_t at) const {
           digits.find_first_not_of(hex ? "0123456789abcdefABCDEF" : "0123456789") == std::string::npos &&
           digits.size() <= 8)
         cp = std::stoll(digits, nullptr, hex ? 16 : 10);
-      if (cp <= 0 || cp > 0x10FFFF) fail(at, "bad character reference '&" + std::string(ref) + ";'");
+      if (cp <= 0 || cp > 0x10FFFF) fail(at, "bad character reference " + quoted_token("&" + std::string(ref) + ";"));
       append_utf8(out, static_cast<std::uint32_t>(cp));
     } else {
-      fail(at, "unknown entity '&" + std::string(ref) + ";'");
+      fail(at, "unknown entity " + quoted_token("&" + std::string(ref) + ";"));
     }
     i = semi;
   }
@@ -126,7 +130,7 @@ bool XmlScanner::next(XmlTag& tag) {
   if (tag.name.empty()) fail(lt, "expected a tag name after '<'");
   for (;;) {
     while (i < text_.size() && is_space(text_[i])) ++i;
-    if (i >= text_.size()) fail(lt, "unterminated tag <" + tag.name);
+    if (i >= text_.size()) fail(lt, "unterminated tag " + quoted_token("<" + tag.name));
     if (text_[i] == '>') {
       ++i;
       break;
@@ -136,20 +140,21 @@ bool XmlScanner::next(XmlTag& tag) {
       i += 2;
       break;
     }
-    if (tag.kind == XmlTag::Kind::Close) fail(i, "unexpected characters in the end tag </" + tag.name + ">");
+    if (tag.kind == XmlTag::Kind::Close) fail(i, "unexpected characters in the end tag " + quoted_token(tag.name));
     const std::size_t key_start = i;
     while (i < text_.size() && is_name_char(text_[i])) ++i;
-    if (i == key_start) fail(i, "malformed attribute in <" + tag.name + ">");
+    if (i == key_start) fail(i, "malformed attribute in " + in_tag(tag));
     std::string key(text_.substr(key_start, i - key_start));
     while (i < text_.size() && is_space(text_[i])) ++i;
-    if (i >= text_.size() || text_[i] != '=') fail(i, "expected '=' after attribute " + key + " in <" + tag.name + ">");
+    if (i >= text_.size() || text_[i] != '=')
+      fail(i, "expected '=' after attribute " + quoted_token(key) + " in " + in_tag(tag));
     ++i;
     while (i < text_.size() && is_space(text_[i])) ++i;
     if (i >= text_.size() || (text_[i] != '"' && text_[i] != '\''))
-      fail(i, "expected a quoted value for attribute " + key + " in <" + tag.name + ">");
+      fail(i, "expected a quoted value for attribute " + quoted_token(key) + " in " + in_tag(tag));
     const char quote = text_[i];
     const std::size_t close = text_.find(quote, i + 1);
-    if (close == std::string_view::npos) fail(i, "unterminated value of attribute " + key);
+    if (close == std::string_view::npos) fail(i, "unterminated value of attribute " + quoted_token(key));
     tag.attributes.emplace_back(std::move(key), decode(text_.substr(i + 1, close - i - 1), i));
     i = close + 1;
   }

@@ -202,6 +202,25 @@ class ErrorAndMissingTests(unittest.TestCase):
         self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
         self.assertIn("only in NEW (not compared): FormB/AoS/MultiBlock/5k", completed.stdout)
 
+    def test_a_value_lost_in_new_fails_unless_allowed(self):
+        # A run of no sweeps writes no ms_per_sweep: a smoother that broke so
+        # must not pass as "not compared".
+        measured = dict(bench("FormB/AoS/Coloured/109k", 2.9), ms_per_sweep=0.16)
+        unmeasured = dict(bench("FormB/AoS/Coloured/109k", 0.5), sweeps=0)
+        steady = dict(bench("FormB/AoS/MultiBlock/109k", 1.5), ms_per_sweep=0.1)
+        old = self.result("old", [measured, steady])
+        new = self.result("new", [unmeasured, steady])
+        completed = compare(old, new, "--metric", "ms_per_sweep")
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn("without a usable ms_per_sweep in NEW", completed.stdout)
+        completed = compare(old, new, "--metric", "ms_per_sweep", "--allow-missing")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertRegex(completed.stdout, r"warning: 1 benchmark\(s\) without a usable ms_per_sweep in NEW \(allowed\)")
+        # With no value in OLD there is no baseline: listed, not a failure.
+        completed = compare(new, old, "--metric", "ms_per_sweep")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn("no usable ms_per_sweep in OLD (not compared): FormB/AoS/Coloured/109k", completed.stdout)
+
     def test_model_aliases_match(self):
         # bench_smooth --models=slope-77k names the 77k model by its generator name.
         old = self.result("old", [bench("FormB/AoS/MultiBlock/77k", 2.0)])

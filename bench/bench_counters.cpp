@@ -9,9 +9,10 @@ namespace tetsmooth::bench {
 double bytes_per_sweep(const SweepFootprint& f) {
   const double coords =
       (1.0 + f.written_share) * 3.0 * static_cast<double>(f.nodes) * static_cast<double>(f.real_bytes);
-  const double neighbours = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.neighbour_entries);
+  const double neighbours =
+      4.0 * static_cast<double>(f.movable_nodes + 1) + 4.0 * static_cast<double>(f.neighbour_entries);
   const double flags = static_cast<double>(f.nodes);
-  const double star_bytes = 4.0 * static_cast<double>(f.nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
+  const double star_bytes = 4.0 * static_cast<double>(f.movable_nodes + 1) + 4.0 * static_cast<double>(f.incidence_entries) +
                             16.0 * static_cast<double>(f.tets);
   const double stars = f.stars ? star_bytes : 0.0;
   return coords + flags + f.evaluated_share * (neighbours + stars);

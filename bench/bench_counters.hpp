@@ -13,7 +13,10 @@ namespace tetsmooth::bench {
 
 // Sizes a sweep's memory traffic is counted from.
 struct SweepFootprint {
-  std::size_t nodes = 0, tets = 0, neighbour_entries = 0, incidence_entries = 0;
+  std::size_t nodes = 0, tets = 0;
+  // The movable nodes and their rows (movable_rows in mesh/topology.hpp):
+  // a sweep evaluates no other node, so reads no other row.
+  std::size_t movable_nodes = 0, neighbour_entries = 0, incidence_entries = 0;
   std::size_t real_bytes = 8;  // sizeof(Real) of the coordinates
   double evaluated_share = 1;  // nodes evaluated / (movable nodes x sweeps)
   bool in_place = false;       // Form B: a sweep writes only the nodes it moves
@@ -25,8 +28,9 @@ struct SweepFootprint {
 // coordinate read once; written once where the sweep writes every node (Form
 // A fills the other buffer), and only for the nodes it moves where it works
 // in place (Form B: written_share); a flag byte per node (which nodes may
-// move); and for the share of nodes evaluated their neighbour rows and stars
-// (neighbour and incidence CSR with offsets, the tets) read once: a sweep
+// move); and for the share of movable nodes evaluated their neighbour rows
+// and stars (neighbour and incidence CSR rows with their offsets, the tets)
+// read once: a sweep
 // that skips settled nodes (CUDA Coloured) reads neither the row nor the
 // star of a skipped node, and ordinary Laplacian smoothing reads no star at
 // all.

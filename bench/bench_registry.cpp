@@ -36,11 +36,13 @@ BenchMesh& bench_mesh(const std::string& label, bool with_host_topology) {
     slot->mesh = cached_model(generator_name(label));
     slot->footprint.nodes = slot->mesh.num_nodes();
     slot->footprint.tets = slot->mesh.num_tets();
-    slot->footprint.incidence_entries = 4 * slot->mesh.num_tets();
     if (with_host_topology) {
       const Topology topo = build_topology(slot->mesh);
       slot->movable = topo.movable;
-      slot->footprint.neighbour_entries = topo.neighbours.items.size();
+      const MovableRows rows = movable_rows(topo);
+      slot->footprint.movable_nodes = rows.nodes;
+      slot->footprint.neighbour_entries = rows.neighbour_entries;
+      slot->footprint.incidence_entries = rows.incidence_entries;
       slot->before = summarize_quality(slot->mesh, slot->movable);
     }
   }
@@ -105,7 +107,10 @@ void gpu_family(benchmark::State& state, std::string label, SmoothOptions o, boo
   }
   SweepFootprint f = bm.footprint;
   f.real_bytes = o.precision == Precision::Float ? 4 : 8;
-  f.neighbour_entries = p.neighbour_entries();
+  const MovableRows rows = p.movable_rows();  // the device's own topology, for the scaling meshes too
+  f.movable_nodes = rows.nodes;
+  f.neighbour_entries = rows.neighbour_entries;
+  f.incidence_entries = rows.incidence_entries;
   f.stars = o.method == Method::Adaptive;
   f.in_place = o.form == Form::B;
   set_run_counters(state, r, f);

@@ -172,6 +172,17 @@ Topology build_topology(const TetMesh& mesh) {
   return topo;
 }
 
+MovableRows movable_rows(const index_t* nbr_off, const index_t* inc_off, const std::uint8_t* movable, std::size_t n) {
+  MovableRows r;
+  for (std::size_t i = 0; i < n; ++i)
+    if (movable[i]) {
+      ++r.nodes;
+      r.neighbour_entries += static_cast<std::size_t>(nbr_off[i + 1] - nbr_off[i]);
+      r.incidence_entries += static_cast<std::size_t>(inc_off[i + 1] - inc_off[i]);
+    }
+  return r;
+}
+
 double mean_edge_length(const std::vector<double>& xyz, const Csr& neighbours) {
   double sum = 0;
   std::size_t count = 0;

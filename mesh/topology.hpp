@@ -66,6 +66,17 @@ struct Topology {
 
 Topology build_topology(const TetMesh& mesh);
 
+// The rows of the movable nodes: how many, and their neighbour and incidence
+// entries, which is what a sweep that evaluates every movable node reads of
+// the two CSRs. Offsets of n + 1 entries each, movable of n.
+struct MovableRows {
+  std::size_t nodes = 0, neighbour_entries = 0, incidence_entries = 0;
+};
+MovableRows movable_rows(const index_t* nbr_off, const index_t* inc_off, const std::uint8_t* movable, std::size_t n);
+inline MovableRows movable_rows(const Topology& t) {
+  return movable_rows(t.neighbours.offsets.data(), t.node_tets.offsets.data(), t.movable.data(), t.movable.size());
+}
+
 // Mean length of the unique edges (each row pair i<j counted once).
 double mean_edge_length(const std::vector<double>& xyz, const Csr& neighbours);
 

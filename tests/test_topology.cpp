@@ -79,14 +79,24 @@ TEST(Topology, CubeWithCentreHasOneInteriorNode) {
   EXPECT_EQ(topo.node_tets.row_size(8), 12);
   EXPECT_EQ(topo.movable[8], 1);
   EXPECT_EQ(std::count(topo.movable.begin(), topo.movable.end(), 1), 1);
+  // The centre's rows alone: the corners' are read by no sweep.
+  const MovableRows rows = movable_rows(topo);
+  EXPECT_EQ(rows.nodes, 1u);
+  EXPECT_EQ(rows.neighbour_entries, 8u);
+  EXPECT_EQ(rows.incidence_entries, 12u);
 }
 
 TEST(Topology, LatticeInteriorCounts) {
   const TetMesh m = testing::cube_grid(4, 0.2);
   expect_matches_brute_force(m);
   const Topology topo = build_topology(m);
-  // (n+1)^3 nodes of which (n-1)^3 are interior.
+  // (n+1)^3 nodes of which (n-1)^3 are interior, each with 14 neighbours
+  // and 24 tets in the Kuhn lattice.
   EXPECT_EQ(std::count(topo.boundary.begin(), topo.boundary.end(), 0), 27);
+  const MovableRows rows = movable_rows(topo);
+  EXPECT_EQ(rows.nodes, 27u);
+  EXPECT_EQ(rows.neighbour_entries, 27u * 14);
+  EXPECT_EQ(rows.incidence_entries, 27u * 24);
 }
 
 TEST(Topology, RandomDelaunayMeshes) {

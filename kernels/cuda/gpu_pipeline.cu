@@ -114,7 +114,6 @@ GpuPipeline::~GpuPipeline() = default;
 
 std::size_t GpuPipeline::num_nodes() const { return impl_->n; }
 std::size_t GpuPipeline::num_tets() const { return impl_->t; }
-std::size_t GpuPipeline::neighbour_entries() const { return impl_->topo.nbr.size(); }
 const GpuRunTimes& GpuPipeline::last_times() const { return impl_->times; }
 
 // Double works in mesh units, so it does the CPU's arithmetic; float works
@@ -301,6 +300,14 @@ std::vector<double> GpuPipeline::download_xyz() const {
     store_movable_coords<double>(src, m.input.data(), m.output.data(), m.topo.movable.data(), n, m.layout,
                                  m.frame_centre(), m.frame_scale(), m.stream);
   return m.output.download(m.stream);
+}
+
+MovableRows GpuPipeline::movable_rows() const {
+  Impl& m = *impl_;
+  if (m.topo.movable.size() != m.n) throw UsageError("GpuPipeline::movable_rows: run() has not been called");
+  const std::vector<index_t> nbr_off = m.topo.nbr_off.download(m.stream), inc_off = m.topo.inc_off.download(m.stream);
+  const std::vector<std::uint8_t> movable = m.topo.movable.download(m.stream);
+  return tetsmooth::movable_rows(nbr_off.data(), inc_off.data(), movable.data(), m.n);
 }
 
 std::size_t GpuPipeline::fixed_nodes_moved() const {

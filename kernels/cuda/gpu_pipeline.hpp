@@ -9,6 +9,7 @@
 
 #include "kernels/smooth_options.hpp"
 #include "mesh/colouring.hpp"
+#include "mesh/topology.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::cuda {
@@ -65,8 +66,9 @@ class GpuPipeline {
   // only, so it cannot show this). 0 unless a kernel is wrong; for tests.
   std::size_t fixed_nodes_moved() const;
 
-  // Entries of the device neighbour CSR (twice the unique edges), after run().
-  std::size_t neighbour_entries() const;
+  // After run(): the movable nodes' rows of the device topology (for the
+  // benchmarks' memory floor).
+  MovableRows movable_rows() const;
 
   std::size_t num_nodes() const;
   std::size_t num_tets() const;

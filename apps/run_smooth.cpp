@@ -15,6 +15,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/writable_check.hpp"
+#include "kernels/sweep_log.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth::cli {
@@ -99,6 +100,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   record.output_format = format_from_path(c.output, c.output_format);
   std::string why_not_cuda;
   record.device = choose_device(c.device, why_not_cuda);
+  if (record.device == Device::Cuda) check_gpu_sweeps(c.options);
   check_mesh_output_location(c.output, record.output_format);
   // "-" sends the report to standard output, which smoothing leaves free.
   const bool report_to_stdout = c.report_path == "-";

@@ -24,12 +24,13 @@ constexpr int kKuhnTets[6][4] = {
     {0, 4, 7, 6},  // z, y, x
 };
 
-// Tet ids are index_t too (node-to-tet maps store them), and 6 n^3 reaches
-// the limit long before (n+1)^3 does.
-constexpr int kMaxLatticeN = 710;
+// The node-to-tet table holds 4 entries a tet under 32-bit offsets
+// (validate_mesh), and 24 n^3 reaches that limit long before (n+1)^3 nodes
+// reach theirs.
+constexpr int kMaxLatticeN = 447;
 constexpr std::int64_t kMaxIndex = std::numeric_limits<index_t>::max();
-static_assert(6 * std::int64_t{kMaxLatticeN} * kMaxLatticeN * kMaxLatticeN <= kMaxIndex &&
-              6 * std::int64_t{kMaxLatticeN + 1} * (kMaxLatticeN + 1) * (kMaxLatticeN + 1) > kMaxIndex);
+static_assert(24 * std::int64_t{kMaxLatticeN} * kMaxLatticeN * kMaxLatticeN <= kMaxIndex &&
+              24 * std::int64_t{kMaxLatticeN + 1} * (kMaxLatticeN + 1) * (kMaxLatticeN + 1) > kMaxIndex);
 
 struct Offset {
   double x, y, z;
@@ -52,7 +53,8 @@ TetMesh generate_lattice(int n, double jitter, std::uint64_t seed) {
   if (!(jitter >= 0.0 && jitter < 0.5))
     throw UsageError("lattice: jitter must be in [0, 0.5) cell sizes, got " + std::to_string(jitter));
   if (n > kMaxLatticeN)
-    throw UsageError("lattice-" + std::to_string(n) + ": 6 n^3 tets exceed 32-bit indices; the largest is lattice-" +
+    throw UsageError("lattice-" + std::to_string(n) + ": its 6 n^3 tets need more than the 32-bit offsets of the "
+                     "node-to-tet table hold (4 entries a tet); the largest is lattice-" +
                      std::to_string(kMaxLatticeN));
   const std::int64_t m = static_cast<std::int64_t>(n) + 1;  // nodes per axis
   const std::int64_t cubes = static_cast<std::int64_t>(n) * n * n;

@@ -20,6 +20,12 @@ void check_smooth_options(const SmoothOptions& opt) {
     throw UsageError("coloured_blocks must be >= 0 (0 = as many as fit), got " + std::to_string(opt.coloured_blocks));
 }
 
+void check_gpu_sweeps(const SmoothOptions& opt) {
+  if (opt.max_iterations > kMaxGpuSweeps)
+    throw UsageError("--max-iter " + std::to_string(opt.max_iterations) + ": a GPU run takes at most " +
+                     std::to_string(kMaxGpuSweeps) + " sweeps (it keeps each sweep's counters on the device)");
+}
+
 StopReason to_stop_reason(SweepVerdict v) {
   switch (v) {
     case SweepVerdict::NoMoves: return StopReason::NoMoves;

@@ -12,6 +12,15 @@ namespace tetsmooth {
 // Throws UsageError for options no backend accepts.
 void check_smooth_options(const SmoothOptions& opt);
 
+// The CUDA backend keeps two 8-byte counters on the device for every sweep
+// a run may take (the loops that run on the device write one a sweep, and
+// the host reads them at the end), allocated before the run: so a GPU run
+// takes at most this many sweeps (16 MB), whatever the mesh.
+inline constexpr int kMaxGpuSweeps = 1000000;
+
+// UsageError when opt asks the GPU for more sweeps than kMaxGpuSweeps.
+void check_gpu_sweeps(const SmoothOptions& opt);
+
 StopReason to_stop_reason(SweepVerdict v);
 
 class SweepLog {

@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <string>
 #include <tuple>
+
+#include "mesh/errors.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -29,6 +33,12 @@ Csr pack_rows(RowBuckets<index_t>&& b, const Finish& finish) {
     index_t* const last = finish(r, first, b.items.data() + b.offsets[r + 1]);
     if (b.items.data() + out != first) std::copy(first, last, b.items.data() + out);
     out += static_cast<std::size_t>(last - first);
+    // validate_mesh bounds the tets, and so the incidence rows; a mesh whose
+    // tets share hardly an edge could still overflow the neighbour rows.
+    if (out > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
+      throw InputError("", "the mesh's topology needs more than " +
+                               std::to_string(std::numeric_limits<index_t>::max()) +
+                               " entries in one table, past its 32-bit offsets");
     csr.offsets[r + 1] = static_cast<index_t>(out);
   }
   csr.items.assign(b.items.begin(), b.items.begin() + static_cast<std::ptrdiff_t>(out));

@@ -22,6 +22,9 @@ void check_shapes(const TetMesh& mesh, const std::string& source) {
   if (mesh.num_nodes() > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
     fail(source, std::to_string(mesh.num_nodes()) + " nodes exceed the 32-bit index range");
   if (mesh.num_tets() == 0) fail(source, "the mesh has no tetrahedra");
+  if (mesh.num_tets() > max_tets())
+    fail(source, std::to_string(mesh.num_tets()) + " tets exceed the " + std::to_string(max_tets()) +
+                     " that 32-bit offsets of the node-to-tet table (4 entries a tet) allow");
 
   const auto per_node = [&](std::size_t size, const char* name) {
     if (size != 0 && size != mesh.num_nodes())
@@ -86,6 +89,8 @@ bool has_repeated_node(const index_t* t) {
 }
 
 }  // namespace
+
+std::size_t max_tets() { return static_cast<std::size_t>(std::numeric_limits<index_t>::max()) / 4; }
 
 ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source) {
   check_shapes(mesh, source);

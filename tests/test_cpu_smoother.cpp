@@ -7,6 +7,7 @@
 
 #include "generators/models.hpp"
 #include "kernels/smoother.hpp"
+#include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/quality_summary.hpp"
 #include "mesh/topology.hpp"
@@ -288,6 +289,15 @@ TEST(CpuSmoother, ProgressQualityIsThatOfTheSweepReported) {
         EXPECT_NEAR(q.mean, rk.after.mean, 1e-14) << "form " << to_string(form) << ", sweep " << k;
       }
     }
+}
+
+// The GPU's cap on sweeps (kernels/sweep_log.hpp): the CPU has none.
+TEST(CpuSmoother, GpuSweepCapIsChecked) {
+  SmoothOptions o;
+  o.max_iterations = kMaxGpuSweeps;
+  EXPECT_NO_THROW(check_gpu_sweeps(o));
+  o.max_iterations = kMaxGpuSweeps + 1;
+  EXPECT_THROW(check_gpu_sweeps(o), UsageError);
 }
 
 TEST(CpuSmoother, RejectsBadOptions) {

@@ -82,6 +82,11 @@ TEST(TsmCache, RejectsImplausibleCounts) {
   bytes = bytes_of(testing::regular_tet());
   bytes[24 + 4] = 0x01;  // tet count 2^32 + 1: within no index range
   EXPECT_NE(read_error(bytes).find("byte 24"), std::string::npos);
+  bytes = bytes_of(testing::regular_tet());
+  bytes[24 + 3] = 0x20;  // 2^29 + 1 tets: 4 node-to-tet entries a tet pass 32-bit offsets
+  const std::string msg = read_error(bytes);
+  EXPECT_NE(msg.find("byte 24"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("536870911"), std::string::npos) << msg;
 }
 
 TEST(TsmCache, RejectsCountsLargerThanTheFile) {

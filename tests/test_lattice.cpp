@@ -197,13 +197,14 @@ TEST(Lattice, ByNameUsesTheDefaultJitter) {
 TEST(Lattice, RejectsBadSizesAndJitter) {
   EXPECT_THROW(generate_lattice(0, 0.0, 1), UsageError);
   EXPECT_THROW(generate_lattice(-3, 0.0, 1), UsageError);
-  // 6 * 711^3 tets no longer fit 32-bit indices; refused before allocating.
-  EXPECT_THROW(generate_lattice(711, 0.0, 1), UsageError);
+  // 24 * 448^3 node-to-tet entries no longer fit 32-bit offsets; refused
+  // before allocating.
+  EXPECT_THROW(generate_lattice(448, 0.0, 1), UsageError);
   EXPECT_THROW(generate_lattice(std::numeric_limits<int>::max(), 0.0, 1), UsageError);
   EXPECT_THROW(generate_lattice(2, -0.1, 1), UsageError);
   EXPECT_THROW(generate_lattice(2, 0.5, 1), UsageError);
   EXPECT_THROW(generate_lattice(2, std::numeric_limits<double>::quiet_NaN(), 1), UsageError);
-  EXPECT_THROW(generate_model("lattice-711"), UsageError);
+  EXPECT_THROW(generate_model("lattice-448"), UsageError);
 }
 
 }  // namespace

@@ -104,6 +104,15 @@ TEST(Validate, RejectsWrongArrayShapes) {
   EXPECT_NE(validation_error(attrs).find("tet attribute array has 3 values, expected 2 per tet"), std::string::npos);
 }
 
+// 4 node-to-tet entries a tet under 32-bit offsets: 2^29 - 1 tets at most
+// (a mesh that size is too big for a test; lattice.cpp and the .tsm reader
+// refuse by this bound before allocating, and their tests show it).
+TEST(Validate, MaxTetsIsWhatTheNodeToTetOffsetsHold) {
+  EXPECT_EQ(max_tets(), 536870911u);
+  EXPECT_LE(4 * max_tets(), static_cast<std::size_t>(std::numeric_limits<index_t>::max()));
+  EXPECT_GT(4 * (max_tets() + 1), static_cast<std::size_t>(std::numeric_limits<index_t>::max()));
+}
+
 TEST(Validate, RejectsMeshWithoutTets) {
   TetMesh mesh = testing::regular_tet();
   mesh.tets.clear();

@@ -48,6 +48,8 @@
 // neighbour count sizes `nbr`, which is only allocated then; everything else
 // is sized from N and T.
 #include <algorithm>
+#include <limits>
+#include <string>
 
 #include <cub/device/device_radix_sort.cuh>
 #include <cub/device/device_select.cuh>
@@ -55,6 +57,7 @@
 #include "kernels/cuda/cuda_check.hpp"
 #include "kernels/cuda/device_topology.hpp"
 #include "kernels/cuda/device_topology_detail.cuh"
+#include "mesh/errors.hpp"
 
 namespace tetsmooth::cuda {
 namespace {
@@ -289,6 +292,12 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   CUDA_CHECK(cudaMemcpyAsync(&counts, s.counts, sizeof(BuildCounts), cudaMemcpyDeviceToHost, stream));
   CUDA_CHECK(cudaStreamSynchronize(stream));
   topo.movable_count = counts.movable;
+  // 32-bit offsets: validate_mesh bounds the incidence rows; neighbour rows
+  // of tets that share hardly an edge could still wrap.
+  if (counts.neighbours < 0 || counts.incidences < 0)
+    throw InputError("", "the mesh's topology needs more than " +
+                             std::to_string(std::numeric_limits<index_t>::max()) +
+                             " entries in one table, past its 32-bit offsets");
   topo.inc.resize(static_cast<std::size_t>(counts.incidences));
   topo.nbr.resize(static_cast<std::size_t>(counts.neighbours));
   if (counts.neighbours > 0) {

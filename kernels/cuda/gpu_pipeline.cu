@@ -141,6 +141,7 @@ void GpuPipeline::restore_coordinates(const SmoothOptions& o) {
 
 SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring) {
   check_smooth_options(o);
+  check_gpu_sweeps(o);
   Impl& m = *impl_;
   if (o.precision != m.precision || o.layout != m.layout)
     throw UsageError("GpuPipeline::run: restore_coordinates() was called for another precision or layout");

@@ -122,7 +122,10 @@ TetMesh read_cache(std::istream& in, const std::string& source) {
   const std::uint64_t tets = load_le<std::uint64_t>(header + 24);
   constexpr auto kMaxIndex = static_cast<std::uint64_t>(std::numeric_limits<index_t>::max());
   if (nodes > kMaxIndex) r.fail("node count " + std::to_string(nodes) + " exceeds the 32-bit index range", 16);
-  if (tets > kMaxIndex) r.fail("tet count " + std::to_string(tets) + " exceeds the 32-bit index range", 24);
+  if (tets > max_tets())
+    r.fail("tet count " + std::to_string(tets) + " exceeds the " + std::to_string(max_tets()) +
+               " that 32-bit offsets of the node-to-tet table (4 entries a tet) allow",
+           24);
 
   TetMesh mesh;
   std::vector<unsigned char> buf(8 * kChunk);

@@ -15,6 +15,7 @@
 #include "kernels/cuda/gpu_pipeline.hpp"
 #include "kernels/cuda/star_test_check.hpp"
 #include "kernels/smoother.hpp"
+#include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/quality_summary.hpp"
 #include "mesh/tet_quality.hpp"
@@ -444,6 +445,13 @@ TEST(GpuSmoother, StoppingRuleMatchesCpu) {
   for (Strategy strategy : {Strategy::Coloured, Strategy::MultiBlock, Strategy::SingleBlock})
     expect_stops_of_the_cpu(gpu_options(Form::B, Layout::AoS, strategy, Method::Adaptive, Precision::Double));
   expect_stops_of_the_cpu(gpu_options(Form::A, Layout::SoA, Strategy::MultiBlock, Method::Adaptive, Precision::Float));
+  // Each allowed sweep takes device memory for its counters: past the cap,
+  // a usage error before any work, not an allocation of gigabytes.
+  SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::MultiBlock, Method::Adaptive, Precision::Double);
+  o.max_iterations = kMaxGpuSweeps + 1;
+  TetMesh m = model_5k();
+  EXPECT_THROW(smooth_cuda(m, o), UsageError);
+  EXPECT_EQ(m.xyz, model_5k().xyz);
 }
 
 // MultiBlock reads the stop flag back every check_every sweeps. However

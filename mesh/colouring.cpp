@@ -61,8 +61,11 @@ Csr colour_classes(const std::vector<std::int32_t>& colour, int num_colours) {
 std::string colouring_flaw(const Csr& neighbours, const std::vector<std::uint8_t>& movable, const Colouring& c) {
   const std::size_t n = neighbours.rows();
   if (c.colour.size() != n)
-    return "it has " + std::to_string(c.colour.size()) + " colours for " + std::to_string(n) + " nodes";
-  if (c.num_colours < 0) return "num_colours is negative";
+    return "its colour array has " + std::to_string(c.colour.size()) + " entries for " + std::to_string(n) + " nodes";
+  // No colouring needs more colours than nodes; a larger count is checked
+  // before colour_classes below sizes its offsets by it.
+  if (c.num_colours < 0 || static_cast<std::size_t>(c.num_colours) > n)
+    return "num_colours " + std::to_string(c.num_colours) + " is outside [0, " + std::to_string(n) + "]";
   for (std::size_t i = 0; i < n; ++i) {
     const std::int32_t k = c.colour[i];
     if (!movable[i]) {

@@ -26,8 +26,8 @@ struct ValidationReport {
 ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source = "mesh");
 
 // The most tets a mesh may have: the node-to-tet table holds 4 entries a tet
-// under 32-bit offsets (536,870,911). validate_mesh refuses more, and so do
-// readers whose header gives the count, before reading the tets.
+// under 32-bit offsets (536,870,911). validate_mesh refuses more, and the
+// .tsm reader does so from its header, before reading the tets.
 std::size_t max_tets();
 
 }  // namespace tetsmooth

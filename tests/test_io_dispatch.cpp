@@ -272,9 +272,9 @@ TEST_F(IoDir, AtomicWriteIntoAFifoWritesThrough) {
 // process, and the old file stays.
 TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
   write_atomically(path("t.txt"), [](std::ostream& out) { out << "old"; });
-  // Ctrl-C and kill, and the quieter ends: a broken pipe, a timer, a user
-  // signal, a CPU or file-size limit.
-  for (int sig : {SIGTERM, SIGINT, SIGPIPE, SIGALRM, SIGUSR1, SIGXCPU, SIGXFSZ}) {
+  // Ctrl-C and kill, and the quieter ends: a broken pipe, an abort, a timer,
+  // I/O and user signals, a real-time one, a CPU or file-size limit.
+  for (int sig : {SIGTERM, SIGINT, SIGPIPE, SIGABRT, SIGALRM, SIGIO, SIGUSR1, SIGRTMIN + 1, SIGXCPU, SIGXFSZ}) {
     SCOPED_TRACE(strsignal(sig));
     EXPECT_EXIT(write_atomically(path("t.txt"),
                                  [sig](std::ostream& out) {

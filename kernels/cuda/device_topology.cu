@@ -260,6 +260,12 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
     CUDA_CHECK(cudaStreamSynchronize(stream));
   }
   const std::size_t directed = 2 * static_cast<std::size_t>(counts.unique_edges);
+  // 32-bit offsets: validate_mesh bounds the incidence rows (4 entries a
+  // tet); the neighbour rows of tets that share hardly an edge could still
+  // pass them, and are checked here, exactly, before they are built.
+  if (directed > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
+    throw InputError("", "the mesh's edges need more than " + std::to_string(std::numeric_limits<index_t>::max()) +
+                             " neighbour entries (2 an edge), past the 32-bit offsets of the neighbour table");
   // Up to 12 keys per tet (tets that share no edge): past the first half,
   // into the side stream's.
   if (directed > 6 * nt) topo.side.await(stream);
@@ -292,12 +298,6 @@ void build_device_topology(DeviceTopology& topo, const index_t* d_tets, std::siz
   CUDA_CHECK(cudaMemcpyAsync(&counts, s.counts, sizeof(BuildCounts), cudaMemcpyDeviceToHost, stream));
   CUDA_CHECK(cudaStreamSynchronize(stream));
   topo.movable_count = counts.movable;
-  // 32-bit offsets: validate_mesh bounds the incidence rows; neighbour rows
-  // of tets that share hardly an edge could still wrap.
-  if (counts.neighbours < 0 || counts.incidences < 0)
-    throw InputError("", "the mesh's topology needs more than " +
-                             std::to_string(std::numeric_limits<index_t>::max()) +
-                             " entries in one table, past its 32-bit offsets");
   topo.inc.resize(static_cast<std::size_t>(counts.incidences));
   topo.nbr.resize(static_cast<std::size_t>(counts.neighbours));
   if (counts.neighbours > 0) {

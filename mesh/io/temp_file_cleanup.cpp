@@ -23,11 +23,20 @@ struct Slot {
 Slot g_slots[kSlots];
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs lock-free atomics");
 
-// Every signal whose default action ends the process without a core dump's
-// debugging value to lose, or with one (SIGQUIT): a temporary left by any of
-// them would be as stray as one left by Ctrl-C. (SIGKILL cannot be caught.)
-constexpr int kSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT, SIGPIPE,   SIGALRM,
-                            SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
+// The signals whose default action does not end the process (or that
+// cannot be caught); every other one, from 1 to NSIG - 1 (the real-time
+// ones included), ends it, and a temporary left by any of them would be as
+// stray as one left by Ctrl-C. SIGKILL alone can leave one.
+bool ends_the_process(int sig) {
+  switch (sig) {
+    case SIGKILL: case SIGSTOP:                                   // not caught
+    case SIGCHLD: case SIGCONT: case SIGURG: case SIGWINCH:       // ignored by default
+    case SIGTSTP: case SIGTTIN: case SIGTTOU:                     // stop, not end
+      return false;
+    default:
+      return true;
+  }
+}
 
 extern "C" void remove_temps_and_die(int sig) {
   for (Slot& s : g_slots)
@@ -42,13 +51,14 @@ extern "C" void remove_temps_and_die(int sig) {
 void install_handlers_once() {
   static std::once_flag once;
   std::call_once(once, [] {
-    for (int sig : kSignals) {
+    struct sigaction act {};
+    act.sa_handler = remove_temps_and_die;
+    sigemptyset(&act.sa_mask);
+    for (int sig = 1; sig < NSIG; ++sig)
+      if (ends_the_process(sig)) sigaddset(&act.sa_mask, sig);  // one clean-up at a time
+    for (int sig = 1; sig < NSIG; ++sig) {
       struct sigaction old {};
-      if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
-      struct sigaction act {};
-      act.sa_handler = remove_temps_and_die;
-      sigemptyset(&act.sa_mask);
-      for (int other : kSignals) sigaddset(&act.sa_mask, other);
+      if (!ends_the_process(sig) || ::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL) continue;
       ::sigaction(sig, &act, nullptr);
     }
   });

@@ -3,10 +3,11 @@
 //
 // write_atomically (atomic_file.hpp) writes beside its target and renames at
 // the end; a Ctrl-C or a kill during a long write would otherwise leave the
-// hidden temporary behind. While a temporary is registered here, the
-// signals whose default action ends the process (SIGINT, SIGTERM, SIGHUP,
-// SIGQUIT, SIGPIPE, SIGALRM, SIGUSR1/2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF)
-// unlink it and then end the process as that default action would. The handlers are installed on first use, and only
+// hidden temporary behind. While a temporary is registered here, every
+// signal whose default action ends the process (Ctrl-C, SIGTERM, SIGHUP,
+// SIGPIPE, SIGABRT, SIGSEGV, the timers, the user and real-time signals,
+// ...: all but SIGKILL, which cannot be caught) unlinks it and then ends the
+// process as that default action would (with a core dump where it dumps). The handlers are installed on first use, and only
 // for signals whose disposition is still the default: a program that
 // handles them itself keeps its own handlers (and its own clean-up).
 #include <string>

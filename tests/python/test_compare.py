@@ -220,6 +220,12 @@ class ErrorAndMissingTests(unittest.TestCase):
         completed = compare(new, old, "--metric", "ms_per_sweep")
         self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
         self.assertIn("no usable ms_per_sweep in OLD (not compared): FormB/AoS/Coloured/109k", completed.stdout)
+        # A count that fell to 0 is an improvement without a ratio, not a loss.
+        old = self.result("old", [dict(measured, inverted_after=25), dict(steady, inverted_after=3)])
+        new = self.result("new", [dict(measured, inverted_after=0), dict(steady, inverted_after=3)])
+        completed = compare(old, new, "--metric", "inverted_after")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn("FormB/AoS/Coloured/109k", completed.stdout)
 
     def test_model_aliases_match(self):
         # bench_smooth --models=slope-77k names the 77k model by its generator name.

@@ -18,12 +18,12 @@ struct WorkingFrame {
   double cx, cy, cz, scale, inv_scale;
 };
 
-// Node i of the input (double AoS, mesh units) in working coordinates: the
-// one conversion, for loading and for telling a node the run left alone.
 inline WorkingFrame working_frame(const double centre[3], double scale) {
   return WorkingFrame{centre[0], centre[1], centre[2], scale, 1.0 / scale};
 }
 
+// Node i of the input (double AoS, mesh units) in working coordinates: the
+// one conversion, for loading and for telling a node the run left alone.
 template <class Real>
 __device__ __forceinline__ Vec3<Real> working_position(const double* in, index_t i, const WorkingFrame& f) {
   return Vec3<Real>{static_cast<Real>((in[3 * i] - f.cx) * f.inv_scale),

@@ -12,10 +12,10 @@
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
 #include "kernels/smoother.hpp"
+#include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/writable_check.hpp"
-#include "kernels/sweep_log.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth::cli {

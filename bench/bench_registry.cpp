@@ -10,6 +10,7 @@
 #include "bench/bench_counters.hpp"
 #include "bench/mesh_cache.hpp"
 #include "kernels/smoother.hpp"
+#include "mesh/errors.hpp"
 #include "mesh/quality_summary.hpp"
 #include "mesh/topology.hpp"
 #ifdef TETSMOOTH_HAVE_CUDA
@@ -187,6 +188,8 @@ std::vector<std::pair<std::string, std::string>> register_benchmarks(const Bench
   context.emplace_back("gpu_precision", to_string(c.precision));
   std::string why;
   const bool gpu = c.gpu && cuda_available(&why);
+  if (!gpu && !c.cpu)
+    throw UsageError("nothing to run: --no-cpu, and no GPU families (" + (c.gpu ? why : std::string("--no-gpu")) + ")");
   if (!gpu) std::fprintf(stderr, "bench_smooth: GPU families not registered: %s\n", c.gpu ? why.c_str() : "--no-gpu");
 #ifdef TETSMOOTH_HAVE_CUDA
   if (gpu) {

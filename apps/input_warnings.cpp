@@ -1,27 +1,15 @@
 #include "apps/input_warnings.hpp"
 
-#include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "apps/report_text.hpp"
+#include "mesh/bounding_box.hpp"
 #include "mesh/topology.hpp"
 
 namespace tetsmooth::cli {
 
 namespace {
-
-// The largest side of the box around the nodes.
-double extent(const TetMesh& mesh) {
-  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      const double x = mesh.xyz[3 * i + k];
-      lo[k] = i == 0 || x < lo[k] ? x : lo[k];
-      hi[k] = i == 0 || x > hi[k] ? x : hi[k];
-    }
-  return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
-}
 
 std::string three_digits(double v) {
   char text[32];
@@ -62,7 +50,7 @@ std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationRep
                        " tets repeat the nodes of an earlier tet (Gmsh's MSH 2.2 writer lists a volume in two "
                        "physical groups twice); each node set counts as one tet for the boundary, and the "
                        "quality statistics count the tets as listed");
-  const double span = extent(mesh);
+  const double span = bounding_box(mesh).largest_side();
   if (span > kLargestEdge || (span > 0 && span < kSmallestEdge))
     warnings.push_back(source + ": the nodes span " + three_digits(span) +
                        " units; the radius ratio, computed from products of up to eight edge lengths, "

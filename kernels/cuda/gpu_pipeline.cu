@@ -3,7 +3,6 @@
 #include "kernels/cuda/gpu_pipeline.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -14,6 +13,7 @@
 #include "kernels/cuda/device_topology.hpp"
 #include "kernels/cuda/stopping_rule_kernels.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
+#include "mesh/bounding_box.hpp"
 
 namespace tetsmooth::cuda {
 
@@ -95,17 +95,9 @@ GpuPipeline::GpuPipeline(const TetMesh& mesh) : impl_(std::make_unique<Impl>()) 
   m.state.resize(1);
   m.repair_found.resize(kMaxRepairPasses);
   // Centre and half-extent of the bounding box: float runs work in [-1, 1].
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for (std::size_t i = 0; i < m.n; ++i)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], mesh.xyz[3 * i + k]);
-      hi[k] = std::max(hi[k], mesh.xyz[3 * i + k]);
-    }
-  double half = 0;
-  for (int k = 0; k < 3; ++k) {
-    m.centre[k] = m.n ? 0.5 * (lo[k] + hi[k]) : 0.0;
-    half = std::max(half, m.n ? 0.5 * (hi[k] - lo[k]) : 0.0);
-  }
+  const BoundingBox box = bounding_box(mesh);
+  for (int k = 0; k < 3; ++k) m.centre[k] = box.centre(k);
+  const double half = 0.5 * box.largest_side();
   m.scale = half > 0 ? half : 1.0;
   CUDA_CHECK(cudaStreamSynchronize(m.stream));
 }

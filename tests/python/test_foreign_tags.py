@@ -6,14 +6,12 @@ the same physical groups with the same element counts as in the original.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import os
-import shutil
-import tempfile
 import unittest
 
 import meshio
 
-from test_cli import require_binary, run
-from test_independent_readers import gmsh_session, physical_groups, require_gmsh
+from test_cli import run
+from test_independent_readers import GmshScratchCase, gmsh_session, physical_groups
 
 
 def physical_group_sizes(gmsh, path):
@@ -40,16 +38,8 @@ def write_box_with_groups(gmsh, path, version):
         gmsh.write(path)
 
 
-class ForeignTags(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        require_binary()
-        cls.gmsh = require_gmsh()
-        cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_tags_")
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.tmp, ignore_errors=True)
+class ForeignTags(GmshScratchCase):
+    SCRATCH_PREFIX = "tetsmooth_test_tags_"
 
     def path(self, name):
         return os.path.join(self.tmp, name)

@@ -7,15 +7,13 @@ where they were.
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
 import os
-import shutil
-import tempfile
 import unittest
 
 import meshio
 import numpy as np
 
-from test_cli import require_binary, run
-from test_independent_readers import gmsh_session, physical_groups, require_gmsh
+from test_cli import run
+from test_independent_readers import GmshScratchCase, gmsh_session, physical_groups
 
 INPUTS = [("part-ascii.msh", 0), ("part-binary.msh", 1)]
 
@@ -35,13 +33,13 @@ def boundary_node_tags(gmsh):
     return set(unique[counts == 1].ravel().tolist())
 
 
-class PartitionedGmshMeshes(unittest.TestCase):
+class PartitionedGmshMeshes(GmshScratchCase):
+    SCRATCH_PREFIX = "tetsmooth_test_partitions_"
+
     @classmethod
     def setUpClass(cls):
-        require_binary()
-        cls.gmsh = require_gmsh()
+        super().setUpClass()
         gmsh = cls.gmsh
-        cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_partitions_")
         with gmsh_session(gmsh):
             gmsh.model.add("box")
             gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
@@ -71,10 +69,6 @@ class PartitionedGmshMeshes(unittest.TestCase):
                 cls.boundary[name] = boundary_node_tags(gmsh)
             out = cls.path("smoothed-" + name)
             cls.smoothed[name] = (out, run("smooth", cls.path(name), "-o", out))
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.tmp, ignore_errors=True)
 
     @classmethod
     def path(cls, name):

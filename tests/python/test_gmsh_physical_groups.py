@@ -9,14 +9,12 @@ they drop, and partition tags of MSH 2.2 are dropped with a warning.
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
 import os
-import shutil
-import tempfile
 import unittest
 
 import meshio
 
-from test_cli import require_binary, run
-from test_independent_readers import gmsh_session, physical_groups, require_gmsh
+from test_cli import run
+from test_independent_readers import GmshScratchCase, gmsh_session, physical_groups
 
 GROUPS = {(3, 11): [1], (3, 12): [2], (3, 13): [1, 2]}
 
@@ -43,23 +41,19 @@ def mesh_boxes(gmsh):
     gmsh.model.mesh.generate(3)
 
 
-class SeveralPhysicalGroups(unittest.TestCase):
+class SeveralPhysicalGroups(GmshScratchCase):
+    SCRATCH_PREFIX = "tetsmooth_test_groups_"
+
     @classmethod
     def setUpClass(cls):
-        require_binary()
-        cls.gmsh = require_gmsh()
+        super().setUpClass()
         gmsh = cls.gmsh
-        cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_groups_")
         cls.src = os.path.join(cls.tmp, "boxes.msh")
         with gmsh_session(gmsh):
             mesh_boxes(gmsh)
             gmsh.write(cls.src)
         cls.before = groups_and_tets(gmsh, cls.src)
         assert cls.before[0] == GROUPS, cls.before[0]
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def path(self, name):
         return os.path.join(self.tmp, name)

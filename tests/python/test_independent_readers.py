@@ -39,6 +39,23 @@ def require_gmsh():
     return gmsh
 
 
+class GmshScratchCase(unittest.TestCase):
+    """Tests that need the tetsmooth binary, the Gmsh API (cls.gmsh) and a
+    scratch folder (cls.tmp, named after SCRATCH_PREFIX and removed after)."""
+
+    SCRATCH_PREFIX = "tetsmooth_test_"
+
+    @classmethod
+    def setUpClass(cls):
+        require_binary()
+        cls.gmsh = require_gmsh()
+        cls.tmp = tempfile.mkdtemp(prefix=cls.SCRATCH_PREFIX)
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
+
+
 @contextlib.contextmanager
 def gmsh_session(gmsh):
     """An initialised, quiet Gmsh for the `with` block, finalised after it."""

@@ -6,21 +6,26 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <unistd.h>
 
 #include "bench/bench_flags.hpp"
+#include "bench/command_line.hpp"
 #include "bench/bench_registry.hpp"
 #include "mesh/errors.hpp"
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--help") == 0) std::fputs(tetsmooth::bench::own_flags_help(), stdout);
+  // Taken before either parser removes the flags it knows.
+  const std::string command = tetsmooth::bench::command_line(argc, argv);
   try {
     const tetsmooth::bench::BenchConfig config = tetsmooth::bench::take_own_flags(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
     const char* sha = std::getenv("TETSMOOTH_GIT_SHA");
     benchmark::AddCustomContext("git_sha", sha && *sha ? sha : TETSMOOTH_GIT_SHA);
+    benchmark::AddCustomContext("command_line", command);
     char host[256] = {0};
     if (gethostname(host, sizeof host - 1) == 0) benchmark::AddCustomContext("host_name", host);
     for (const auto& [key, value] : tetsmooth::bench::register_benchmarks(config))

@@ -365,6 +365,10 @@ class BenchResult:
         ]
         if copy:
             lines.append(f"measured device copy bandwidth: {copy / 1e9:.1f} GB/s (Memory/CopyBandwidth)")
+        # Results from before bench_smooth recorded its command have none.
+        command = self.context_text("command_line")
+        if command:
+            lines.append(f"command: `{command}`")
         return lines
 
 

@@ -10,6 +10,9 @@ mkdir -p "$out"
 export TETSMOOTH_GIT_SHA=$(cat "$b/GIT_SHA")
 export TETSMOOTH_MESH_CACHE=/tmp/tetsmooth-meshes
 steps=${*:-tests sanitize bench}
+# What made this folder: the steps and the commit of the bundle (the JSONs
+# carry their own bench_smooth command lines).
+echo "device_run.sh $steps, git $TETSMOOTH_GIT_SHA, $(date -u +%Y-%m-%dT%H:%M:%SZ)" > "$out/run.txt"
 nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm,clocks.max.sm --format=csv | tee "$out/device.txt"
 nproc >> "$out/device.txt"
 status=0

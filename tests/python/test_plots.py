@@ -88,7 +88,8 @@ HIST_AFTER = [12448, 28000, 50000, 68000, 88000, 108000, 121000, 117000, 91000, 
 def float_document():
     """A float run of Form B on the 109k model only, with the context bench_smooth writes."""
     context = {"gpu_name": "NVIDIA H100 80GB HBM3", "gpu_precision": "float", "cuda_version": "13000",
-               "sm_count": "132", "host_name": "vm", "num_cpus": 16, "git_sha": "abc123"}
+               "sm_count": "132", "host_name": "vm", "num_cpus": 16, "git_sha": "abc123",
+               "command_line": "bench_smooth --precision=float --models=109k --benchmark_repetitions=3"}
     quality = dict(q_min_before=4.611063343546083e-08, q_min_after=0.0, q_mean_before=0.55, q_mean_after=0.58)
     return {"context": context, "benchmarks": [
         entry("Serial/FormB/109k/manual_time", 4000.0, sweeps=8, **quality,
@@ -490,6 +491,14 @@ class PrecisionAndFormattingTests(unittest.TestCase):
 
     def test_report_prints_precision(self):
         self.assertIn("precision: GPU runs in float", self.completed.stdout)
+
+    def test_tables_give_the_command_that_made_the_result(self):
+        self.assertIn("command: `bench_smooth --precision=float --models=109k --benchmark_repetitions=3`",
+                      self.markdown)
+        # A result from before bench_smooth recorded it says nothing of one.
+        with open(FIXTURE, encoding="utf-8") as handle:
+            self.assertNotIn("command_line", handle.read())
+        self.assertFalse([line for line in bj.load_result(FIXTURE).describe() if line.startswith("command")])
 
     def test_figure_titles_state_precision(self):
         import make_figures

@@ -18,7 +18,8 @@ const char* const kExitCodes = R"(Exit status:
      (node index out of range, non-finite coordinate, no tets)
   4  output error: an output file or report cannot be written
      (no partial file is ever left behind)
-  5  device error: --device cuda without a usable GPU, or CUDA support not built
+  5  device error: --device cuda without a usable GPU, CUDA support not built,
+     or a mesh that does not fit in the GPU's memory
 )";
 
 const char* const kFormats = R"(Formats (chosen from the file name; --format/--output-format override):
@@ -78,11 +79,14 @@ std::string smooth_help() {
 
 Moves every interior node towards the centroid of its neighbours. The adaptive
 method keeps a move only if it raises the worst quality of the node's tets, so
-it never makes the mesh worse; the ordinary method always moves and can invert
-tets in concave regions. Prints the quality before and after on stderr.
+it never makes the mesh worse (except CUDA's multiblock and singleblock in form
+B, the paper's racy variants, which read neighbours while they move and can
+invert a few tets); the ordinary method always moves and can invert tets in
+concave regions. Prints the quality before and after on stderr.
 
 Options:
-  -o, --output OUT          where to write the smoothed mesh (required)
+  -o, --output OUT          where to write the smoothed mesh (required); it may be IN,
+                            which is replaced only once the whole result is written
   --method adaptive|ordinary   (default adaptive)
   --form A|B                A: every node from the previous sweep's positions (Jacobi);
                             B: in place, later nodes see earlier moves (default B, converges faster)
@@ -91,7 +95,8 @@ Options:
                             reference in natural node order; other counts visit nodes colour by
                             colour, so the result does not depend on the thread count
   --strategy coloured|multiblock|singleblock
-                            CUDA: how sweeps are launched (default coloured)
+                            CUDA: how sweeps are launched (default coloured in form B,
+                            multiblock in form A; coloured is a form B scheme)
   --layout aos|soa          CUDA: coordinates as xyz triples or three arrays (default aos)
   --precision float|double  CUDA: arithmetic of the smoother; the CPU always uses double
                             (default double)

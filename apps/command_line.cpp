@@ -90,6 +90,16 @@ SmoothCommand parse_smooth(const std::vector<std::string>& args) {
   // gives the same mesh whatever the number of cores.
   c.options.ordering = c.options.form == Form::B && c.options.threads != 1 ? Ordering::Coloured : Ordering::Natural;
   c.strategy_given = p.has("strategy");
+  // Coloured is a Form B scheme: Form A's default is the paper's MultiBlock,
+  // and an explicit coloured Form A is refused here, before any reading and
+  // whatever the device, rather than by the GPU after the set-up.
+  if (c.options.form == Form::A) {
+    if (!c.strategy_given)
+      c.options.strategy = Strategy::MultiBlock;
+    else if (c.options.strategy == Strategy::Coloured)
+      throw UsageError("--strategy coloured is an in-place (--form B) scheme; with --form A use multiblock or "
+                       "singleblock");
+  }
   c.layout_given = p.has("layout");
   c.threads_given = p.has("threads");
   c.quiet = p.has("quiet");

@@ -48,10 +48,20 @@ void check_output_location(const std::string& path) {
   if (!fs::exists(status)) fail("directory '" + dir + "' does not exist");
   if (!fs::is_directory(status)) fail("'" + dir + "' is not a directory");
   if (::access(dir.c_str(), W_OK | X_OK) != 0) fail("directory '" + dir + "': " + std::strerror(errno));
+  if (fs::exists(end.path, ec) && ::access(end.path.c_str(), W_OK) != 0)
+    fail("the file is not writable: " + std::string(std::strerror(errno)));
 }
 
 void check_mesh_output_location(const std::string& path, MeshFormat format) {
   for (const std::string& file : mesh_files(path, format_from_path(path, format))) check_output_location(file);
+}
+
+bool writes_over_input(const std::string& input, MeshFormat input_format, const std::string& output,
+                       MeshFormat output_format) {
+  for (const std::string& in : mesh_files(input, input_format))
+    for (const std::string& out : mesh_files(output, output_format))
+      if (same_file(in, out)) return true;
+  return false;
 }
 
 void check_report_path(const std::string& report, const std::string& input, MeshFormat input_format,

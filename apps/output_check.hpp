@@ -9,12 +9,21 @@
 namespace tetsmooth::cli {
 
 // Throws OutputError when `path`'s directory does not exist, is not a
-// directory or is not writable, or when `path` itself is a directory.
+// directory or is not writable, when `path` itself is a directory, or when
+// it is a file this user may not write (a read-only file is not replaced,
+// though the rename that replaces a file would need only the directory).
 void check_output_location(const std::string& path);
 
 // The same for each file a mesh output stands for: both of TetGen's
 // base.node and base.ele, one file in any other format.
 void check_mesh_output_location(const std::string& path, MeshFormat format);
+
+// Whether a file of the mesh output (`output` in `output_format`) is a file
+// of the mesh read (`input` in `input_format`): the run then replaces its
+// input, which is allowed (the file is replaced only by a whole result) but
+// worth a warning.
+bool writes_over_input(const std::string& input, MeshFormat input_format, const std::string& output,
+                       MeshFormat output_format);
 
 // Throws UsageError when the report at `report` would be written over the
 // mesh that was read (`input` in `input_format`) or the one to be written

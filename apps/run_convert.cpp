@@ -19,6 +19,8 @@ void run_convert(const ConvertCommand& c, const Console& console) {
   check_writable(mesh, c.output, output_format);
   for (const std::string& loss : output_losses(mesh, c.output, output_format)) console.warn(c.output + ": " + loss);
   for (const std::string& w : input_warnings(mesh, inspect_input(mesh, c.input), c.input)) console.warn(w);
+  if (writes_over_input(c.input, input_format, c.output, output_format))
+    console.warn(c.output + " is the input mesh: it will be replaced once the whole result is written");
   write_mesh_with_fields(mesh, c.output, output_format);
   console.note("wrote " + c.output + ": " + with_thousands(mesh.num_nodes()) + " nodes, " +
                with_thousands(mesh.num_tets()) + " tets (" + input_format_name(input_format) + " -> " +

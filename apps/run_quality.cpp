@@ -3,6 +3,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/input_warnings.hpp"
+#include "apps/on_input_mesh.hpp"
 #include "apps/option_names.hpp"
 #include "apps/region_pins.hpp"
 #include "apps/report_json.hpp"
@@ -21,10 +22,10 @@ void run_quality(const QualityCommand& c, const Console& console) {
 
   // The topology tells which tets smoothing could change (min_movable), with
   // material interfaces pinned as `smooth` pins them.
-  const Topology topology = [&] {
+  const Topology topology = on_input_mesh(c.input, [&] {
     const RegionInterfacePins pins(mesh);
     return build_topology(mesh);
-  }();
+  });
   record.boundary_nodes = static_cast<std::size_t>(std::count(topology.boundary.begin(), topology.boundary.end(), 1));
   record.movable_nodes = static_cast<std::size_t>(std::count(topology.movable.begin(), topology.movable.end(), 1));
   record.summary = summarize_quality(mesh, topology.movable);

@@ -4,6 +4,7 @@
 
 #include "apps/commands.hpp"
 #include "apps/input_warnings.hpp"
+#include "apps/on_input_mesh.hpp"
 #include "apps/option_names.hpp"
 #include "apps/output_check.hpp"
 #include "apps/output_fields.hpp"
@@ -63,20 +64,37 @@ std::string device_line(const SmoothCommand& c, Device device, const std::string
   return s.str();
 }
 
-std::string stop_phrase(StopReason r) {
-  switch (r) {
+std::string stop_phrase(const SmoothResult& r, Method method) {
+  // A mesh without a node free to move still takes its one sweep, which
+  // accepts nothing: say why, rather than that no node could improve.
+  if (r.movable_nodes == 0) return "nothing to smooth: no movable nodes";
+  switch (r.stop) {
     case StopReason::NoMoves: return "no node could improve";
     case StopReason::Tolerance: return "moves fell below --tol";
-    case StopReason::MaxIterations: return "reached --max-iter; more sweeps may improve further";
-    case StopReason::NotStarted: return "nothing to smooth: no movable nodes";
+    case StopReason::MaxIterations:
+      return method == Method::Adaptive ? "reached --max-iter; more sweeps may improve further" : "reached --max-iter";
+    case StopReason::NotStarted: return "no sweep run";
   }
   return "";
 }
 
-void print_report(const Console& console, const SmoothRecord& record) {
+// What may have inverted tets in this run: ordinary smoothing moves without
+// looking, and in-place Form B under CUDA MultiBlock or SingleBlock (the
+// paper's racy variants) judges moves against neighbours that are moving.
+std::string inversion_warning(const SmoothCommand& c, Device device, std::size_t inverted) {
+  const std::string count = with_thousands(inverted) + " tets";
+  if (c.options.method == Method::Ordinary) return "ordinary smoothing inverted " + count + "; --method adaptive with "
+                                                   "the coloured strategy or --form A never does";
+  if (device == Device::Cuda && c.options.form == Form::B && c.options.strategy != Strategy::Coloured)
+    return "the " + std::string(option_name(c.options.strategy)) + " strategy in form B inverted " + count +
+           ": its threads judge moves while neighbours move (the paper's race); the coloured strategy never does";
+  return "smoothing inverted " + count;
+}
+
+void print_report(const Console& console, const SmoothCommand& c, const SmoothRecord& record) {
   const SmoothResult& r = record.result;
   std::ostream& os = console.err;
-  os << "done: " << r.sweeps << " sweep(s), " << stop_phrase(r.stop) << "\n"
+  os << "done: " << r.sweeps << " sweep(s), " << stop_phrase(r, c.options.method) << "\n"
      << "  " << with_thousands(r.movable_nodes) << " of " << with_thousands(record.input.nodes) << " nodes movable";
   if (r.num_colours > 0) os << ", " << r.num_colours << " colours";
   if (r.reverted_moves > 0)
@@ -114,13 +132,18 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   record.read_ms = ms_since(t0);
   record.input = inspect_input(mesh, c.input);
   check_writable(mesh, c.output, record.output_format);
-  const char* inverted_note = c.options.method == Method::Adaptive
-                                  ? "continuing: adaptive smoothing never makes them worse"
-                                  : "continuing, but ordinary smoothing may make them worse";
+  const bool racy = record.device == Device::Cuda && c.options.form == Form::B &&
+                    c.options.strategy != Strategy::Coloured;
+  const char* inverted_note = c.options.method == Method::Ordinary
+                                  ? "continuing, but ordinary smoothing may make them worse"
+                              : racy ? "continuing, but this strategy's race in form B may make them worse"
+                                     : "continuing: adaptive smoothing never makes them worse";
   record.warnings = input_warnings(mesh, record.input, c.input, inverted_note);
   for (const std::string& loss : output_losses(mesh, c.output, record.output_format))
     record.warnings.push_back(c.output + ": " + loss);
   for (std::string& w : ignored_option_warnings(c, record.device)) record.warnings.push_back(std::move(w));
+  if (writes_over_input(c.input, record.input_format, c.output, record.output_format))
+    record.warnings.push_back(c.output + " is the input mesh: it will be replaced once the whole result is written");
   for (const std::string& w : record.warnings) console.warn(w);
   console.note(c.input + ": " + with_thousands(record.input.nodes) + " nodes, " + with_thousands(record.input.tets) +
                " tets (" + input_format_name(record.input_format) + ")");
@@ -136,7 +159,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
     if (pins.added() > 0)
       console.note(with_thousands(pins.added()) + " nodes on interfaces between regions (tets of different tags) "
                    "stay fixed");
-    record.result = smooth(mesh, options, record.device);
+    record.result = on_input_mesh(c.input, [&] { return smooth(mesh, options, record.device); });
   } catch (...) {
     progress.finish();
     throw;
@@ -145,11 +168,10 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
 
   const SmoothResult& r = record.result;
   if (r.after.inverted > r.before.inverted) {
-    record.warnings.push_back("ordinary smoothing inverted " + with_thousands(r.after.inverted - r.before.inverted) +
-                              " tets; --method adaptive never does");
+    record.warnings.push_back(inversion_warning(c, record.device, r.after.inverted - r.before.inverted));
     console.warn(record.warnings.back());
   }
-  if (!console.quiet) print_report(console, record);
+  if (!console.quiet) print_report(console, c, record);
 
   t0 = Clock::now();
   write_mesh_with_fields(mesh, c.output, record.output_format);

@@ -26,6 +26,12 @@ void check_gpu_sweeps(const SmoothOptions& opt) {
                      std::to_string(kMaxGpuSweeps) + " sweeps (it keeps each sweep's counters on the device)");
 }
 
+void check_gpu_strategy(const SmoothOptions& opt) {
+  if (opt.strategy == Strategy::Coloured && opt.form == Form::A)
+    throw UsageError("the coloured strategy is an in-place (Form B) scheme; Form A is already race-free "
+                     "(use the multiblock or singleblock strategy with Form A)");
+}
+
 StopReason to_stop_reason(SweepVerdict v) {
   switch (v) {
     case SweepVerdict::NoMoves: return StopReason::NoMoves;

@@ -21,6 +21,11 @@ inline constexpr int kMaxGpuSweeps = 1000000;
 // UsageError when opt asks the GPU for more sweeps than kMaxGpuSweeps.
 void check_gpu_sweeps(const SmoothOptions& opt);
 
+// UsageError for the Coloured strategy in Form A: colouring makes in-place
+// updates race-free, and Form A, which writes another buffer, has no race
+// to remove. (The CPU has no strategies; it colours Form B by --threads.)
+void check_gpu_strategy(const SmoothOptions& opt);
+
 StopReason to_stop_reason(SweepVerdict v);
 
 class SweepLog {

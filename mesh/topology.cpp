@@ -38,7 +38,7 @@ Csr pack_rows(RowBuckets<index_t>&& b, const Finish& finish) {
     if (out > static_cast<std::size_t>(std::numeric_limits<index_t>::max()))
       throw InputError("", "the mesh's topology needs more than " +
                                std::to_string(std::numeric_limits<index_t>::max()) +
-                               " entries in one table, past its 32-bit offsets");
+                               " entries in one table (the neighbour rows, 2 an edge), past its 32-bit offsets");
     csr.offsets[r + 1] = static_cast<index_t>(out);
   }
   csr.items.assign(b.items.begin(), b.items.begin() + static_cast<std::ptrdiff_t>(out));
@@ -198,9 +198,11 @@ double mean_edge_length(const std::vector<double>& xyz, const Csr& neighbours) {
   std::size_t count = 0;
   for (std::size_t i = 0; i < neighbours.rows(); ++i)
     for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j) {
-      if (static_cast<std::size_t>(*j) <= i) continue;
-      const double dx = xyz[3 * i] - xyz[3 * *j], dy = xyz[3 * i + 1] - xyz[3 * *j + 1],
-                   dz = xyz[3 * i + 2] - xyz[3 * *j + 2];
+      // In 64 bits: 3 * j wraps in index_t past 715 M nodes.
+      const std::size_t k = static_cast<std::size_t>(*j);
+      if (k <= i) continue;
+      const double dx = xyz[3 * i] - xyz[3 * k], dy = xyz[3 * i + 1] - xyz[3 * k + 1],
+                   dz = xyz[3 * i + 2] - xyz[3 * k + 2];
       sum += std::sqrt(dx * dx + dy * dy + dz * dz);
       ++count;
     }

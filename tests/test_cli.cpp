@@ -765,6 +765,60 @@ TEST_F(CliFiles, MaterialInterfacesStayFixed) {
   EXPECT_EQ(nlohmann::json::parse(q.out)["input"]["movable_nodes"], 27 - 9);
 }
 
+// Coloured is a Form B scheme: Form A defaults to MultiBlock, and asking for
+// both is refused at parsing, whatever the device, before any reading.
+TEST(CliParse, FormAFollowsWithMultiBlockAndRefusesColoured) {
+  const auto a = parse_as<SmoothCommand>({"smooth", "in.vtu", "-o", "out.vtu", "--form", "A"});
+  EXPECT_EQ(a.options.strategy, Strategy::MultiBlock);
+  EXPECT_FALSE(a.strategy_given);
+  const auto single = parse_as<SmoothCommand>({"smooth", "in.vtu", "-o", "o.vtu", "--form", "A", "--strategy",
+                                               "singleblock"});
+  EXPECT_EQ(single.options.strategy, Strategy::SingleBlock);
+  const std::string e = usage_error_of({"smooth", "in.vtu", "-o", "o.vtu", "--strategy", "coloured", "--form", "A"});
+  EXPECT_NE(e.find("--strategy coloured"), std::string::npos) << e;
+  EXPECT_NE(e.find("--form A use multiblock or singleblock"), std::string::npos) << e;
+  EXPECT_EQ(run({"smooth", "no-such-file.vtu", "-o", "o.vtu", "--form", "A", "--strategy", "coloured"}).code,
+            kExitUsage);
+}
+
+// OUT may be IN: the run warns, and the file is replaced by the whole result.
+TEST_F(CliFiles, SmoothingInPlaceWarnsAndReplacesTheInput) {
+  const std::string in = lattice(3, "lattice.msh");
+  const TetMesh before = read_mesh(in);
+  const CliRun r = run({"smooth", in, "-o", in, "--device", "cpu"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("warning: " + in + " is the input mesh: it will be replaced once the whole result is written"),
+            std::string::npos)
+      << r.err;
+  const TetMesh after = read_mesh(in);
+  EXPECT_EQ(after.tets, before.tets);
+  EXPECT_NE(after.xyz, before.xyz);
+  EXPECT_EQ(files(), std::vector<std::string>{"lattice.msh"});  // no temporary left
+  // Another file, or another spelling of one: warned only where it is the input.
+  const CliRun other = run({"convert", in, path("copy.vtu")});
+  EXPECT_EQ(other.err.find("is the input mesh"), std::string::npos) << other.err;
+  const CliRun spelled = run({"convert", in, (dir_ / "." / "lattice.msh").string()});
+  EXPECT_NE(spelled.err.find("is the input mesh"), std::string::npos) << spelled.err;
+}
+
+// The stop line says why a run ended in the terms of its method.
+TEST_F(CliFiles, StopLineFitsTheRun) {
+  write_mesh(testing::regular_tet(), path("one.vtu"));
+  const CliRun none = run({"smooth", path("one.vtu"), "-o", path("one_out.vtu"), "--device", "cpu"});
+  ASSERT_EQ(none.code, kExitOk) << none.err;
+  EXPECT_NE(none.err.find("done: 1 sweep(s), nothing to smooth: no movable nodes"), std::string::npos) << none.err;
+  const std::string in = lattice(3);
+  const CliRun ordinary = run({"smooth", in, "-o", path("o.vtu"), "--device", "cpu", "--method", "ordinary",
+                               "--max-iter", "2", "--tol", "0"});
+  ASSERT_EQ(ordinary.code, kExitOk) << ordinary.err;
+  EXPECT_NE(ordinary.err.find("done: 2 sweep(s), reached --max-iter\n"), std::string::npos) << ordinary.err;
+  const CliRun adaptive = run({"smooth", in, "-o", path("a.vtu"), "--device", "cpu", "--max-iter", "1", "--tol", "0"});
+  ASSERT_EQ(adaptive.code, kExitOk) << adaptive.err;
+  EXPECT_NE(adaptive.err.find("done: 1 sweep(s), reached --max-iter; more sweeps may improve further"),
+            std::string::npos)
+      << adaptive.err;
+}
+
 TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {
   const std::string in = lattice(3);
   const CliRun r = run({"smooth", in, "-o", path("out.mesh"), "--device", "cpu", "-q"});

@@ -6,6 +6,7 @@
 // scale 1, and keeps the input's values.
 #include <cuda_runtime.h>
 
+#include <cstddef>
 #include <cstdint>
 
 #include "kernels/node_update.hpp"
@@ -26,9 +27,9 @@ inline WorkingFrame working_frame(const double centre[3], double scale) {
 // one conversion, for loading and for telling a node the run left alone.
 template <class Real>
 __device__ __forceinline__ Vec3<Real> working_position(const double* in, index_t i, const WorkingFrame& f) {
-  return Vec3<Real>{static_cast<Real>((in[3 * i] - f.cx) * f.inv_scale),
-                    static_cast<Real>((in[3 * i + 1] - f.cy) * f.inv_scale),
-                    static_cast<Real>((in[3 * i + 2] - f.cz) * f.inv_scale)};
+  const double* p = in + 3 * static_cast<std::size_t>(i);  // 3 * i wraps in index_t past 715 M nodes
+  return Vec3<Real>{static_cast<Real>((p[0] - f.cx) * f.inv_scale), static_cast<Real>((p[1] - f.cy) * f.inv_scale),
+                    static_cast<Real>((p[2] - f.cz) * f.inv_scale)};
 }
 
 template <class Real, class Coords>
@@ -50,9 +51,10 @@ __global__ void store_coords_kernel(Coords working, const double* input, double*
   if (i >= n || !movable[i]) return;
   const Vec3<Real> v = working.get(i), loaded = working_position<Real>(input, i, f);
   if (v.x == loaded.x && v.y == loaded.y && v.z == loaded.z) return;
-  out[3 * i] = static_cast<double>(v.x) * f.scale + f.cx;
-  out[3 * i + 1] = static_cast<double>(v.y) * f.scale + f.cy;
-  out[3 * i + 2] = static_cast<double>(v.z) * f.scale + f.cz;
+  double* const p = out + 3 * static_cast<std::size_t>(i);
+  p[0] = static_cast<double>(v.x) * f.scale + f.cx;
+  p[1] = static_cast<double>(v.y) * f.scale + f.cy;
+  p[2] = static_cast<double>(v.z) * f.scale + f.cz;
 }
 
 // Counts the nodes that never move whose working coordinates are not those

@@ -137,8 +137,7 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   Impl& m = *impl_;
   if (o.precision != m.precision || o.layout != m.layout)
     throw UsageError("GpuPipeline::run: restore_coordinates() was called for another precision or layout");
-  if (o.strategy == Strategy::Coloured && o.form == Form::A)
-    throw UsageError("the coloured strategy is an in-place (Form B) scheme; Form A is already race-free");
+  check_gpu_strategy(o);
   const index_t n = static_cast<index_t>(m.n);
   const bool is_float = o.precision == Precision::Float;
   const std::size_t cap = static_cast<std::size_t>(std::max(o.max_iterations, 1));

@@ -15,13 +15,15 @@
 #include "kernels/cuda/stopping_rule_kernels.cuh"
 #include "kernels/cuda/tet_quality_pass.cuh"
 #include "kernels/cuda/sweep_loop.hpp"
+#include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
 
 namespace tetsmooth::cuda {
 namespace detail {
 
 constexpr int kBlock = 256;
-inline unsigned blocks_for(index_t count) { return static_cast<unsigned>((count + kBlock - 1) / kBlock); }
+// In 64 bits: count + kBlock - 1 wraps in index_t for counts near 2^31.
+inline unsigned blocks_for(std::size_t count) { return static_cast<unsigned>((count + kBlock - 1) / kBlock); }
 template <class Real, Layout L>
 struct CoordsFor;
 template <class Real>
@@ -201,8 +203,7 @@ void with_layout(Layout layout, void* buf, index_t n, Fn&& fn) {
 
 template <class Real>
 SweepLoopStats run_sweep_loop(const SweepLoopArgs& a, const SmoothOptions& o) {
-  if (o.strategy == Strategy::Coloured && o.form == Form::A)
-    throw UsageError("the coloured strategy is an in-place (Form B) scheme; Form A is already race-free");
+  check_gpu_strategy(o);
   return o.layout == Layout::AoS ? detail::run_method<Real, Layout::AoS>(a, o)
                                  : detail::run_method<Real, Layout::SoA>(a, o);
 }

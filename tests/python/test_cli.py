@@ -451,6 +451,35 @@ class ExitCodes(CliTestCase):
                     self.assert_one_error_line(run(*args, check=False), EXIT_OUTPUT)
                 self.assertEqual((sorted(os.listdir(self.tmp)), sorted(os.listdir(target_dir))), before)
 
+    def test_read_only_target_is_not_replaced(self):
+        """A file its user may not write stays as it is (exit 4), though the
+        rename that replaces a file needs only the directory's permission.
+        Root may write any file, so as root the run drops to nobody."""
+        os.chmod(self.tmp, 0o755)  # mkdtemp's 0700 would keep the other user out
+        folder = self.path("shared")
+        os.mkdir(folder)
+        os.chmod(folder, 0o777)
+        target = os.path.join(folder, "kept.vtu")
+        with open(target, "w") as handle:
+            handle.write("old\n")
+        os.chmod(target, 0o444)
+        source = os.path.join(folder, "in.vtu")
+        shutil.copy(self.good, source)
+        os.chmod(source, 0o644)
+        prefix = []
+        if os.geteuid() == 0:
+            setpriv = shutil.which("setpriv")
+            if not setpriv:
+                missing("setpriv (util-linux) is needed to run as a user other than root")
+            prefix = [setpriv, "--reuid=65534", "--regid=65534", "--clear-groups"]
+        for args in (["smooth", source, "-o", target], ["convert", source, target]):
+            with self.subTest(command=args[0]):
+                proc = subprocess.run([*prefix, BIN, *args], capture_output=True, text=True, timeout=600)
+                self.assert_one_error_line(proc, EXIT_OUTPUT, "kept.vtu", "not writable")
+                with open(target) as handle:
+                    self.assertEqual(handle.read(), "old\n")
+                self.assertEqual(sorted(os.listdir(folder)), ["in.vtu", "kept.vtu"])
+
     def test_cuda_without_a_gpu(self):
         out = self.path("cuda.vtu")
         proc = run("smooth", self.good, "-o", out, "--device", "cuda", check=False)

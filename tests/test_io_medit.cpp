@@ -1,5 +1,6 @@
 // Medit .mesh: references, pass-through elements, RequiredVertices and
-// Corners as fixed nodes, exact round trips, and errors naming file:line.
+// Corners as fixed nodes, repeated sections, exact round trips, and errors
+// naming file:line.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -41,6 +42,12 @@ std::string replaced(std::string text, const std::string& from, const std::strin
   const std::size_t at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
 }
 
 TEST(MeditIo, ReadsReferencesBlocksAndPinnedVertices) {
@@ -128,6 +135,57 @@ TEST(MeditIo, StringSectionsAreKept) {
   EXPECT_NE(open.find("expected the closing quote of the string"), std::string::npos) << open;
 }
 
+// meshio writes one section per cell block (per Gmsh entity): sections of
+// one kind are read as one, in file order, each element with its reference,
+// and written back as one.
+TEST(MeditIo, RepeatedElementSectionsAreReadAsOne) {
+  const TetMesh mesh = read_text(
+      "MeshVersionFormatted 2\nDimension 3\nVertices\n5\n0 0 0 0\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0.3 0.3 -1 0\n"
+      "Triangles\n1\n2 3 4 101\nTetrahedra\n1\n1 2 3 4 10\nEdges\n1\n2 3 5\nTriangles\n0\n"
+      "Triangles\n2\n1 2 4 102\n1 3 2 103\nTETRAHEDRA\n1\n1 3 2 5 11\nEdges\n1\n3 4 6\nEnd\n");
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 2, 1, 4}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{10, 11}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
+  EXPECT_EQ(mesh.extras.blocks[0].connectivity, (std::vector<index_t>{1, 2, 3, 0, 1, 3, 0, 2, 1}));
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{101, 102, 103}));
+  EXPECT_EQ(mesh.extras.blocks[1].kind, "line");
+  EXPECT_EQ(mesh.extras.blocks[1].connectivity, (std::vector<index_t>{1, 2, 2, 3}));
+  EXPECT_EQ(mesh.extras.blocks[1].tags, (std::vector<int>{5, 6}));
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 1, 0}));
+
+  const std::string text = write_text(mesh);
+  EXPECT_EQ(occurrences(text, "\nTetrahedra\n"), 1u) << text;
+  EXPECT_EQ(occurrences(text, "\nTriangles\n"), 1u) << text;
+  EXPECT_EQ(occurrences(text, "\nEdges\n"), 1u) << text;
+  const TetMesh back = read_text(text);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  ASSERT_EQ(back.extras.blocks.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(back.extras.blocks[i].kind, mesh.extras.blocks[i].kind);
+    EXPECT_EQ(back.extras.blocks[i].connectivity, mesh.extras.blocks[i].connectivity);
+    EXPECT_EQ(back.extras.blocks[i].tags, mesh.extras.blocks[i].tags);
+  }
+}
+
+// RequiredVertices and Corners append too; a vertex listed twice, in one
+// section or two, is kept once.
+TEST(MeditIo, RepeatedVertexListsAppend) {
+  const TetMesh mesh = read_text(replaced(
+      kMinimal, "End\n", "RequiredVertices\n2\n1 2\nCorners\n1\n3\nRequiredVertices\n3\n2 4 4\nCorners 1 3\nEnd\n"));
+  EXPECT_EQ(mesh.extras.required_nodes, (std::vector<std::int32_t>{0, 1, 3}));
+  EXPECT_EQ(mesh.extras.corner_nodes, (std::vector<std::int32_t>{2}));
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 1}));
+  const std::string text = write_text(mesh);
+  EXPECT_EQ(occurrences(text, "\nRequiredVertices\n"), 1u) << text;
+  EXPECT_EQ(occurrences(text, "\nCorners\n"), 1u) << text;
+  const TetMesh back = read_text(text);
+  EXPECT_EQ(back.extras.required_nodes, mesh.extras.required_nodes);
+  EXPECT_EQ(back.extras.corner_nodes, mesh.extras.corner_nodes);
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
 struct BadText {
   const char* from;
   const char* to;
@@ -153,7 +211,12 @@ TEST(MeditIo, BadInputNamesFileAndLine) {
       {"MeshVersionFormatted 2", "MeshVersionFormatted 9", "t.mesh:1:", "unsupported MeshVersionFormatted 9"},
       {"MeshVersionFormatted 2\n", "Vertices\n", "t.mesh:1:", "not a Medit mesh"},
       {"Vertices\n4\n", "Tetrahedra\n1\n1 2 3 4 0\nVertices\n4\n", "t.mesh:3:", "Tetrahedra before Vertices"},
-      {"End\n", "Vertices 0\nEnd\n", "t.mesh:12:", "a second Vertices section"},
+      {"End\n", "Vertices 0\nEnd\n", "t.mesh:12:",
+       "a second Vertices section: the elements' vertex indices would be ambiguous"},
+      {"End\n", "Dimension 3\nEnd\n", "t.mesh:12:", "a second Dimension section: the header comes once"},
+      {"End\n", "Identifier a\nIdentifier b\nEnd\n", "t.mesh:13:",
+       "a second Identifier section: only element sections, RequiredVertices and Corners may repeat"},
+      {"Vertices\n4\n", "Corners\n1\n1\nVertices\n4\n", "t.mesh:3:", "Corners before Vertices"},
       {"1 2 3 4 0\n", "1 2 3 4 0.5\n", "t.mesh:11:", "expected an integer tetrahedron reference, found '0.5'"},
   };
   for (const BadText& c : cases) {

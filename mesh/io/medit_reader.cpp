@@ -1,9 +1,20 @@
 // Medit .mesh (ASCII) reading. The format is a sequence of keywords, each
 // followed by its data as whitespace-separated values that may wrap across
 // lines at will, so the file is read token by token.
+//
+// Element sections (Tetrahedra, Triangles, Edges, ...) and the vertex lists
+// (RequiredVertices, Corners) may repeat: meshio writes one section per cell
+// block, that is per Gmsh entity, so a mesh of three volumes has three
+// Tetrahedra sections, and meshio and Gmsh read such a file whole. Repeats
+// are read as one section, their entries appended in file order, so element
+// indices (RequiredTriangles, Ridges, ...) count across them; the writer then
+// writes one section per kind. Every other section comes once: a second
+// Vertices would leave each vertex index ambiguous, and the sections kept as
+// read (kKeptKeywords, kStringKeywords) have no single body to append to.
 #include <cctype>
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <istream>
 #include <vector>
 
@@ -35,11 +46,13 @@ class MeditReader {
   void header();
   void vertices();
   void tetrahedra();
+  PassThroughBlock& block_of(const medit::ElementKeyword& kw);
   void elements(const medit::ElementKeyword& kw);
-  void vertex_list(std::vector<std::int32_t>& out);
+  void vertex_list(const char* keyword, std::vector<std::int32_t>& out, std::vector<std::uint8_t>& listed);
   void kept(const medit::KeptKeyword& kw);
   void string_section(const char* keyword);
   void section(const std::string& keyword);
+  void check_once(const std::string& keyword) const;
   void need_vertices(const std::string& keyword) const {
     if (!has_vertices_) lines_.fail(keyword + " before Vertices: element sections must follow the vertices");
   }
@@ -47,8 +60,11 @@ class MeditReader {
   TextLines& lines_;
   TetMesh mesh_;
   bool has_vertices_ = false;
-  bool has_tets_ = false;
+  // The sections read so far that may not repeat (see check_once()).
   std::vector<std::string> seen_;
+  // Per vertex, whether RequiredVertices / Corners lists it already, so that
+  // a vertex listed twice (in one section or two) is kept once.
+  std::vector<std::uint8_t> required_listed_, corners_listed_;
 };
 
 std::size_t MeditReader::count(const char* what) {
@@ -75,6 +91,23 @@ index_t MeditReader::vertex_index() {
 // rather than being sized up front, so a corrupt count cannot allocate.
 constexpr std::size_t kReserveCap = std::size_t{1} << 16;
 std::size_t capped(std::size_t n) { return n < kReserveCap ? n : kReserveCap; }
+
+// Only a kind's first section reserves: an exact reserve for each repeat
+// would reallocate every time, where push_back's growth stays amortised.
+template <typename T>
+void reserve_first(std::vector<T>& v, std::size_t n) {
+  if (v.empty()) v.reserve(n);
+}
+
+// Whether sections under `keyword` may repeat (see the top of the file).
+bool may_repeat(std::string_view keyword) {
+  if (same_keyword(keyword, "Tetrahedra") || same_keyword(keyword, "RequiredVertices") ||
+      same_keyword(keyword, "Corners"))
+    return true;
+  for (const medit::ElementKeyword& kw : medit::kElementKeywords)
+    if (same_keyword(keyword, kw.keyword)) return true;
+  return false;
+}
 
 void MeditReader::header() {
   const std::string_view first = lines_.next_token("MeshVersionFormatted");
@@ -103,13 +136,23 @@ void MeditReader::vertices() {
 void MeditReader::tetrahedra() {
   need_vertices("Tetrahedra");
   const std::size_t n = count("number of tetrahedra");
-  mesh_.tets.reserve(4 * capped(n));
-  mesh_.extras.tet_tags.reserve(capped(n));
+  reserve_first(mesh_.tets, 4 * capped(n));
+  reserve_first(mesh_.extras.tet_tags, capped(n));
   for (std::size_t i = 0; i < n; ++i) {
     for (int k = 0; k < 4; ++k) mesh_.tets.push_back(vertex_index());
     mesh_.extras.tet_tags.push_back(integer("tetrahedron reference"));
   }
-  has_tets_ = n > 0;
+}
+
+// The block that every section of kw's kind appends to, made by the first
+// that has elements.
+PassThroughBlock& MeditReader::block_of(const medit::ElementKeyword& kw) {
+  for (PassThroughBlock& block : mesh_.extras.blocks)
+    if (block.kind == kw.kind) return block;
+  PassThroughBlock& block = mesh_.extras.blocks.emplace_back();
+  block.kind = kw.kind;
+  block.nodes_per_element = kw.nodes;
+  return block;
 }
 
 void MeditReader::elements(const medit::ElementKeyword& kw) {
@@ -118,22 +161,30 @@ void MeditReader::elements(const medit::ElementKeyword& kw) {
   // An empty section leaves no block: a block of a kind that another format
   // cannot hold would stop the write, though there is nothing to write.
   if (n == 0) return;
-  PassThroughBlock& block = mesh_.extras.blocks.emplace_back();
-  block.kind = kw.kind;
-  block.nodes_per_element = kw.nodes;
-  block.connectivity.reserve(static_cast<std::size_t>(kw.nodes) * capped(n));
-  block.tags.reserve(capped(n));
+  PassThroughBlock& block = block_of(kw);
+  reserve_first(block.connectivity, static_cast<std::size_t>(kw.nodes) * capped(n));
+  reserve_first(block.tags, capped(n));
   for (std::size_t i = 0; i < n; ++i) {
     for (int k = 0; k < kw.nodes; ++k) block.connectivity.push_back(vertex_index());
     block.tags.push_back(integer("element reference"));
   }
 }
 
-void MeditReader::vertex_list(std::vector<std::int32_t>& out) {
-  need_vertices("a vertex list");
+// The list is a set of pinned vertices: one already listed is not added
+// again, so that repeated sections, or a vertex repeated within one, write
+// back once.
+void MeditReader::vertex_list(const char* keyword, std::vector<std::int32_t>& out,
+                              std::vector<std::uint8_t>& listed) {
+  need_vertices(keyword);
   const std::size_t n = count("number of vertices in the list");
-  out.reserve(capped(n));
-  for (std::size_t i = 0; i < n; ++i) out.push_back(vertex_index());
+  reserve_first(out, capped(n));
+  listed.resize(mesh_.num_nodes(), 0);  // once: a second Vertices is refused
+  for (std::size_t i = 0; i < n; ++i) {
+    const index_t v = vertex_index();
+    if (listed[static_cast<std::size_t>(v)]) continue;
+    listed[static_cast<std::size_t>(v)] = 1;
+    out.push_back(v);
+  }
 }
 
 void MeditReader::kept(const medit::KeptKeyword& kw) {
@@ -172,8 +223,9 @@ void MeditReader::string_section(const char* keyword) {
 void MeditReader::section(const std::string& keyword) {
   if (same_keyword(keyword, "Vertices")) return vertices();
   if (same_keyword(keyword, "Tetrahedra")) return tetrahedra();
-  if (same_keyword(keyword, "RequiredVertices")) return vertex_list(mesh_.extras.required_nodes);
-  if (same_keyword(keyword, "Corners")) return vertex_list(mesh_.extras.corner_nodes);
+  if (same_keyword(keyword, "RequiredVertices"))
+    return vertex_list("RequiredVertices", mesh_.extras.required_nodes, required_listed_);
+  if (same_keyword(keyword, "Corners")) return vertex_list("Corners", mesh_.extras.corner_nodes, corners_listed_);
   for (const medit::ElementKeyword& kw : medit::kElementKeywords)
     if (same_keyword(keyword, kw.keyword)) return elements(kw);
   for (const medit::KeptKeyword& kw : medit::kKeptKeywords)
@@ -187,18 +239,32 @@ void MeditReader::section(const std::string& keyword) {
   lines_.fail("unknown or unsupported Medit keyword " + quoted_token(keyword));
 }
 
+// Fails on a second section of a keyword that comes once (see the top of
+// the file), saying why.
+void MeditReader::check_once(const std::string& keyword) const {
+  for (const std::string& s : seen_) {
+    if (!same_keyword(s, keyword)) continue;
+    const bool of_vertices = same_keyword(keyword, "Vertices");
+    const bool of_header = same_keyword(keyword, "Dimension") || same_keyword(keyword, "MeshVersionFormatted");
+    lines_.fail("a second " + keyword + " section: " +
+                (of_vertices ? "the elements' vertex indices would be ambiguous"
+                 : of_header ? "the header comes once, at the start of the file"
+                             : "only element sections, RequiredVertices and Corners may repeat"));
+  }
+}
+
 TetMesh MeditReader::read(const std::string& source) {
   header();
+  seen_ = {"MeshVersionFormatted", "Dimension"};
   while (!lines_.at_end()) {
     const std::string keyword(lines_.next_token("a keyword"));
     if (same_keyword(keyword, "End")) break;
-    for (const std::string& s : seen_)
-      if (same_keyword(s, keyword)) lines_.fail("a second " + keyword + " section");
-    seen_.push_back(keyword);
-    section(keyword);
+    check_once(keyword);
+    section(keyword);  // throws on a word that is no keyword: seen_ holds sections only
+    if (!may_repeat(keyword)) seen_.push_back(keyword);
   }
   if (!has_vertices_) lines_.fail("no Vertices section");
-  if (!has_tets_) lines_.fail("no Tetrahedra: a volume mesh is needed");
+  if (mesh_.tets.empty()) lines_.fail("no Tetrahedra: a volume mesh is needed");
 
   // `fixed` stays empty when nothing pins a node.
   const auto pin = [&](const std::vector<index_t>& nodes) {

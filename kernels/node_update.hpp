@@ -330,6 +330,14 @@ TS_HD NodeMove<Real> decide_move(Vec3<Real> p, Vec3<Real> target, Real old_min, 
   return mv;
 }
 
+// Whether an evaluated move is made: accepted, and going somewhere. A move
+// of length zero changes nothing, and counting it would keep a sweep of such
+// moves from ever stopping the run for want of moves.
+template <class Real>
+TS_HD bool takes_move(const NodeMove<Real>& mv) {
+  return mv.accept && mv.displacement2 > Real(0);
+}
+
 // One node, start to finish, on one thread (the CPU and SingleBlock).
 template <class Real, bool kAdaptive, class Coords>
 TS_HD NodeMove<Real> evaluate_node(const MeshView& m, const Coords& xyz, index_t i) {
@@ -356,6 +364,32 @@ TS_HD bool tet_conflict_ok(Real q_before, Real q_after, Real max_mover_old_min) 
 // this many passes; if the last one still found a conflict, every move of
 // the sweep is reverted, which is always safe. Cascades that deep are rare.
 inline constexpr int kMaxRepairPasses = 8;
+
+// Whether repair pass `pass` (from 0) is the last, which undoes every move
+// of the sweep if it still finds a conflict.
+TS_HD bool repair_undoes_sweep(int pass) { return pass == kMaxRepairPasses - 1; }
+
+// A repair pass's step for node i: puts it back where it was (`before`) when
+// it moved and a conflict flagged it, or when the pass undoes the sweep;
+// clears its flag. Returns whether it was reverted.
+template <class Coords>
+TS_HD bool revert_if_flagged(index_t i, const Coords& before, const Coords& after, std::uint8_t* moved,
+                             std::uint8_t* revert, bool undo_all) {
+  const bool back = moved[i] && (revert[i] || undo_all);
+  if (back) {
+    after.set(i, before.get(i));
+    moved[i] = 0;
+  }
+  revert[i] = 0;
+  return back;
+}
+
+// Squared length of node i's move that survived the repair (0 when it did
+// not move).
+template <class Coords>
+TS_HD double surviving_disp2(index_t i, const Coords& before, const Coords& after, const std::uint8_t* moved) {
+  return moved[i] ? static_cast<double>(norm2(after.get(i) - before.get(i))) : 0.0;
+}
 
 // Checks one tet after a Jacobi sweep (`before`/`after` are the two
 // buffers): true when it has two or more movers and objects to the result.

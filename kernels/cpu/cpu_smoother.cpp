@@ -40,7 +40,7 @@ SweepStats sweep_in_place(const MeshView& view, AosCoords<double> xyz, const ind
     const index_t i = nodes[k];
     if (!movable[i]) continue;
     const NodeMove<double> mv = evaluate_node<double, kAdaptive>(view, xyz, i);
-    if (mv.accept && mv.displacement2 > 0) {
+    if (takes_move(mv)) {
       xyz.set(i, mv.target);
       ++accepted;
       max_disp2 = std::max(max_disp2, mv.displacement2);
@@ -66,7 +66,7 @@ SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, s
     moved[i] = 0;
     if (!movable[i]) continue;
     const NodeMove<double> mv = evaluate_node<double, kAdaptive>(view, from, i);
-    if (mv.accept && mv.displacement2 > 0) {
+    if (takes_move(mv)) {
       to.set(i, mv.target);
       moved[i] = 1;
       old_min[i] = mv.old_min;
@@ -88,16 +88,10 @@ SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, s
       }
       if (objecting == 0) break;
       // The last pass found conflicts it may not have cleared: undo the sweep.
-      const bool undo_all = pass == kMaxRepairPasses - 1;
+      const bool undo_all = repair_undoes_sweep(pass);
       std::int64_t reverted = 0;
 #pragma omp parallel for num_threads(threads) if (threads > 1) schedule(static) reduction(+ : reverted)
-      for (index_t i = 0; i < n; ++i) {
-        if (!moved[i] || !(revert[i] || undo_all)) continue;
-        to.set(i, from.get(i));
-        moved[i] = 0;
-        revert[i] = 0;
-        ++reverted;
-      }
+      for (index_t i = 0; i < n; ++i) reverted += revert_if_flagged(i, from, to, moved.data(), revert.data(), undo_all);
       reverted_total += reverted;
     }
   }
@@ -108,7 +102,7 @@ SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, s
   for (index_t i = 0; i < n; ++i) {
     if (!moved[i]) continue;
     ++accepted;
-    max_disp2 = std::max(max_disp2, norm2(to.get(i) - from.get(i)));
+    max_disp2 = std::max(max_disp2, surviving_disp2(i, from, to, moved.data()));
   }
   return {accepted, max_disp2};
 }

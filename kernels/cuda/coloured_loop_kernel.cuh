@@ -198,7 +198,7 @@ __global__ void __launch_bounds__(kColouredBlock<Real>, 1)
         mv = judge_move_with_head<Real, G>(m, xyz, cached, i, p, target, head, lane, active, keep);
       else
         mv = judge_move_group<Real, kAdaptive, G>(m, xyz, i, p, target, lane, active, cached, mask, keep);
-      const bool moves = active && mv.accept && mv.displacement2 > Real(0);
+      const bool moves = active && takes_move(mv);
       if (moves) {
         // An accepted move computed every round. tet_quality_with never
         // reads node i's stored position, so lane 0 may overwrite it

@@ -27,27 +27,6 @@ __device__ __forceinline__ bool flag_objecting_tet(const index_t* tets, index_t 
   return true;
 }
 
-// Puts node i back where it was when flagged (or when undoing the whole
-// sweep); clears its flag. Returns whether it was reverted.
-template <class Coords>
-__device__ __forceinline__ bool revert_if_flagged(index_t i, const Coords& before, const Coords& after,
-                                                  std::uint8_t* moved, std::uint8_t* revert, bool undo_all) {
-  const bool back = moved[i] && (revert[i] || undo_all);
-  if (back) {
-    after.set(i, before.get(i));
-    moved[i] = 0;
-  }
-  revert[i] = 0;
-  return back;
-}
-
-// Squared length of node i's surviving move (0 when it did not move).
-template <class Coords>
-__device__ __forceinline__ double surviving_disp2(index_t i, const Coords& before, const Coords& after,
-                                                  const std::uint8_t* moved) {
-  return moved[i] ? static_cast<double>(norm2(after.get(i) - before.get(i))) : 0.0;
-}
-
 // Form A conflict repair, pass `pass` (see node_update.hpp): flag the movers
 // of objecting tets. Skipped when the previous pass found nothing.
 template <class Real, class Coords>
@@ -63,7 +42,7 @@ template <class Coords>
 __global__ void repair_apply_kernel(index_t n, Coords before, Coords after, std::uint8_t* moved, std::uint8_t* revert,
                                     SweepState* st, SweepCounters c, int pass) {
   if (st->done || !c.repair_found[pass]) return;
-  const bool undo_all = pass == kMaxRepairPasses - 1;
+  const bool undo_all = repair_undoes_sweep(pass);
   const index_t i = static_cast<index_t>(blockIdx.x * blockDim.x + threadIdx.x);
   unsigned reverted = i < n && revert_if_flagged(i, before, after, moved, revert, undo_all);
   warp_atomic_add(&st->reverted, reverted);

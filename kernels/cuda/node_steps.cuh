@@ -18,7 +18,7 @@ namespace tetsmooth::cuda {
 template <class Real, Form F, class Coords>
 __device__ __forceinline__ bool apply_move(const NodeMove<Real>& mv, const Coords& read, const Coords& write, index_t i,
                                            Real* old_min, std::uint8_t* moved, double& disp2) {
-  const bool take = mv.accept && mv.displacement2 > Real(0);
+  const bool take = takes_move(mv);
   if (F == Form::A) {
     write.set(i, take ? mv.target : read.get(i));
     moved[i] = take;

@@ -54,7 +54,7 @@ __global__ void __launch_bounds__(kSingleBlockThreads)
         __syncthreads();
         const int found = s_flag;
         if (!found) break;
-        const bool undo_all = pass == kMaxRepairPasses - 1;
+        const bool undo_all = repair_undoes_sweep(pass);
         unsigned reverted = 0;
         for (index_t i = threadIdx.x; i < n; i += blockDim.x)
           reverted += revert_if_flagged(i, read, write, moved, revert, undo_all);

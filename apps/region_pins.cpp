@@ -5,12 +5,12 @@
 namespace tetsmooth::cli {
 
 RegionInterfacePins::RegionInterfacePins(TetMesh& mesh) : mesh_(mesh), file_pins_(mesh.fixed) {
-  const std::vector<std::uint8_t> interface = region_interface_nodes(mesh);
-  for (std::size_t i = 0; i < interface.size(); ++i) {
-    if (!interface[i] || (!mesh.fixed.empty() && mesh.fixed[i])) continue;
+  const std::vector<std::uint8_t> pinned = region_interface_nodes(mesh);
+  for (std::size_t i = 0; i < pinned.size(); ++i) {
+    if (pinned[i] == kNotPinned || (!mesh.fixed.empty() && mesh.fixed[i])) continue;
     if (mesh.fixed.empty()) mesh.fixed.assign(mesh.num_nodes(), 0);
     mesh.fixed[i] = 1;
-    ++added_;
+    ++(pinned[i] == kOnInterface ? added_interface_ : added_features_);
   }
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The command line keeps material interfaces in place: while a
 // RegionInterfacePins lives, the nodes on faces between tets of different
-// regions (region_interface_nodes) are pinned in mesh.fixed, as if the file
-// had pinned them; it puts back the file's own pins when it ends, so that
-// the written file carries only what was read.
+// regions or Gmsh volumes, and the nodes Gmsh classified on points, curves
+// and surfaces inside the mesh (region_interface_nodes), are pinned in
+// mesh.fixed, as if the file had pinned them; it puts back the file's own
+// pins when it ends, so that the written file carries only what was read.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -19,13 +20,16 @@ class RegionInterfacePins {
   RegionInterfacePins(const RegionInterfacePins&) = delete;
   RegionInterfacePins& operator=(const RegionInterfacePins&) = delete;
 
-  // Interface nodes that the file had not pinned already.
-  std::size_t added() const { return added_; }
+  // Nodes that the file had not pinned already: on interfaces (kOnInterface),
+  // and on Gmsh features inside the mesh (kOnGmshFeature, on no interface).
+  std::size_t added_on_interfaces() const { return added_interface_; }
+  std::size_t added_on_features() const { return added_features_; }
 
  private:
   TetMesh& mesh_;
   std::vector<std::uint8_t> file_pins_;
-  std::size_t added_ = 0;
+  std::size_t added_interface_ = 0;
+  std::size_t added_features_ = 0;
 };
 
 }  // namespace tetsmooth::cli

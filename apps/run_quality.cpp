@@ -21,7 +21,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
   for (const std::string& w : input_warnings(mesh, record.mesh, c.input)) console.warn(w);
 
   // The topology tells which tets smoothing could change (min_movable), with
-  // material interfaces pinned as `smooth` pins them.
+  // material interfaces and Gmsh features pinned as `smooth` pins them.
   const Topology topology = on_input_mesh(c.input, [&] {
     const RegionInterfacePins pins(mesh);
     return build_topology(mesh);

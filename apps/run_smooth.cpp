@@ -156,9 +156,12 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   if (style != ProgressLine::Style::Off) options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
   try {
     const RegionInterfacePins pins(mesh);
-    if (pins.added() > 0)
-      console.note(with_thousands(pins.added()) + " nodes on interfaces between regions (tets of different tags) "
-                   "stay fixed");
+    if (pins.added_on_interfaces() > 0)
+      console.note(with_thousands(pins.added_on_interfaces()) +
+                   " nodes on interfaces between regions (tets of different tags or Gmsh volumes) stay fixed");
+    if (pins.added_on_features() > 0)
+      console.note(with_thousands(pins.added_on_features()) +
+                   " nodes on Gmsh points, curves or surfaces inside the mesh stay fixed");
     record.result = on_input_mesh(c.input, [&] { return smooth(mesh, options, record.device); });
   } catch (...) {
     progress.finish();

@@ -4,6 +4,7 @@
 // errors that name file:line or file, byte N.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -143,8 +144,11 @@ TEST(GmshIo, ReadsFilesWrittenByGmsh) {
   const TetMesh ascii = read_gmsh_file(testing::data_path("gmsh_box_ascii41.msh"));
   const TetMesh binary = read_gmsh_file(testing::data_path("gmsh_box_binary41.msh"));
   const TetMesh binary22 = read_gmsh_file(testing::data_path("gmsh_box_binary22.msh"));
+  // Mesh.SaveParametric: MSH 2.2 gives the nodes in $ParametricNodes.
+  const TetMesh param22 = read_gmsh_file(testing::data_path("gmsh_box_param22.msh"));
+  const TetMesh param_binary22 = read_gmsh_file(testing::data_path("gmsh_box_param_binary22.msh"));
   ASSERT_GT(ascii.num_tets(), 0u);
-  for (const TetMesh* other : {&binary, &binary22}) {
+  for (const TetMesh* other : {&binary, &binary22, &param22, &param_binary22}) {
     EXPECT_EQ(other->tets, ascii.tets);
     EXPECT_EQ(other->extras.node_tags, ascii.extras.node_tags);
     EXPECT_EQ(other->extras.tet_tags, ascii.extras.tet_tags);
@@ -158,6 +162,20 @@ TEST(GmshIo, ReadsFilesWrittenByGmsh) {
   EXPECT_EQ(ascii.extras.blocks[0].tags, std::vector<int>(ascii.extras.blocks[0].tags.size(), 3));
   EXPECT_EQ(binary.extras.node_entity_tags, ascii.extras.node_entity_tags);
   EXPECT_EQ(*raw_section(binary, "$PhysicalNames"), *raw_section(ascii, "$PhysicalNames"));
+  // The parametric coordinates of the nodes on curves and surfaces are
+  // dropped with the note MSH 4.1's get; so is their classification.
+  const auto& dims = ascii.extras.node_entity_dims;
+  const auto on_curves_and_surfaces = std::count_if(dims.begin(), dims.end(), [](int d) { return d == 1 || d == 2; });
+  ASSERT_GT(on_curves_and_surfaces, 0);
+  for (const TetMesh* param : {&param22, &param_binary22}) {
+    EXPECT_EQ(param->extras.read_notes,
+              (std::vector<std::string>{"the parametric coordinates of " + std::to_string(on_curves_and_surfaces) +
+                                        " nodes on curves and surfaces are not kept: the nodes that move would "
+                                        "leave them stale"}));
+    EXPECT_TRUE(param->extras.node_entity_dims.empty());
+    EXPECT_EQ(param->extras.tet_entity_tags, binary22.extras.tet_entity_tags);
+  }
+  EXPECT_TRUE(binary22.extras.read_notes.empty());
 }
 
 // tests/data/gmsh_partitioned41.msh: the bipyramid as one volume in two
@@ -471,6 +489,76 @@ TEST(GmshIo, ParametricCoordinatesAreNotedAndDropped) {
   EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
 }
 
+// MSH 2.2 with Mesh.SaveParametric (Gmsh's MVertex::writeMSH2): the nodes
+// come in $ParametricNodes, each with the dimension and tag of its entity
+// and then u on a curve, u v on a surface, nothing on a point or in a
+// volume. They are the nodes; the rest is dropped with 4.1's note, and the
+// written file has a plain $Nodes.
+const char* kParametric22 =
+    "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+    "$ParametricNodes\n5\n"
+    "10 0 0 0 0 3\n"
+    "20 1 0 0 1 2 0.5\n"
+    "30 0 1 0 2 1 0.25 0.75\n"
+    "40 0 0 1 3 1\n"
+    "50 0 0 -1 3 1\n"
+    "$EndParametricNodes\n"
+    "$Elements\n2\n1 4 2 7 1 10 20 30 40\n2 4 2 7 1 10 30 20 50\n$EndElements\n";
+
+void expect_parametric22_read(const TetMesh& mesh) {
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{10, 20, 30, 40, 50}));
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 2, 1, 4}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 1}));
+  EXPECT_TRUE(mesh.extras.node_entity_dims.empty());
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"the parametric coordinates of 2 nodes on curves and surfaces are not kept: "
+                                      "the nodes that move would leave them stale"}));
+}
+
+TEST(GmshIo, Msh22ParametricNodesAreTheNodes) {
+  const TetMesh mesh = read_text(kParametric22);
+  expect_parametric22_read(mesh);
+  for (MshFlavour flavour : {MshFlavour::V22Ascii, MshFlavour::V41Ascii, MshFlavour::V41Binary}) {
+    const std::string text = write_text(mesh, flavour);
+    EXPECT_EQ(text.find("Parametric"), std::string::npos);
+    EXPECT_NE(text.find("$Nodes\n"), std::string::npos);
+    const TetMesh back = read_text(text);
+    EXPECT_EQ(back.xyz, mesh.xyz);
+    EXPECT_EQ(back.tets, mesh.tets);
+    EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
+    EXPECT_TRUE(back.extras.read_notes.empty());
+  }
+
+  // Binary: the tag as an int, three doubles, the dimension and tag as
+  // ints, then the parametric doubles.
+  std::string binary = "$MeshFormat\n2.2 1 8\n";
+  const auto put = [&](auto value) { binary.append(reinterpret_cast<const char*>(&value), sizeof value); };
+  put(std::int32_t{1});
+  binary += "\n$EndMeshFormat\n$ParametricNodes\n5\n";
+  const double corners[5][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0, -1}};
+  const std::int32_t entity[5][2] = {{0, 3}, {1, 2}, {2, 1}, {3, 1}, {3, 1}};
+  for (std::int32_t n = 0; n < 5; ++n) {
+    put(10 * (n + 1));
+    for (double c : corners[n]) put(c);
+    put(entity[n][0]);
+    put(entity[n][1]);
+    for (std::int32_t k = 0; k < (entity[n][0] == 3 ? 0 : entity[n][0]); ++k) put(0.125 * (k + 1));
+  }
+  binary += "\n$EndParametricNodes\n$Elements\n2\n";
+  for (std::int32_t v : {4, 2, 2, 1, 7, 1, 10, 20, 30, 40, 2, 7, 1, 10, 30, 20, 50}) put(v);
+  binary += "\n$EndElements\n";
+  expect_parametric22_read(read_text(binary));
+
+  // MSH 4.1 has no such section (its node blocks say whether they are
+  // parametric): one there is skipped like any unknown section.
+  const std::string in41 =
+      replaced(kMinimal, "$Elements\n", "$ParametricNodes\n1\n1 0 0 0 0 1\n$EndParametricNodes\n$Elements\n");
+  EXPECT_EQ(read_text(in41).extras.read_notes,
+            (std::vector<std::string>{"$ParametricNodes section skipped; it will not be in the written file"}));
+}
+
 TEST(GmshIo, HugeSparseNodeTagsAreKept) {
   std::string text = kMinimal;
   text = replaced(text, "1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n", "1 4 7 1000000000000\n3 1 0 4\n1000000000000\n7\n3\n4\n");
@@ -600,6 +688,27 @@ TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
   const std::string swapped = read_error(std::string(kMinimal).substr(std::string(kMinimal).find("$Elements")) +
                                          std::string(kMinimal).substr(0, std::string(kMinimal).find("$Elements")));
   EXPECT_NE(swapped.find("not a Gmsh MSH file"), std::string::npos) << swapped;
+
+  const std::string nodes =
+      "$ParametricNodes\n5\n10 0 0 0 0 3\n20 1 0 0 1 2 0.5\n30 0 1 0 2 1 0.25 0.75\n"
+      "40 0 0 1 3 1\n50 0 0 -1 3 1\n$EndParametricNodes\n";
+  const BadText parametric[] = {
+      {"30 0 1 0 2 1", "30 0 1 0 4 1", "t.msh:8:", "entity dimension 4 is not 0, 1, 2 or 3"},
+      // A value too many or too few shifts the values after it: a real
+      // number or a section end turns up where an integer belongs.
+      {"0.25 0.75\n", "0.25 0.75 0.5\n", "t.msh:8:", "expected an integer node tag, found '0.5'"},
+      {"20 1 0 0 1 2 0.5\n", "20 1 0 0 1 2\n", "t.msh:8:", "expected an integer entity tag, found '0.25'"},
+      {"50 0 0 -1 3 1\n", "50 0 0 -1\n", "t.msh:11:",
+       "expected an integer entity dimension, found '$EndParametricNodes'"},
+      {"$Elements\n", "$Nodes\n0\n$EndNodes\n$Elements\n", "t.msh:12:",
+       "a second node section: $Nodes after $Nodes or $ParametricNodes"},
+      {nodes.c_str(), "", "t.msh:4:", "$Elements before $Nodes or $ParametricNodes"},
+  };
+  for (const BadText& c : parametric) {
+    const std::string message = read_error(replaced(kParametric22, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
 }
 
 TEST(GmshIo, BadPartitionedEntitiesNameFileAndLine) {
@@ -824,6 +933,89 @@ TEST(GmshIo, OneTagFormatsNoteTheGroupsTheyDrop) {
   for (const char* name : {"out.msh", "out.tsm"})
     for (const std::string& loss : output_losses(mesh, name))
       EXPECT_EQ(loss.find("physical groups"), std::string::npos) << name << ": " << loss;
+}
+
+// cube_grid(2) in MSH 4.1 on volume 1 (physical 7), the centre node (1, 1, 1)
+// classified on point 1, as Gmsh classifies a point embedded in a volume
+// (gmsh.model.mesh.embed); with `declared`, $Entities declares the point.
+std::string embedded_point41(bool declared) {
+  const TetMesh grid = testing::cube_grid(2);
+  std::ostringstream s;
+  s << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n" << (declared ? 1 : 0) << " 0 0 1\n"
+    << (declared ? "1 1 1 1 0\n" : "") << "1 0 0 0 2 2 2 1 7 0\n$EndEntities\n";
+  std::string volume_tags, volume_xyz, centre;
+  for (std::size_t i = 0; i < grid.num_nodes(); ++i) {
+    std::ostringstream xyz;
+    xyz << grid.xyz[3 * i] << ' ' << grid.xyz[3 * i + 1] << ' ' << grid.xyz[3 * i + 2] << '\n';
+    if (xyz.str() == "1 1 1\n") {
+      centre = std::to_string(i + 1) + '\n' + xyz.str();
+    } else {
+      volume_tags += std::to_string(i + 1) + '\n';
+      volume_xyz += xyz.str();
+    }
+  }
+  s << "$Nodes\n2 27 1 27\n3 1 0 26\n" << volume_tags << volume_xyz << "0 1 0 1\n" << centre << "$EndNodes\n";
+  s << "$Elements\n1 " << grid.num_tets() << " 1 " << grid.num_tets() << "\n3 1 4 " << grid.num_tets() << '\n';
+  for (std::size_t t = 0; t < grid.num_tets(); ++t) {
+    s << t + 1;
+    for (int k = 0; k < 4; ++k) s << ' ' << grid.tets[4 * t + k] + 1;
+    s << '\n';
+  }
+  s << "$EndElements\n";
+  return s.str();
+}
+
+// Nodes that Gmsh's entities keep in place are a loss where the output
+// drops what tells of them: the classification of an embedded point (all
+// but MSH 4.1, and MSH 4.1 too when it cannot declare the point), the
+// entity tags of two volumes in one physical group (all but MSH).
+TEST(GmshIo, OutputLossesCountNodesThatGmshEntitiesPin) {
+  const std::string feature =
+      " that Gmsh's entities keep in place (between volumes of one physical group, or on points, curves or surfaces "
+      "inside the mesh) will not be pinned in the ";
+  const auto losses_of = [&](const TetMesh& mesh, const char* name, MeshFormat format) {
+    std::vector<std::string> found;
+    for (const std::string& loss : output_losses(mesh, name, format))
+      if (loss.find(feature) != std::string::npos) found.push_back(loss);
+    return found;
+  };
+  const TetMesh point = read_text(embedded_point41(true));
+  ASSERT_EQ(point.extras.node_entity_dims.size(), 27u);
+  EXPECT_TRUE(losses_of(point, "out.msh", MeshFormat::Auto).empty());
+  EXPECT_EQ(losses_of(point, "out.msh", MeshFormat::Msh22),
+            (std::vector<std::string>{"1 node" + feature + "msh22 output, which does not keep the nodes' entities, "
+                                      "so a later run may move them"}));
+  for (const char* name : {"out.vtu", "out.vtk", "out.mesh", "out.node", "out.tsm"})
+    EXPECT_EQ(losses_of(point, name, MeshFormat::Auto),
+              (std::vector<std::string>{"1 node" + feature + format_name(format_from_path(name)) +
+                                        " output, which has no place for Gmsh entities, so a later run may move "
+                                        "them"}))
+        << name;
+  // MSH 4.1 output keeps the classification where it can declare the point.
+  const TetMesh back = read_text(write_text(point, MshFlavour::V41Ascii));
+  EXPECT_EQ(back.extras.node_entity_dims, point.extras.node_entity_dims);
+  const TetMesh undeclared = read_text(embedded_point41(false));
+  EXPECT_EQ(losses_of(undeclared, "out.msh", MeshFormat::Auto).size(), 1u);
+
+  // cube_grid(4) on volumes 1 (x < 2) and 2, both in physical group 7: the
+  // 9 nodes inside the plane x = 2 between them.
+  TetMesh boxes = testing::cube_grid(4);
+  for (std::size_t t = 0; t < boxes.num_tets(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 4; ++k) cx += boxes.xyz[3 * static_cast<std::size_t>(boxes.tets[4 * t + k])] / 4;
+    boxes.extras.tet_entity_tags.push_back(cx < 2 ? 1 : 2);
+  }
+  boxes.extras.tet_tags.assign(boxes.num_tets(), 7);
+  for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V22Ascii}) {
+    const TetMesh read = read_text(write_text(boxes, flavour));
+    EXPECT_EQ(read.extras.tet_entity_tags, boxes.extras.tet_entity_tags);
+    EXPECT_TRUE(losses_of(read, "out.msh", MeshFormat::Auto).empty());
+    EXPECT_TRUE(losses_of(read, "out.msh", MeshFormat::Msh22).empty());
+    EXPECT_EQ(losses_of(read, "out.vtu", MeshFormat::Auto),
+              (std::vector<std::string>{"9 nodes" + feature +
+                                        "vtu output, which has no place for Gmsh entities, so a later run may move "
+                                        "them"}));
+  }
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// MSH 2.2 $Nodes and $Elements. The binary encoding is not the ASCII one
-// written in bytes: counts stay text and elements come in typed runs.
+// MSH 2.2 $Nodes (or $ParametricNodes) and $Elements. The binary encoding is
+// not the ASCII one written in bytes: counts stay text and elements come in
+// typed runs.
 #include <algorithm>
 #include <limits>
 
@@ -70,14 +71,18 @@ const ElementType& checked_type(Source& src, int type_id) {
 }  // namespace
 
 template <class Source>
-void read_nodes_v22(Source& src, ReadState& state) {
+void read_nodes_v22(Source& src, ReadState& state, bool parametric) {
   const std::uint64_t total = src.text_count("number of nodes");
   if (total > static_cast<std::uint64_t>(std::numeric_limits<index_t>::max()))
     src.fail(std::to_string(total) + " nodes exceed the 32-bit index range");
-  const std::size_t expected = src.reservable(total, 4 + 24);
+  // A node is at least its tag and three coordinates, and in
+  // $ParametricNodes its entity's dimension and tag.
+  const std::size_t expected = src.reservable(total, 4 + 24 + (parametric ? 8 : 0));
   TetMesh& mesh = state.mesh;
+  FileExtras& extras = mesh.extras;
   mesh.xyz.reserve(3 * expected);
-  mesh.extras.node_tags.reserve(expected);
+  extras.node_tags.reserve(expected);
+  std::uint64_t parametric_nodes = 0;
   for (std::uint64_t i = 0; i < total; ++i) {
     long long tag = 0;
     if constexpr (Source::kBinary) {
@@ -86,15 +91,30 @@ void read_nodes_v22(Source& src, ReadState& state) {
     } else {
       tag = tag_value(src, "node tag");
     }
-    mesh.extras.node_tags.push_back(tag);
+    extras.node_tags.push_back(tag);
     for (int k = 0; k < 3; ++k) mesh.xyz.push_back(src.real_value("node coordinate"));
+    if (!parametric) continue;
+    // As Gmsh writes them (MVertex::writeMSH2): the dimension and tag of
+    // the entity the node is classified on, then u on a curve, u v on a
+    // surface, nothing on a point or in a volume. MSH 2.2 output has no
+    // place for the classification, and MSH 4.1 output could not always
+    // declare the entities it names, so it is read past too.
+    const int dim = src.int_value("entity dimension");
+    if (dim < 0 || dim > 3) src.fail("entity dimension " + std::to_string(dim) + " is not 0, 1, 2 or 3");
+    src.int_value("entity tag");
+    const int values = dim == 1 || dim == 2 ? dim : 0;
+    for (int k = 0; k < values; ++k) src.real_value("parametric coordinate");
+    parametric_nodes += values > 0;
   }
-  const long long repeated = state.lookup.build(mesh.extras.node_tags);
-  if (repeated >= 0) src.fail("node tag " + std::to_string(repeated) + " occurs twice in $Nodes");
+  const long long repeated = state.lookup.build(extras.node_tags);
+  if (repeated >= 0)
+    src.fail("node tag " + std::to_string(repeated) + " occurs twice in " +
+             (parametric ? "$ParametricNodes" : "$Nodes"));
+  if (parametric_nodes > 0) extras.read_notes.push_back(parametric_note(parametric_nodes));
 }
 
-template void read_nodes_v22<AsciiSource>(AsciiSource&, ReadState&);
-template void read_nodes_v22<BinarySource>(BinarySource&, ReadState&);
+template void read_nodes_v22<AsciiSource>(AsciiSource&, ReadState&, bool);
+template void read_nodes_v22<BinarySource>(BinarySource&, ReadState&, bool);
 
 void read_elements_v22(AsciiSource& src, ReadState& state) {
   const std::uint64_t total = src.size_value("number of elements");

@@ -97,9 +97,12 @@ void read_nodes_v41(Source& src, ReadState& state) {
              std::to_string(total) + " announced");
   const long long repeated = state.lookup.build(extras.node_tags);
   if (repeated >= 0) src.fail("node tag " + std::to_string(repeated) + " occurs twice in $Nodes");
-  if (parametric_nodes > 0)
-    extras.read_notes.push_back("the parametric coordinates of " + std::to_string(parametric_nodes) +
-                                " nodes on curves and surfaces are not kept: the nodes that move would leave them stale");
+  if (parametric_nodes > 0) extras.read_notes.push_back(parametric_note(parametric_nodes));
+}
+
+std::string parametric_note(std::uint64_t nodes) {
+  return "the parametric coordinates of " + std::to_string(nodes) +
+         " nodes on curves and surfaces are not kept: the nodes that move would leave them stale";
 }
 
 template <class Source>

@@ -124,11 +124,18 @@ void read_sections(Source& src, ReadState& state) {
       if (seen) src.fail("a second " + section + " section");
       seen = true;
     };
-    if (section == "$Nodes") {
-      once(state.has_nodes);
-      state.major == 4 ? gmsh::read_nodes_v41(src, state) : gmsh::read_nodes_v22(src, state);
+    if (section == "$Nodes" || (section == "$ParametricNodes" && state.major == 2)) {
+      // MSH 2.2 with Mesh.SaveParametric gives its nodes in $ParametricNodes
+      // instead (MSH 4.1 flags parametric node blocks inside $Nodes).
+      if (state.has_nodes)
+        src.fail(state.major == 2 ? "a second node section: " + section + " after $Nodes or $ParametricNodes"
+                                  : "a second $Nodes section");
+      state.has_nodes = true;
+      state.major == 4 ? gmsh::read_nodes_v41(src, state)
+                       : gmsh::read_nodes_v22(src, state, section == "$ParametricNodes");
     } else if (section == "$Elements") {
-      if (!state.has_nodes) src.fail("$Elements before $Nodes");
+      if (!state.has_nodes)
+        src.fail(state.major == 2 ? "$Elements before $Nodes or $ParametricNodes" : "$Elements before $Nodes");
       once(state.has_elements);
       state.major == 4 ? gmsh::read_elements_v41(src, state) : gmsh::read_elements_v22(src, state);
     } else if (section == "$Entities" && state.major == 4) {
@@ -285,7 +292,7 @@ void check_element_tags(FileExtras& extras, std::size_t tets) {
 template <class Source>
 TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   read_sections(src, state);
-  if (!state.has_nodes) src.fail("no $Nodes section");
+  if (!state.has_nodes) src.fail(state.major == 2 ? "no $Nodes or $ParametricNodes section" : "no $Nodes section");
   if (!state.has_elements) src.fail("no $Elements section");
   if (state.mesh.tets.empty()) src.fail("no tetrahedra (element type 4): a volume mesh is needed");
   if (state.major == 4 && (state.has_entities || state.has_partitions)) map_physicals(state);

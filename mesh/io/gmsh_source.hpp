@@ -199,10 +199,17 @@ template <class Source>
 void read_nodes_v41(Source& src, ReadState& state);
 template <class Source>
 void read_elements_v41(Source& src, ReadState& state);
+// MSH 2.2 $Nodes, or with `parametric` $ParametricNodes (Mesh.SaveParametric):
+// each node then gives the entity it is classified on, dimension and tag,
+// and up to two parametric coordinates (u on a curve, u v on a surface).
+// Both are read past, the coordinates with the note of parametric_note.
 template <class Source>
-void read_nodes_v22(Source& src, ReadState& state);
+void read_nodes_v22(Source& src, ReadState& state, bool parametric);
 void read_elements_v22(AsciiSource& src, ReadState& state);
 void read_elements_v22(BinarySource& src, ReadState& state);
+
+// The read note for parametric coordinates dropped from `nodes` nodes.
+std::string parametric_note(std::uint64_t nodes);
 
 // After an MSH 2.2 $Elements: makes the groups of elements listed once per
 // group the physical groups of their entities, in a "$Entities" raw section

@@ -188,6 +188,18 @@ WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour) {
   return plan;
 }
 
+bool keeps_node_entities(const TetMesh& mesh) {
+  const FileExtras& extras = mesh.extras;
+  if (extras.node_entity_dims.size() != mesh.num_nodes() || extras.node_entity_tags.size() != mesh.num_nodes())
+    return false;
+  try {
+    const WritePlan plan = plan_gmsh_output(mesh, MshFlavour::V41Ascii);
+    return plan.node_dims == extras.node_entity_dims && plan.node_entities == extras.node_entity_tags;
+  } catch (const OutputError&) {
+    return false;  // nothing is written at all
+  }
+}
+
 std::pair<const int*, std::size_t> v22_physicals(const WritePlan& plan, const ElementGroup& g, std::size_t e) {
   if (plan.groups_of_entities)
     if (const Entity* x = plan.entities.find(g.type->dim, g.entity[e]); x != nullptr && x->physicals.size() > 1)

@@ -63,6 +63,11 @@ struct WritePlan {
 // Throws OutputError for pass-through blocks that MSH cannot hold.
 WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour);
 
+// Whether MSH 4.1 output classifies the nodes as the mesh's
+// node_entity_dims and node_entity_tags do: it has them, and the plan keeps
+// them (every node's entity is declared in the entities written).
+bool keeps_node_entities(const TetMesh& mesh);
+
 // The physical tags element e of `g` is written with in MSH 2.2, which gives
 // an element one physical tag a line: as Gmsh does, an element of several
 // groups is written once per group, every line with the same element tag

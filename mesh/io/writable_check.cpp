@@ -10,6 +10,7 @@
 #include "mesh/topology.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
+#include "mesh/io/gmsh_write_plan.hpp"
 #include "mesh/io/medit_detail.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
@@ -69,11 +70,30 @@ std::string count_of(std::size_t n, const std::string& what) {
   return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
+bool is_msh(MeshFormat format) {
+  return format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary || format == MeshFormat::Msh22;
+}
+
+// What `format` keeps of the data that region_interface_nodes reads besides
+// the region tags: Gmsh entity tags (MSH), and the nodes' classification
+// (MSH 4.1, where the writer can declare every node's entity).
+InterfaceSources kept_sources(const TetMesh& mesh, MeshFormat format) {
+  const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
+  return {is_msh(format), msh41 && gmsh::keeps_node_entities(mesh)};
+}
+
+// Interface nodes as a run on the output would find them: the regions stay
+// apart where the format keeps them (MSH and TetGen do, MSH by renumbering
+// negative tags; .tsm not), and Gmsh's entities where it keeps those.
+std::vector<std::uint8_t> kept_interface_nodes(const TetMesh& mesh, MeshFormat format) {
+  if (format == MeshFormat::Cache) return std::vector<std::uint8_t>(mesh.num_nodes(), kNotPinned);
+  return region_interface_nodes(mesh, kept_sources(mesh, format));
+}
+
 // Pinned nodes that the format loses and that a later run would move: VTU,
 // VTK and Medit (RequiredVertices) write every pin, MSH only element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
-// an interface between regions where the format keeps the regions apart
-// (MSH and TetGen do, MSH by renumbering negative tags; .tsm not).
+// an interface where the format keeps what tells of it.
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit)
     return 0;
@@ -83,10 +103,44 @@ std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   for (std::size_t i = 0; i < mesh.fixed.size(); ++i) candidates += mesh.fixed[i] && !kept[i];
   if (candidates == 0) return 0;  // spares the topology below
   const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes());
-  const std::vector<std::uint8_t> interface =
-      format == MeshFormat::Cache ? std::vector<std::uint8_t>(mesh.num_nodes(), 0) : region_interface_nodes(mesh);
+  const std::vector<std::uint8_t> interface = kept_interface_nodes(mesh, format);
   std::size_t lost = 0;
-  for (std::size_t i = 0; i < mesh.fixed.size(); ++i) lost += mesh.fixed[i] && !kept[i] && !boundary[i] && !interface[i];
+  for (std::size_t i = 0; i < mesh.fixed.size(); ++i)
+    lost += mesh.fixed[i] && !kept[i] && !boundary[i] && interface[i] == kNotPinned;
+  return lost;
+}
+
+// Nodes that a run on this mesh keeps in place through Gmsh's entities
+// alone (on an interface between volumes of one region, or on a point,
+// curve or surface inside the mesh; region_interface_nodes) and that a run
+// on the output would move: the format drops the entity tags or the node
+// classification that tell of them. Nodes the file pins are left to
+// pins_lost, and region interfaces that .tsm loses to the note on its
+// region tags.
+std::size_t entity_pins_lost(const TetMesh& mesh, MeshFormat format) {
+  const FileExtras& e = mesh.extras;
+  const std::size_t nodes = mesh.num_nodes();
+  const auto pinned_by_file = [&](std::size_t i) { return !mesh.fixed.empty() && mesh.fixed[i]; };
+  // Cheap checks first: most meshes lose nothing here, and those spare the
+  // topology below.
+  const bool entities_lost = !is_msh(format) && tet_entities_split_regions(mesh);
+  bool classified = false;
+  if (e.node_entity_dims.size() == nodes)
+    for (std::size_t i = 0; i < nodes && !classified; ++i)
+      classified = e.node_entity_dims[i] < 3 && !pinned_by_file(i);
+  const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
+  const InterfaceSources kept_sources{is_msh(format), classified && msh41 && gmsh::keeps_node_entities(mesh)};
+  if (!entities_lost && (!classified || kept_sources.node_entities)) return 0;
+  const std::vector<std::uint8_t> all = region_interface_nodes(mesh);
+  const std::vector<std::uint8_t> kept = region_interface_nodes(mesh, kept_sources);
+  std::size_t candidates = 0;
+  for (std::size_t i = 0; i < nodes; ++i)
+    candidates += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i);
+  if (candidates == 0) return 0;
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, nodes);
+  std::size_t lost = 0;
+  for (std::size_t i = 0; i < nodes; ++i)
+    lost += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i) && !boundary[i];
   return lost;
 }
 
@@ -137,6 +191,12 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (const std::size_t lost = pins_lost(mesh, f); lost > 0)
     notes.push_back(count_of(lost, "pinned node") + " will not be pinned in the " + name +
                     " output, so a later run may move them");
+  if (const std::size_t lost = entity_pins_lost(mesh, f); lost > 0)
+    notes.push_back(count_of(lost, "node") + " that Gmsh's entities keep in place (between volumes of one " +
+                    "physical group, or on points, curves or surfaces inside the mesh) will not be pinned in the " +
+                    name + " output, " +
+                    (is_msh(f) ? "which does not keep the nodes' entities" : "which has no place for Gmsh entities") +
+                    ", so a later run may move them");
   const bool any_marker = std::any_of(e.node_markers.begin(), e.node_markers.end(), [](int m) { return m != 0; });
   if (f != MeshFormat::TetGen && f != MeshFormat::Medit && any_marker)
     notes.push_back("the node markers will not be written: " + name + " has no place for them");

@@ -23,6 +23,11 @@ void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat for
 //    element on the node, TetGen and .tsm not at all, and boundary nodes
 //    and (where the format keeps region tags) interface nodes stay fixed
 //    anyway; VTU, VTK and Medit keep every pin;
+//  * nodes that stay fixed only through Gmsh's entities (an interface
+//    between volumes of one physical group, a point, curve or surface
+//    inside the mesh: region_interface_nodes) where the format drops the
+//    entity tags (all but MSH) or the nodes' classification (all but MSH
+//    4.1) and pins none of them itself;
 //  * TetGen node markers (non-zero ones), node attributes and tet
 //    attributes (what tet_tags cannot give back);
 //  * Medit-only sections (Ridges, Normals, Identifier, ...);

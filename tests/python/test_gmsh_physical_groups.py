@@ -6,12 +6,20 @@ all its elements, and tetsmooth must read its own file back without
 duplicated tets. Formats with one tag per element warn about the groups
 they drop, and partition tags of MSH 2.2 are dropped with a warning.
 
+Geometry that no physical group sets apart stays put too: two boxes
+stacked and fragmented, both volumes in one group (3,7)=[1,2], keep the
+surface between them, from MSH 4.1, MSH 2.2 and MSH 2.2 with
+Mesh.SaveParametric (nodes in $ParametricNodes, ASCII and binary); a box
+keeps a surface and a point embedded in it (MSH 4.1, nodes classified on
+them).
+
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
 import os
 import unittest
 
 import meshio
+import numpy as np
 
 from test_cli import run
 from test_independent_readers import GmshScratchCase, gmsh_session, physical_groups
@@ -104,6 +112,105 @@ class SeveralPhysicalGroups(GmshScratchCase):
         lines = text[text.index("$Elements\n"):text.index("$EndElements")].splitlines()[2:]
         self.assertTrue(lines)
         self.assertEqual({line.split()[2] for line in lines}, {"2"})
+
+
+def nodes_of(gmsh, path):
+    """{node tag: coordinates as 24 bytes} of every node Gmsh reads in `path`:
+    equal bytes are the same doubles, bit for bit."""
+    with gmsh_session(gmsh):
+        gmsh.open(path)
+        tags, coords, _ = gmsh.model.mesh.getNodes()
+        xyz = np.asarray(coords, dtype=np.float64).reshape(-1, 3)
+        return {int(t): xyz[k].tobytes() for k, t in enumerate(tags)}
+
+
+def entity_nodes(gmsh, entities):
+    """Tags of the nodes on `entities` [(dim, tag)] of the session's model,
+    with those of their boundaries, and of those without."""
+    closed, open_ = set(), set()
+    for dim, tag in entities:
+        closed.update(int(t) for t in gmsh.model.mesh.getNodes(dim, tag, includeBoundary=True)[0])
+        open_.update(int(t) for t in gmsh.model.mesh.getNodes(dim, tag, includeBoundary=False)[0])
+    return closed, open_
+
+
+class GeometryWithinOnePhysicalGroup(GmshScratchCase):
+    """Interfaces and embedded entities that only Gmsh's entities tell of."""
+
+    SCRATCH_PREFIX = "tetsmooth_test_one_group_"
+
+    @classmethod
+    def setUpClass(cls):
+        super().setUpClass()
+        gmsh = cls.gmsh
+        cls.stacked = {}
+        with gmsh_session(gmsh):
+            gmsh.model.occ.addBox(0, 0, 0, 1, 1, 0.5)
+            gmsh.model.occ.addBox(0, 0, 0.5, 1, 1, 0.5)
+            gmsh.model.occ.fragment([(3, 1)], [(3, 2)])
+            gmsh.model.occ.synchronize()
+            gmsh.model.addPhysicalGroup(3, [1, 2], 7)
+            gmsh.option.setNumber("Mesh.MeshSizeMax", 0.12)
+            gmsh.model.mesh.generate(3)
+            lower = {t for _, t in gmsh.model.getBoundary([(3, 1)], oriented=False)}
+            upper = {t for _, t in gmsh.model.getBoundary([(3, 2)], oriented=False)}
+            shared = lower & upper
+            assert len(shared) == 1, shared
+            cls.shared, cls.shared_inside = entity_nodes(gmsh, [(2, shared.pop())])
+            for name, version, binary, parametric in [("stacked41.msh", 4.1, 0, 0), ("stacked22.msh", 2.2, 0, 0),
+                                                      ("stacked_param22.msh", 2.2, 0, 1),
+                                                      ("stacked_param_binary22.msh", 2.2, 1, 1)]:
+                gmsh.option.setNumber("Mesh.MshFileVersion", version)
+                gmsh.option.setNumber("Mesh.Binary", binary)
+                gmsh.option.setNumber("Mesh.SaveParametric", parametric)
+                cls.stacked[name] = os.path.join(cls.tmp, name)
+                gmsh.write(cls.stacked[name])
+        with gmsh_session(gmsh):
+            gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+            surface = gmsh.model.occ.addRectangle(0.25, 0.25, 0.5, 0.5, 0.5)
+            point = gmsh.model.occ.addPoint(0.5, 0.5, 0.2)
+            gmsh.model.occ.synchronize()
+            gmsh.model.mesh.embed(2, [surface], 3, 1)
+            gmsh.model.mesh.embed(0, [point], 3, 1)
+            gmsh.model.addPhysicalGroup(3, [1], 7)
+            gmsh.option.setNumber("Mesh.MeshSizeMax", 0.12)
+            gmsh.model.mesh.generate(3)
+            cls.embedded, _ = entity_nodes(gmsh, [(2, surface), (0, point)])
+            cls.with_embedded = os.path.join(cls.tmp, "embedded41.msh")
+            gmsh.write(cls.with_embedded)
+
+    def smooth_keeps(self, src, kept):
+        """Smooths `src` into MSH 4.1; returns the run after checking that the
+        nodes tagged in `kept` did not move and that others did."""
+        out = os.path.join(self.tmp, "out_" + os.path.basename(src))
+        proc = run("smooth", src, "-o", out)
+        before, after = nodes_of(self.gmsh, src), nodes_of(self.gmsh, out)
+        self.assertEqual(before.keys(), after.keys())
+        self.assertEqual({t for t in kept if after[t] != before[t]}, set())
+        self.assertGreater(sum(after[t] != before[t] for t in before), 0)
+        with open(out, "rb") as handle:
+            self.assertNotIn(b"$ParametricNodes", handle.read())
+        return proc
+
+    def test_surface_between_volumes_of_one_group_stays_put(self):
+        self.assertGreater(len(self.shared_inside), 0)
+        for name, src in self.stacked.items():
+            with self.subTest(input=name):
+                proc = self.smooth_keeps(src, self.shared)
+                self.assertIn(f"{len(self.shared)} nodes on interfaces between regions", proc.stderr)
+                self.assertEqual("parametric coordinates of" in proc.stderr, "param" in name, proc.stderr)
+                # quality counts the surface's nodes out of the movable ones.
+                report = json.loads(run("quality", src, "--json").stdout)["input"]
+                self.assertEqual(report["movable_nodes"],
+                                 report["nodes"] - report["boundary_nodes"] - len(self.shared_inside))
+
+    def test_surface_and_point_embedded_in_a_volume_stay_put(self):
+        proc = self.smooth_keeps(self.with_embedded, self.embedded)
+        self.assertIn(f"{len(self.embedded)} nodes on Gmsh points, curves or surfaces inside the mesh stay fixed",
+                      proc.stderr)
+        # A format without Gmsh's entities says what a later run may move.
+        converted = run("convert", self.with_embedded, os.path.join(self.tmp, "embedded.vtu"))
+        self.assertIn(f"{len(self.embedded)} nodes that Gmsh's entities keep in place", converted.stderr)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,8 @@
 # h100-pcie, so different boards never share a folder), or cpu-<host> for a
 # run without a GPU; --dest names the folder instead. FLOAT.json (the float
 # run) is filed beside it as bench_float.json. --logs DIR copies the GPU
-# test and sanitizer logs and device.txt of a device_run.sh output folder.
+# test and sanitizer logs, device.txt and run.txt of a device_run.sh output
+# folder.
 #
 # The tables and figures are rendered into a fresh folder first; only when
 # that succeeds do they replace the destination's result files, so a bad
@@ -39,7 +40,7 @@ if [ $# -eq 2 ]; then [ -n "$2" ] || usage; float=$(absolute "$2"); fi
 for f in "$json" ${float:+"$float"}; do
   [ -s "$f" ] || fail "$f is missing or empty (did any benchmark run?)"
 done
-log_files=(gpu_tests.log sanitizers.log device.txt)
+log_files=(gpu_tests.log sanitizers.log device.txt run.txt)
 if [ -n "$logs" ]; then
   found=0
   for f in "${log_files[@]}"; do [ ! -f "$logs/$f" ] || found=1; done

@@ -40,13 +40,13 @@ class PublishResults(unittest.TestCase):
     def test_files_the_result_with_its_tables_and_logs(self):
         logs = os.path.join(self.tmp, "out")
         os.mkdir(logs)
-        for name in ("gpu_tests.log", "sanitizers.log", "device.txt"):
+        for name in ("gpu_tests.log", "sanitizers.log", "device.txt", "run.txt"):
             self.write(os.path.join("out", name), name)
         done = publish("--dest", self.dest, "--logs", logs, SMALL, SMALL)
         self.assertEqual(done.returncode, 0, done.stderr)
         present = set(os.listdir(self.dest))
         for name in ("bench_smooth.json", "bench_float.json", "tables.md", "table3.csv", "gpu_tests.log",
-                     "sanitizers.log", "device.txt"):
+                     "sanitizers.log", "device.txt", "run.txt"):
             self.assertIn(name, present)
         self.assertTrue(any(name.startswith("fig") for name in present), present)
 

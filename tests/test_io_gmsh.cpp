@@ -569,6 +569,34 @@ TEST(GmshIo, HugeSparseNodeTagsAreKept) {
   EXPECT_EQ(read_text(write_text(mesh, MshFlavour::V41Binary)).extras.node_tags, mesh.extras.node_tags);
 }
 
+// The $Nodes header's smallest and largest node tags are not relied on:
+// the tag lookup is built from the tags the blocks hold, so a header range
+// that is wrong (hand-edited, or from a writer that leaves it 0 0) neither
+// loses nodes nor sizes anything. Tag 900 of 4 nodes takes the lookup's
+// table by tag, tag 5000 its sorted list; the binary reader is checked
+// with the range zeroed in a file the writer made.
+TEST(GmshIo, NodeTagRangeInTheNodesHeaderIsNotReliedOn) {
+  for (const std::string last : {"900", "5000"}) {
+    for (const std::string range : {"1 4", "0 0", "3 2"}) {
+      std::string text = replaced(kMinimal, "1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n",
+                                  "1 4 " + range + "\n3 1 0 4\n1\n" + last + "\n3\n2\n");
+      text = replaced(text, "1 1 2 3 4\n", "1 1 " + last + " 3 2\n");
+      const TetMesh mesh = read_text(text);
+      EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{1, std::stoll(last), 3, 2})) << last << ", " << range;
+      EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3})) << last << ", " << range;
+
+      std::string binary = write_text(mesh, MshFlavour::V41Binary);
+      const std::size_t nodes = binary.find("$Nodes\n");
+      ASSERT_NE(nodes, std::string::npos);
+      // After the keyword: blocks, nodes, smallest and largest tag, 8 bytes each.
+      binary.replace(nodes + 7 + 16, 16, 16, '\0');
+      const TetMesh back = read_text(binary);
+      EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags) << last << ", " << range;
+      EXPECT_EQ(back.tets, mesh.tets) << last << ", " << range;
+    }
+  }
+}
+
 // Element tags that Gmsh would refuse, or that field data cannot name, are
 // replaced by 1, 2, ... on writing, with a note; the elements themselves
 // are read as they are.

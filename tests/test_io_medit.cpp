@@ -186,6 +186,20 @@ TEST(MeditIo, RepeatedVertexListsAppend) {
   EXPECT_EQ(back.fixed, mesh.fixed);
 }
 
+// Corners pin their vertices as RequiredVertices do, on their own: here
+// no other section pins a node. Written back, they stay Corners (not
+// RequiredVertices too) and stay pinned.
+TEST(MeditIo, CornersAloneFixTheirVertices) {
+  const TetMesh mesh = read_text(replaced(kMinimal, "End\n", "Corners\n2\n4 2\nEnd\n"));
+  EXPECT_EQ(mesh.extras.corner_nodes, (std::vector<std::int32_t>{3, 1}));
+  EXPECT_TRUE(mesh.extras.required_nodes.empty());
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{0, 1, 0, 1}));
+  const TetMesh back = read_text(write_text(mesh));
+  EXPECT_EQ(back.extras.corner_nodes, mesh.extras.corner_nodes);
+  EXPECT_TRUE(back.extras.required_nodes.empty());
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
 struct BadText {
   const char* from;
   const char* to;

@@ -95,6 +95,37 @@ TEST(Vtu, RoundTripKeepsTetsBlocksTagsAndFixedNodes) {
   expect_same_mesh(read_vtu(in, "mesh.vtu"), mesh);
 }
 
+// Fixed nodes that no cell pins: no pass-through block at all (so only the
+// tetsmooth:fixed array can fix them, on a mesh the cells left unfixed) and
+// one node in no cell. Both formats keep them fixed, and only them.
+TetMesh fixed_without_blocks() {
+  TetMesh mesh = testing::cube_with_centre(0.41, 0.53, 0.47);
+  mesh.xyz.insert(mesh.xyz.end(), {2, 2, 2});  // in no tet
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  mesh.fixed[2] = mesh.fixed[9] = 1;
+  return mesh;
+}
+
+TEST(Vtu, FixedNodesOutsideAnyBlockRoundTrip) {
+  const TetMesh mesh = fixed_without_blocks();
+  std::ostringstream out;
+  write_vtu(mesh, out, {});
+  std::istringstream in(out.str());
+  const TetMesh back = read_vtu(in, "mesh.vtu");
+  EXPECT_TRUE(back.extras.blocks.empty());
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
+TEST(LegacyVtk, FixedNodesOutsideAnyBlockRoundTrip) {
+  const TetMesh mesh = fixed_without_blocks();
+  std::ostringstream out;
+  write_vtk(mesh, out, {});
+  std::istringstream in(out.str());
+  const TetMesh back = read_vtk(in, "mesh.vtk");
+  EXPECT_TRUE(back.extras.blocks.empty());
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
 TEST(Vtu, RoundTripOfAJitteredGridIsBitExact) {
   const TetMesh mesh = testing::cube_grid(4, 0.3);
   std::ostringstream out;

@@ -179,6 +179,64 @@ TEST(RadiusRatio, FloatAgreesWithDoubleOnUnitScale) {
   EXPECT_NEAR(q, radius_ratio(V{0, 0, 0}, V{1, 0, 0}, V{0, 1, 0}, V{0, 0, 1}), 1e-6);
 }
 
+// The dihedral angle at edge pq, found in the plane through p normal to
+// the edge: the angle there between the projections of r - p and s - p
+// (each face's in-plane perpendicular to the edge), by atan2 so that no
+// angle loses digits near 0 or 180. Independent of the face normals that
+// min_dihedral_deg uses.
+double dihedral_at_edge_deg(V p, V q, V r, V s) {
+  const V e = q - p;
+  const auto across = [&](V x) { return (x - p) - (dot(x - p, e) / norm2(e)) * e; };
+  const V u = across(r), w = across(s);
+  return std::atan2(std::sqrt(norm2(cross(u, w))), dot(u, w)) * 180 / M_PI;
+}
+
+double smallest_dihedral_by_edges_deg(const V (&t)[4]) {
+  constexpr int kEdges[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2}, {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  double smallest = 180;
+  for (const auto& e : kEdges) smallest = std::min(smallest, dihedral_at_edge_deg(t[e[0]], t[e[1]], t[e[2]], t[e[3]]));
+  return smallest;
+}
+
+// Irregular tets (no two dihedral angles alike, the smallest well below 180
+// minus the largest), given to min_dihedral_deg in all 24 corner orders:
+// each face takes each of the four normal slots, in both orientations, so a
+// wrong normal or sign shows in some order.
+TEST(MinDihedral, MatchesAnglesMeasuredAtTheEdgesInEveryCornerOrder) {
+  const V tets[][4] = {{{0, 0, 0}, {2.3, 0.1, -0.2}, {0.4, 1.7, 0.3}, {0.9, 0.6, 1.4}},
+                       {{0.2, -0.1, 0}, {1.1, 0.05, 0.02}, {0.3, 0.9, 0.1}, {0.6, 0.35, 0.25}}};
+  for (const auto& tet : tets) {
+    const double expected = smallest_dihedral_by_edges_deg(tet);
+    ASSERT_GT(expected, 1.0);
+    int order[4] = {0, 1, 2, 3};
+    int orders = 0;
+    do {
+      EXPECT_NEAR(min_dihedral_deg(tet[order[0]], tet[order[1]], tet[order[2]], tet[order[3]]), expected, 1e-9)
+          << "corner order " << order[0] << order[1] << order[2] << order[3];
+      ++orders;
+    } while (std::next_permutation(order, order + 4));
+    EXPECT_EQ(orders, 24);
+  }
+}
+
+// A face of zero area has no normal: the tet is degenerate, 0 degrees, in
+// every corner order. Four corners on one line leave every face without a
+// normal, so there is no pair of faces to fall back on.
+TEST(MinDihedral, ZeroAreaFaceGivesZero) {
+  const V flat_face[4] = {{0, 0, 0}, {1, 2, 3}, {2, 4, 6}, {0.5, -1, 2}};  // three corners on a line
+  const V needle[4] = {{0, 0, 0}, {1, 2, 3}, {3, 6, 9}, {-2, -4, -6}};     // all four on a line
+  const V repeated[4] = {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0.2, 0.3, 0.9}};
+  const std::pair<const char*, const V*> tets[] = {
+      {"flat face", flat_face}, {"needle", needle}, {"repeated", repeated}};
+  for (const auto& [name, tet] : tets) {
+    int order[4] = {0, 1, 2, 3};
+    do {
+      EXPECT_EQ(min_dihedral_deg(tet[order[0]], tet[order[1]], tet[order[2]], tet[order[3]]), 0.0)
+          << name << ", corner order " << order[0] << order[1] << order[2] << order[3];
+    } while (std::next_permutation(order, order + 4));
+  }
+}
+
 TEST(QualitySummary, CountsAndHistogram) {
   TetMesh m = testing::cube_with_centre(0.5, 0.5, 0.05);
   const QualitySummary good = summarize_quality(testing::cube_with_centre());
@@ -213,6 +271,43 @@ TEST(QualitySummary, MinOverMovableIgnoresFrozenTets) {
   const QualitySummary corner = summarize_quality(m, movable);
   EXPECT_GT(corner.movable_tets, 0u);
   EXPECT_LT(corner.movable_tets, 12u);
+}
+
+// Two tets on a shared face, (0,1,2,3) and (0,2,1,4): the nodes 3 and 4
+// are each the last corner of one tet only, so the count must look at all
+// four corners of a tet, not just the first three.
+TEST(QualitySummary, MovableTetsCountsATetByItsLastCorner) {
+  TetMesh m;
+  m.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0.2, 0.3, 1, 0.3, 0.2, -0.8};
+  m.tets = {0, 1, 2, 3, 0, 2, 1, 4};
+  const std::vector<double> q = tet_qualities(m);
+  ASSERT_NE(q[0], q[1]);
+  for (int last : {3, 4}) {
+    std::vector<std::uint8_t> movable(5, 0);
+    movable[static_cast<std::size_t>(last)] = 1;
+    const QualitySummary s = summarize_quality(m, movable);
+    EXPECT_EQ(s.movable_tets, 1u) << "node " << last;
+    EXPECT_EQ(s.min_movable, q[last == 3 ? 0 : 1]) << "node " << last;
+  }
+}
+
+// An inverted tet has a volume, just a negative one: it is inverted and not
+// degenerate. Only a tet of zero volume (here four corners in z = 0, whose
+// volume is exactly 0 in floating point) is degenerate.
+TEST(QualitySummary, InvertedTetsAreNotDegenerate) {
+  TetMesh inverted;
+  inverted.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+  inverted.tets = {0, 2, 1, 3};
+  const QualitySummary i = summarize_quality(inverted);
+  EXPECT_EQ(i.inverted, 1u);
+  EXPECT_EQ(i.degenerate, 0u);
+
+  TetMesh flat = inverted;
+  flat.xyz[11] = 0;
+  flat.xyz[9] = flat.xyz[10] = 0.3;
+  const QualitySummary f = summarize_quality(flat);
+  EXPECT_EQ(f.inverted, 0u);
+  EXPECT_EQ(f.degenerate, 1u);
 }
 
 TEST(TetQualities, PerTetMatchesSummary) {

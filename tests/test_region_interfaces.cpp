@@ -68,6 +68,41 @@ TEST(RegionInterfaces, TetsListedUnderTwoTagsAreOneRegion) {
   EXPECT_EQ(region_interface_nodes(layers), on_plane_x_2(layers));
 }
 
+// Tets listed once per physical group whose sets of groups differ in any
+// way: in the second tag only ({1,10} | {1,20}), by one set holding the
+// other ({1} | {1,20}), in the first tag only ({5,30} | {7,30}). Each such
+// pair of layers is two regions, the plane between them an interface; the
+// same sets on both sides, in another listing order, are one region.
+TEST(RegionInterfaces, TetsListedUnderTagSetsThatDifferAnywhere) {
+  struct Sides {
+    const char* name;
+    std::vector<int> left, right;  // tags of the tets at x < 2, x > 2
+    bool interface;
+  };
+  const Sides cases[] = {{"{1,10} | {1,20}", {1, 10}, {1, 20}, true},
+                         {"{1} | {1,20}", {1}, {1, 20}, true},
+                         {"{5,30} | {7,30}", {5, 30}, {7, 30}, true},
+                         {"{1,20} | {20,1}", {1, 20}, {20, 1}, false}};
+  const TetMesh layers = two_layers();
+  const std::size_t nt = layers.num_tets();
+  for (const Sides& c : cases) {
+    TetMesh m = layers;
+    m.tets.clear();
+    m.extras.tet_tags.clear();
+    for (std::size_t listing = 0; listing < std::max(c.left.size(), c.right.size()); ++listing)
+      for (std::size_t t = 0; t < nt; ++t) {
+        const std::vector<int>& tags = layers.extras.tet_tags[t] == 1 ? c.left : c.right;
+        if (listing >= tags.size()) continue;
+        m.tets.insert(m.tets.end(), layers.tets.begin() + static_cast<std::ptrdiff_t>(4 * t),
+                      layers.tets.begin() + static_cast<std::ptrdiff_t>(4 * t + 4));
+        m.extras.tet_tags.push_back(tags[listing]);
+      }
+    const std::vector<std::uint8_t> expected =
+        c.interface ? on_plane_x_2(m) : std::vector<std::uint8_t>(m.num_nodes(), kNotPinned);
+    EXPECT_EQ(region_interface_nodes(m), expected) << c.name;
+  }
+}
+
 // Both layers in one physical group but on two Gmsh volume entities (two
 // fragmented boxes in addPhysicalGroup(3, [1, 2], 7)): the plane between
 // the volumes is an interface all the same, with or without region tags;

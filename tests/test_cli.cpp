@@ -601,6 +601,79 @@ TEST_F(CliFiles, FailedReportSaysTheMeshWasWritten) {
   EXPECT_TRUE(fs::is_regular_file(path("out.vtu")));
 }
 
+// Tets of negative signed volume (b-a).((c-a)x(d-a)), counted here rather
+// than by the library's quality summary.
+std::size_t count_inverted(const TetMesh& m) {
+  std::size_t inverted = 0;
+  for (std::size_t t = 0; t < m.num_tets(); ++t) {
+    const auto at = [&](int k, int c) { return m.xyz[3 * static_cast<std::size_t>(m.tets[4 * t + k]) + c]; };
+    double e[3][3];
+    for (int k = 0; k < 3; ++k)
+      for (int c = 0; c < 3; ++c) e[k][c] = at(k + 1, c) - at(0, c);
+    const double v6 = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                      e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                      e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+    inverted += v6 < 0;
+  }
+  return inverted;
+}
+
+// Ordinary smoothing moves a node to its neighbours' centroid without
+// looking at its star, which in a concave star (the paper's Figure 2)
+// inverts a tet. A user who asked for it must be told, on stderr and in the
+// report; adaptive smoothing of the same mesh inverts nothing and says
+// nothing of the kind.
+TEST_F(CliFiles, OrdinarySmoothingThatInvertsTetsSaysSo) {
+  write_mesh(testing::concave_star(), path("concave.vtu"));
+  const CliRun ordinary = run({"smooth", path("concave.vtu"), "-o", path("ordinary.vtu"), "--device", "cpu",
+                               "--method", "ordinary", "--report", path("ordinary.json")});
+  ASSERT_EQ(ordinary.code, kExitOk) << ordinary.err;
+  const std::size_t inverted = count_inverted(read_mesh(path("ordinary.vtu")));
+  ASSERT_GT(inverted, 0u) << "the fixture no longer inverts under ordinary smoothing";
+  const std::string warning = "ordinary smoothing inverted " + std::to_string(inverted) +
+                              " tets; --method adaptive with the coloured strategy or --form A never does";
+  EXPECT_NE(ordinary.err.find("tetsmooth: warning: " + warning + "\n"), std::string::npos) << ordinary.err;
+  nlohmann::json j;
+  std::ifstream(path("ordinary.json")) >> j;
+  EXPECT_EQ(j["warnings"], nlohmann::json::array({warning}));
+
+  const CliRun adaptive = run({"smooth", path("concave.vtu"), "-o", path("adaptive.vtu"), "--device", "cpu"});
+  ASSERT_EQ(adaptive.code, kExitOk) << adaptive.err;
+  EXPECT_EQ(count_inverted(read_mesh(path("adaptive.vtu"))), 0u);
+  EXPECT_EQ(adaptive.err.find("warning"), std::string::npos) << adaptive.err;
+}
+
+// Zero-volume tets are neither inverted nor fine: both reports count them
+// under their own name. Two flat tets (five nodes in the plane z = 3) beside
+// a cube, so the count differs from every other count of the report (no
+// inverted, unreferenced or repeated tet).
+TEST_F(CliFiles, ReportsCountDegenerateTets) {
+  TetMesh mesh = testing::cube_with_centre();
+  const index_t first = static_cast<index_t>(mesh.num_nodes());
+  const double in_plane[5][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}, {2, 0}};
+  for (const auto& p : in_plane) mesh.xyz.insert(mesh.xyz.end(), {p[0], p[1], 3.0});
+  mesh.tets.insert(mesh.tets.end(), {first, first + 1, first + 2, first + 3, first + 1, first + 4, first + 3, first + 2});
+  write_mesh(mesh, path("flat.vtu"));
+
+  const CliRun r = run({"smooth", path("flat.vtu"), "-o", path("out.vtu"), "--device", "cpu", "--report",
+                        path("report.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("2 degenerate tets (zero volume or a repeated node)"), std::string::npos) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("report.json")) >> j;
+  EXPECT_EQ(j["input"]["tets"], 14);
+  EXPECT_EQ(j["input"]["degenerate_tets"], 2);
+  EXPECT_EQ(j["input"]["inverted_tets"], 0);
+  EXPECT_EQ(j["quality"]["before"]["degenerate"], 2);
+  EXPECT_EQ(j["quality"]["after"]["degenerate"], 2);  // their nodes are all on the boundary
+
+  const CliRun q = run({"quality", path("flat.vtu"), "--json"});
+  ASSERT_EQ(q.code, kExitOk) << q.err;
+  const nlohmann::json quality = nlohmann::json::parse(q.out);
+  EXPECT_EQ(quality["input"]["degenerate_tets"], 2);
+  EXPECT_EQ(quality["quality"]["degenerate"], 2);
+}
+
 TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
   const std::string in = lattice(4);
   const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--threads", "2", "--max-iter", "50",

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/bench_counters.hpp"
+#include "run_counters.hpp"
 
 namespace tetsmooth::bench {
 namespace {
@@ -111,6 +112,47 @@ TEST(BenchCounters, PhaseTimesPerSweepOfTheTimedPhaseRun) {
   EXPECT_TRUE(phase_counter_values(four_sweeps()).empty());
   r.sweeps = 0;
   EXPECT_TRUE(phase_counter_values(r).empty());
+}
+
+// Two summaries no value of which appears in the other, so that a counter
+// filled from the wrong summary, or the wrong field, shows.
+QualitySummary summary_with(double min, double mean, std::size_t low, std::size_t inverted, std::size_t first_bin) {
+  QualitySummary s;
+  s.min = min;
+  s.mean = mean;
+  s.below_0_1 = low;
+  s.inverted = inverted;
+  for (std::size_t k = 0; k < 10; ++k) s.histogram[k] = first_bin + k;
+  return s;
+}
+
+// The quality counters are the figures' before/after comparison (Figure 13,
+// quality.csv): before must come from the input, after from the result.
+// State cannot be built in a test, so a registered benchmark fills one.
+TEST(BenchCounters, QualityCountersKeepBeforeAndAfterApart) {
+  const QualitySummary before = summary_with(-0.25, 0.5, 70, 3, 100);
+  const QualitySummary after = summary_with(0.125, 0.625, 40, 0, 200);
+  benchmark::RegisterBenchmark("QualityCountersOnly", [&](benchmark::State& state) {
+    for (auto _ : state) {
+    }
+    set_quality_counters(state, before, after);
+  })->Iterations(1);
+  const testing::CounterCapture run = testing::run_benchmarks("^QualityCountersOnly");
+  ASSERT_EQ(run.by_name.size(), 1u);
+  const testing::Counters& c = run.by_name.begin()->second;
+  EXPECT_DOUBLE_EQ(c.at("q_min_before"), -0.25);
+  EXPECT_DOUBLE_EQ(c.at("q_min_after"), 0.125);
+  EXPECT_DOUBLE_EQ(c.at("q_mean_before"), 0.5);
+  EXPECT_DOUBLE_EQ(c.at("q_mean_after"), 0.625);
+  EXPECT_DOUBLE_EQ(c.at("low_q_before"), 70);
+  EXPECT_DOUBLE_EQ(c.at("low_q_after"), 40);
+  EXPECT_DOUBLE_EQ(c.at("inverted_before"), 3);
+  EXPECT_DOUBLE_EQ(c.at("inverted_after"), 0);
+  for (int k = 0; k < 10; ++k) {
+    EXPECT_DOUBLE_EQ(c.at("hist_before_" + std::to_string(k)), 100 + k) << k;
+    EXPECT_DOUBLE_EQ(c.at("hist_after_" + std::to_string(k)), 200 + k) << k;
+  }
+  EXPECT_EQ(c.size(), 8u + 20u);
 }
 
 }  // namespace

@@ -480,6 +480,41 @@ class ExitCodes(CliTestCase):
                     self.assertEqual(handle.read(), "old\n")
                 self.assertEqual(sorted(os.listdir(folder)), ["in.vtu", "kept.vtu"])
 
+    def run_with_stdout(self, stdout, *args):
+        """Runs tetsmooth with its standard output on the open file `stdout`."""
+        return subprocess.run([BIN, *args], stdout=stdout, stderr=subprocess.PIPE, text=True, timeout=600)
+
+    def test_full_standard_output_exits_4(self):
+        """Results on a standard output that cannot take them (a full disk,
+        here /dev/full) are an output error, exit 4 as --help documents, not
+        a success whose results were lost: every command that prints to it."""
+        if not os.path.exists("/dev/full"):
+            self.skipTest("no /dev/full to fail a write")
+        out = self.path("full_out.vtu")
+        cases = [(["quality", self.good], "cannot write to standard output"),
+                 (["quality", self.good, "--json"], "cannot write to standard output"),
+                 (["--help"], "cannot write to standard output"),
+                 (["smooth", self.good, "-o", out, "-q", "--report", "-"], f"mesh was written to '{out}'"),
+                 (["smooth", self.good, "-o", out, "-q", "--report", "/dev/stdout"], "No space left on device")]
+        with open("/dev/full", "w") as full:
+            for args, fragment in cases:
+                with self.subTest(args=args):
+                    self.assert_one_error_line(self.run_with_stdout(full, *args), EXIT_OUTPUT, fragment)
+
+    def test_report_to_dev_stdout_appends_to_a_log(self):
+        """`--report /dev/stdout >> log` adds the report after what the log
+        held: the file behind /dev/stdout is opened to append, as the shell's
+        descriptor is, not truncated (nor written from its start)."""
+        log = self.write("run.log", "earlier run\n")
+        with open(log, "a") as handle:
+            proc = self.run_with_stdout(handle, "smooth", self.good, "-o", self.path("logged.vtu"), "-q",
+                                        "--report", "/dev/stdout")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        with open(log) as handle:
+            text = handle.read()
+        self.assertTrue(text.startswith("earlier run\n{"), text[:200])
+        self.assertEqual(json.loads(text[len("earlier run\n"):])["command"], "smooth")
+
     def test_cuda_without_a_gpu(self):
         out = self.path("cuda.vtu")
         proc = run("smooth", self.good, "-o", out, "--device", "cuda", check=False)

@@ -142,6 +142,28 @@ class ExitStatusTests(unittest.TestCase):
         self.assertIn("higher is better", completed.stdout)
         self.assertEqual(compare(CLEAN_SLOWER, CLEAN_BASE, "--metric", "bytes_per_s").returncode, 0)
 
+    def test_rate_verdicts_count_a_fall_as_a_slowdown(self):
+        # With the per-benchmark check off only the geometric mean decides:
+        # the slowed fixture's rates fell, so new/old < 1 is the regression
+        # for bytes_per_s (about 2.5 % here, beyond a 2 % limit), and the same
+        # ratios the other way round are an improvement.
+        only_geomean = ("--metric", "bytes_per_s", "--per-benchmark-threshold", "off", "--geomean-threshold", "0.02")
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, *only_geomean)
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        geomean, count = printed_geomean(completed.stdout)
+        self.assertAlmostEqual(geomean, math.exp(-sum(math.log(f) for f in SLOWED.values()) / count), places=3)
+        self.assertLess(geomean, 1 / 1.02)
+        self.assertIn("REGRESSION: geometric mean of ratios", completed.stdout)
+        completed = compare(CLEAN_SLOWER, CLEAN_BASE, *only_geomean)
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertGreater(printed_geomean(completed.stdout)[0], 1.02)
+        # Benchmark by benchmark likewise: only the 1.5x fall is beyond 1.3.
+        only_each = ("--metric", "bytes_per_s", "--geomean-threshold", "off", "--per-benchmark-threshold", "0.3")
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, *only_each)
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn("REGRESSION: 1 benchmark(s) slower than 1.300x: FormB/AoS/MultiBlock/5k", completed.stdout)
+        self.assertEqual(compare(CLEAN_SLOWER, CLEAN_BASE, *only_each).returncode, 0)
+
     def test_filter(self):
         completed = compare(CLEAN_BASE, CLEAN_SLOWER, "--filter", "^Serial/")
         self.assertEqual(completed.returncode, 0)
@@ -227,6 +249,38 @@ class ErrorAndMissingTests(unittest.TestCase):
         self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
         self.assertIn("FormB/AoS/Coloured/109k", completed.stdout)
 
+    def test_a_zero_in_old_is_no_baseline_and_no_crash(self):
+        # A ratio over OLD's value would divide by zero: a time of 0 (a run
+        # too short to time) or a count of 0 is listed as having no baseline.
+        old = self.result("old", [dict(bench("Serial/FormB/5k", 0.0), inverted_after=0),
+                                  dict(bench("Serial/FormA/5k", 10.0), inverted_after=2)])
+        new = self.result("new", [dict(bench("Serial/FormB/5k", 5.0), inverted_after=3),
+                                  dict(bench("Serial/FormA/5k", 10.0), inverted_after=2)])
+        for metric in ("real_time", "inverted_after"):
+            completed = compare(old, new, "--metric", metric)
+            self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+            self.assertNotIn("Traceback", completed.stderr)
+            self.assertIn(f"no usable {metric} in OLD (not compared): Serial/FormB/5k", completed.stdout)
+            self.assertEqual(printed_geomean(completed.stdout), (1.0, 1))
+        # Nothing left to compare is bad input, said in a line, not a traceback.
+        completed = compare(old, new, "--filter", "FormB")
+        self.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+        self.assertIn("no benchmark with a positive real_time", completed.stderr)
+        self.assertNotIn("Traceback", completed.stderr)
+
+    def test_a_value_lost_in_every_benchmark_fails(self):
+        # NEW ran every benchmark of OLD but none wrote the metric (no sweep
+        # anywhere): nothing is left to compare, and that is the regression
+        # (exit 1), not a wrong file (exit 2).
+        old = self.result("old", [dict(bench("FormB/AoS/Coloured/109k", 2.9), ms_per_sweep=0.16),
+                                  dict(bench("FormB/AoS/MultiBlock/109k", 1.5), ms_per_sweep=0.1)])
+        new = self.result("new", [dict(bench("FormB/AoS/Coloured/109k", 0.5), sweeps=0),
+                                  dict(bench("FormB/AoS/MultiBlock/109k", 0.4), sweeps=0)])
+        completed = compare(old, new, "--metric", "ms_per_sweep")
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertRegex(completed.stdout, r"REGRESSION: 2 benchmark\(s\) without a usable ms_per_sweep in NEW")
+        self.assertRegex(completed.stdout, r"geometric mean\s+—\s+\(0 benchmarks\)")
+
     def test_model_aliases_match(self):
         # bench_smooth --models=slope-77k names the 77k model by its generator name.
         old = self.result("old", [bench("FormB/AoS/MultiBlock/77k", 2.0)])
@@ -259,6 +313,21 @@ class ContextTests(unittest.TestCase):
         self.assertIn("warning: OLD ran the GPU families in double, NEW in float", completed.stdout)
         # CPU families run in double in both files: nothing to stop.
         self.assertEqual(compare(self.old, new, "--filter", "^Serial/").returncode, 0)
+
+    def test_copy_bandwidth_runs_in_no_gpu_precision(self):
+        # The copy benchmark moves bytes, in no precision of the smoothing:
+        # a filter that keeps it with the CPU runs compares across precisions.
+        benchmarks = [bench("Serial/FormB/5k", 10.0), bench("Memory/CopyBandwidth", 96.0),
+                      bench("FormB/AoS/MultiBlock/5k", 1.0)]
+        old = write_result(self.folder.name, "old_copy", benchmarks)
+        new = write_result(self.folder.name, "new_copy", benchmarks, gpu_precision="float")
+        completed = compare(old, new, "--filter", "^(Serial|Memory)/")
+        self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)
+        self.assertIn("Memory/CopyBandwidth", completed.stdout)
+        self.assertNotIn("precision", completed.stdout + completed.stderr)
+        self.assertEqual(compare(old, new, "--filter", "^Memory/").returncode, 0)
+        # The GPU run does: with it the check stops.
+        self.assertEqual(compare(old, new).returncode, 2)
 
     def test_unrecorded_precision_is_a_warning(self):
         completed = compare(self.old, self.new(gpu_precision=None))

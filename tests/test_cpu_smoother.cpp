@@ -3,9 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "generators/models.hpp"
+#include "kernels/node_update.hpp"
 #include "kernels/smoother.hpp"
 #include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
@@ -136,8 +142,9 @@ TEST(CpuSmoother, EachSweepKeepsTheRuleNodeByNodeAndTetByTet) {
 }
 
 TEST(CpuSmoother, ColouredFormBIsIdenticalForAnyThreadCount) {
-  TetMesh serial = testing::random_delaunay(2000, 21);
-  TetMesh threaded = serial;
+  const TetMesh input = testing::random_delaunay(2000, 21);
+  TetMesh serial = input;
+  TetMesh threaded = input;
   SmoothOptions o = options(Method::Adaptive, Form::B, 1);
   o.ordering = Ordering::Coloured;
   const SmoothResult a = smooth_cpu(serial, o);
@@ -146,7 +153,17 @@ TEST(CpuSmoother, ColouredFormBIsIdenticalForAnyThreadCount) {
   EXPECT_EQ(serial.xyz, threaded.xyz);
   EXPECT_EQ(a.sweeps, b.sweeps);
   EXPECT_EQ(a.accepted_per_sweep, b.accepted_per_sweep);
+  // The largest move is a max over threads' shares: exact whatever the split.
+  EXPECT_EQ(a.max_displacement_per_sweep, b.max_displacement_per_sweep);
   EXPECT_GT(a.num_colours, 1);
+  // Threads colour Form B without being asked (smoother.hpp): the natural
+  // order in parallel is the coloured one.
+  TetMesh natural = input;
+  o.ordering = Ordering::Natural;
+  const SmoothResult c = smooth_cpu(natural, o);
+  EXPECT_EQ(serial.xyz, natural.xyz);
+  EXPECT_EQ(a.accepted_per_sweep, c.accepted_per_sweep);
+  EXPECT_EQ(a.max_displacement_per_sweep, c.max_displacement_per_sweep);
 }
 
 TEST(CpuSmoother, FormAIsIdenticalForAnyThreadCount) {
@@ -156,6 +173,8 @@ TEST(CpuSmoother, FormAIsIdenticalForAnyThreadCount) {
   const SmoothResult b = smooth_cpu(threaded, options(Method::Adaptive, Form::A, 2));
   EXPECT_EQ(serial.xyz, threaded.xyz);
   EXPECT_EQ(a.reverted_moves, b.reverted_moves);
+  EXPECT_EQ(a.accepted_per_sweep, b.accepted_per_sweep);
+  EXPECT_EQ(a.max_displacement_per_sweep, b.max_displacement_per_sweep);
 }
 
 TEST(CpuSmoother, GivenColouringIsUsedAndChecked) {
@@ -326,6 +345,202 @@ TEST(CpuSmoother, PaperModel5kLosesPoorTets) {
               r.before.below_0_1, r.after.below_0_1,
               100.0 * (1.0 - double(r.after.below_0_1) / double(r.before.below_0_1)), r.before.mean, r.after.mean,
               r.before.min, r.after.min, r.sweeps);
+}
+
+// Nodes whose position differs between two coordinate arrays, and the
+// largest distance one went.
+std::int64_t nodes_moved(const std::vector<double>& a, const std::vector<double>& b) {
+  std::int64_t n = 0;
+  for (std::size_t i = 0; i < a.size(); i += 3) n += !std::equal(a.begin() + i, a.begin() + i + 3, b.begin() + i);
+  return n;
+}
+
+double move_length(const std::vector<double>& a, const std::vector<double>& b, std::size_t i) {
+  const double dx = b[3 * i] - a[3 * i], dy = b[3 * i + 1] - a[3 * i + 1], dz = b[3 * i + 2] - a[3 * i + 2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+double largest_move(const std::vector<double>& a, const std::vector<double>& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.size() / 3; ++i) d = std::max(d, move_length(a, b, i));
+  return d;
+}
+
+// The same over nodes [first, last).
+double largest_move_of(const std::vector<double>& a, const std::vector<double>& b, const index_t* first,
+                       const index_t* last) {
+  double d = 0;
+  for (const index_t* i = first; i != last; ++i) d = std::max(d, move_length(a, b, static_cast<std::size_t>(*i)));
+  return d;
+}
+
+// A grid with inverted tets, where Form A's movers conflict and the repair
+// puts some back (EachSweepKeepsTheRuleNodeByNodeAndTetByTet shows it).
+TetMesh grid_with_conflicts() { return testing::pushed_cube_grid(7, 0.3, 5, 5, 1.5); }
+
+// A sweep's reported largest move is the largest distance a node went in
+// it, and its accepted moves are the nodes that went anywhere, for every
+// way the CPU sweeps: Form A counts only the moves that survived the
+// repair, Form B in place, in natural order or colour by colour.
+TEST(CpuSmoother, ReportedLargestMoveIsTheLargestDistanceMoved) {
+  const TetMesh input = grid_with_conflicts();
+  std::int64_t reverted = 0;
+  for (Method method : {Method::Adaptive, Method::Ordinary})
+    for (Form form : {Form::A, Form::B})
+      for (int threads : {1, 2})
+        for (Ordering ordering : {Ordering::Natural, Ordering::Coloured}) {
+          if (form == Form::A && ordering == Ordering::Coloured) continue;  // Form A takes no order
+          SCOPED_TRACE(std::string(to_string(method)) + ", form " + to_string(form) + ", " + std::to_string(threads) +
+                       " threads, " + (ordering == Ordering::Coloured ? "coloured" : "natural"));
+          TetMesh m = input;
+          SmoothOptions o = options(method, form, threads);
+          o.ordering = ordering;
+          o.max_iterations = 1;
+          const SmoothResult r = smooth_cpu(m, o);
+          ASSERT_EQ(r.max_displacement_per_sweep.size(), 1u);
+          EXPECT_GT(r.accepted_per_sweep[0], 0);
+          EXPECT_EQ(r.accepted_per_sweep[0], nodes_moved(input.xyz, m.xyz));
+          EXPECT_DOUBLE_EQ(r.max_displacement_per_sweep[0], largest_move(input.xyz, m.xyz));
+          reverted += r.reverted_moves;
+        }
+  EXPECT_GT(reverted, 0) << "the repair must have put moves back, or Form A's count of survivors is untested";
+}
+
+// A tolerance no move reaches stops Form A, as Form B, after its first
+// sweep, and for that reason rather than the cap.
+TEST(CpuSmoother, HugeToleranceStopsAfterOneSweep) {
+  const TetMesh input = testing::cube_grid(5, 0.3, 2);
+  for (Form form : {Form::A, Form::B})
+    for (int threads : {1, 2}) {
+      TetMesh m = input;
+      SmoothOptions o = options(Method::Adaptive, form, threads);
+      o.tolerance = 1e6;
+      const SmoothResult r = smooth_cpu(m, o);
+      EXPECT_EQ(r.sweeps, 1) << "form " << to_string(form) << ", " << threads << " threads";
+      EXPECT_EQ(r.stop, StopReason::Tolerance) << "form " << to_string(form) << ", " << threads << " threads";
+      EXPECT_GT(r.accepted_per_sweep.at(0), 0);
+    }
+}
+
+// Coloured Form B sweeps one colour class after another: its largest move
+// is the largest over every class, not that of the last class swept.
+TEST(CpuSmoother, ColouredLargestMoveIsOverEveryColour) {
+  const TetMesh input = testing::cube_grid(6, 0.3, 3);
+  const Topology topo = build_topology(input);
+  const Colouring c = colour_nodes(topo.neighbours, topo.movable);
+  ASSERT_GT(c.num_colours, 1);
+  for (int threads : {1, 2}) {
+    TetMesh m = input;
+    SmoothOptions o = options(Method::Adaptive, Form::B, threads);
+    o.ordering = Ordering::Coloured;
+    o.max_iterations = 1;
+    const SmoothResult r = smooth_cpu(m, o, &c);
+    const int last = c.num_colours - 1;
+    const double in_last = largest_move_of(input.xyz, m.xyz, c.classes.row_begin(last), c.classes.row_end(last));
+    const double overall = largest_move(input.xyz, m.xyz);
+    ASSERT_LT(in_last, overall) << "the largest move must lie outside the last class for this to test anything";
+    EXPECT_DOUBLE_EQ(r.max_displacement_per_sweep.at(0), overall) << threads << " threads";
+  }
+}
+
+// Form B colours its nodes when it runs in parallel (natural order cannot
+// be) or when asked to; Form A and serial natural Form B do not, and report
+// no colours.
+TEST(CpuSmoother, ColoursWhereFormBRunsInParallelOrAsks) {
+  const TetMesh input = testing::cube_grid(4, 0.2, 1);
+  const auto run = [&](Form form, int threads, Ordering ordering) {
+    TetMesh m = input;
+    SmoothOptions o = options(Method::Adaptive, form, threads);
+    o.ordering = ordering;
+    o.max_iterations = 1;
+    return smooth_cpu(m, o);
+  };
+  for (const auto& [threads, ordering] : {std::pair{2, Ordering::Natural}, std::pair{2, Ordering::Coloured},
+                                          std::pair{1, Ordering::Coloured}}) {
+    const SmoothResult r = run(Form::B, threads, ordering);
+    EXPECT_GT(r.num_colours, 1) << threads << " threads";
+    ASSERT_EQ(r.colour_sizes.size(), static_cast<std::size_t>(r.num_colours));
+    std::int64_t coloured = 0;
+    for (std::int64_t k : r.colour_sizes) coloured += k;
+    EXPECT_EQ(coloured, static_cast<std::int64_t>(r.movable_nodes)) << "every movable node has a colour";
+  }
+  EXPECT_EQ(run(Form::B, 2, Ordering::Natural).backend, "cpu-threads");
+  for (const auto& [form, threads] : {std::pair{Form::B, 1}, std::pair{Form::A, 2}, std::pair{Form::A, 1}}) {
+    const SmoothResult r = run(form, threads, Ordering::Natural);
+    EXPECT_EQ(r.num_colours, 0) << "form " << to_string(form) << ", " << threads << " threads";
+    EXPECT_TRUE(r.colour_sizes.empty());
+  }
+  EXPECT_EQ(run(Form::B, 1, Ordering::Natural).backend, "cpu-serial");
+}
+
+// The CPU evaluates every movable node once a sweep and skips none, so its
+// count of evaluations is movable nodes x sweeps, however the run stopped.
+TEST(CpuSmoother, EvaluationsAreMovableNodesTimesSweeps) {
+  const TetMesh input = testing::cube_grid(5, 0.3, 4);
+  const Topology topo = build_topology(input);
+  const auto movable = static_cast<std::size_t>(std::count(topo.movable.begin(), topo.movable.end(), 1));
+  ASSERT_GT(movable, 0u);
+  for (Form form : {Form::A, Form::B})
+    for (int threads : {1, 2})
+      for (int max_iterations : {0, 1, 3}) {
+        TetMesh m = input;
+        SmoothOptions o = options(Method::Adaptive, form, threads);
+        o.max_iterations = max_iterations;
+        o.tolerance = 0;
+        const SmoothResult r = smooth_cpu(m, o);
+        EXPECT_EQ(r.movable_nodes, movable);
+        EXPECT_EQ(r.sweeps, max_iterations);
+        EXPECT_EQ(r.evaluations, static_cast<std::int64_t>(movable) * max_iterations)
+            << "form " << to_string(form) << ", " << threads << " threads, " << max_iterations << " sweeps";
+      }
+  // Stopped by "no moves": its one sweep still evaluated the one movable node.
+  TetMesh settled = testing::cube_with_centre();
+  const SmoothResult r = smooth_cpu(settled, options(Method::Adaptive, Form::B));
+  EXPECT_EQ(r.stop, StopReason::NoMoves);
+  EXPECT_EQ(r.evaluations, 1);
+}
+
+// Form A carries nothing from one sweep to the next but the positions: a
+// run of several sweeps is those sweeps run one at a time. A revert flag or
+// mover mark left from one sweep would put back, or count, a move of the
+// next. Each sweep also accounts for every candidate move exactly once:
+// those that stand are the nodes that moved, the rest were reverted.
+TEST(CpuSmoother, FormASweepsCarryNothingButPositions) {
+  constexpr int kSweeps = 4;
+  for (int threads : {1, 2}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    TetMesh chained = grid_with_conflicts();
+    TetMesh stepped = chained;
+    const Topology topo = build_topology(chained);
+    SmoothOptions o = options(Method::Adaptive, Form::A, threads);
+    o.tolerance = 0;
+    o.max_iterations = kSweeps;
+    const SmoothResult r = smooth_cpu(chained, o);
+    ASSERT_EQ(r.sweeps, kSweeps);
+    o.max_iterations = 1;
+    std::int64_t reverted = 0;
+    int sweeps_with_reverts = 0;
+    for (int k = 0; k < kSweeps; ++k) {
+      // The candidates: movable nodes whose own test takes their move from
+      // this sweep's positions.
+      const MeshView view = host_view(stepped, topo);
+      const AosCoords<double> xyz{stepped.xyz.data()};
+      std::int64_t candidates = 0;
+      for (index_t i = 0; i < static_cast<index_t>(stepped.num_nodes()); ++i)
+        candidates += topo.movable[i] && takes_move(evaluate_node<double, true>(view, xyz, i));
+      const std::vector<double> before = stepped.xyz;
+      const SmoothResult rk = smooth_cpu(stepped, o);
+      EXPECT_EQ(rk.accepted_per_sweep.at(0), nodes_moved(before, stepped.xyz)) << "sweep " << k;
+      EXPECT_EQ(rk.accepted_per_sweep.at(0) + rk.reverted_moves, candidates) << "sweep " << k;
+      EXPECT_EQ(rk.accepted_per_sweep.at(0), r.accepted_per_sweep[k]) << "sweep " << k;
+      EXPECT_EQ(rk.max_displacement_per_sweep.at(0), r.max_displacement_per_sweep[k]) << "sweep " << k;
+      reverted += rk.reverted_moves;
+      sweeps_with_reverts += rk.reverted_moves > 0;
+    }
+    EXPECT_EQ(chained.xyz, stepped.xyz);
+    EXPECT_EQ(r.reverted_moves, reverted);
+    ASSERT_GE(sweeps_with_reverts, 2) << "flags must be set in a sweep that another sweep with conflicts follows";
+  }
 }
 
 }  // namespace

@@ -2,11 +2,14 @@
 // objecting tet) against the accept rule written out tet by tet, on every
 // movable node of meshes jittered hard enough to hold inverted and
 // near-degenerate tets; row_sum's chunked fetches against the row added
-// entry by entry; star_old_min's chunked scan against one entry at a time.
+// entry by entry; star_old_min's chunked scan against one entry at a time;
+// the stopping rule (sweep_verdict) and the Form A repair steps on planted
+// values.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ostream>
 #include <vector>
@@ -200,6 +203,102 @@ TEST(OrderedDouble, KeysOrderAsTheDoublesAndRoundTrip) {
     }
   }
   EXPECT_LT(ordered_key(HUGE_VAL), ~std::uint64_t{0}) << "all ones stands above every double";
+}
+
+// The stopping rule on planted values. A sweep that made no move stops for
+// that reason even though its largest move (none: 0) is below any positive
+// tolerance: "no node could improve" says more than "moves fell below".
+TEST(SweepVerdict, NoMovesWhenNothingMovedWhateverTheTolerance) {
+  EXPECT_EQ(sweep_verdict(1, 0, 0.0, 1e-3, 100), SweepVerdict::NoMoves);
+  EXPECT_EQ(sweep_verdict(1, 0, 0.0, 0.0, 100), SweepVerdict::NoMoves);
+  EXPECT_EQ(sweep_verdict(1, 0, 0.0f, 1e-3f, 100), SweepVerdict::NoMoves);
+}
+
+// README: stop when the largest move is *below* tol x mean edge length, so a
+// move of exactly the tolerance goes on.
+TEST(SweepVerdict, ToleranceIsStrictlyBelow) {
+  EXPECT_EQ(sweep_verdict(3, 5, 0.25, 0.25, 100), SweepVerdict::Continue);
+  EXPECT_EQ(sweep_verdict(3, 5, std::nextafter(0.25, 0.0), 0.25, 100), SweepVerdict::Tolerance);
+  EXPECT_EQ(sweep_verdict(3, 5, 0.25f, 0.25f, 100), SweepVerdict::Continue);
+  EXPECT_EQ(sweep_verdict(3, 5, std::nextafter(0.25f, 0.0f), 0.25f, 100), SweepVerdict::Tolerance);
+  // A tolerance of 0 never stops a sweep that moved something.
+  EXPECT_EQ(sweep_verdict(3, 5, 1e-300, 0.0, 100), SweepVerdict::Continue);
+}
+
+// `sweep` counts from 1: the cap stops the run after sweep max_iterations,
+// not before it.
+TEST(SweepVerdict, MaxIterationsStopsAtTheCap) {
+  EXPECT_EQ(sweep_verdict(99, 5, 1.0, 1e-3, 100), SweepVerdict::Continue);
+  EXPECT_EQ(sweep_verdict(100, 5, 1.0, 1e-3, 100), SweepVerdict::MaxIterations);
+  EXPECT_EQ(sweep_verdict(1, 5, 1.0, 1e-3, 1), SweepVerdict::MaxIterations);
+}
+
+// When several reasons hold in one sweep, the one that says the most about
+// the mesh wins: no moves, then the tolerance, then the cap (which only says
+// that more sweeps might still help).
+TEST(SweepVerdict, PrecedenceNoMovesThenToleranceThenCap) {
+  EXPECT_EQ(sweep_verdict(100, 0, 0.0, 1e-3, 100), SweepVerdict::NoMoves);
+  EXPECT_EQ(sweep_verdict(100, 5, 1e-4, 1e-3, 100), SweepVerdict::Tolerance);
+  EXPECT_EQ(sweep_verdict(7, 0, 0.0, 1e-3, 1), SweepVerdict::NoMoves);
+}
+
+// A move is made only when accepted and of nonzero length (a zero move
+// would keep a settled sweep counting moves and never stop on "no moves").
+TEST(TakesMove, AcceptedAndGoingSomewhere) {
+  NodeMove<double> mv{{0, 0, 0}, 0.5, 1e-30, true};
+  EXPECT_TRUE(takes_move(mv));
+  mv.displacement2 = 0;
+  EXPECT_FALSE(takes_move(mv));
+  mv.displacement2 = 1;
+  mv.accept = false;
+  EXPECT_FALSE(takes_move(mv));
+}
+
+// Only the last repair pass undoes the sweep; a test may shorten the limit.
+TEST(RepairSteps, OnlyTheLastPassUndoesTheSweep) {
+  for (int pass = 0; pass < kMaxRepairPasses - 1; ++pass) EXPECT_FALSE(repair_undoes_sweep(pass)) << pass;
+  EXPECT_TRUE(repair_undoes_sweep(kMaxRepairPasses - 1));
+  EXPECT_TRUE(repair_undoes_sweep(0, 1));
+  EXPECT_FALSE(repair_undoes_sweep(0, 2));
+  EXPECT_TRUE(repair_undoes_sweep(1, 2));
+}
+
+// Four nodes on a line, x = node index before, x = 10 + index after:
+// node 0 moved and flagged, 1 moved, 2 flagged but did not move (cannot
+// happen in a sweep, and must still not count), 3 neither.
+struct RepairFixture {
+  std::vector<double> before{0, 0, 0, 1, 0, 0, 2, 0, 0, 3, 0, 0};
+  std::vector<double> after{10, 0, 0, 11, 0, 0, 2, 0, 0, 3, 0, 0};
+  std::vector<std::uint8_t> moved{1, 1, 0, 0};
+  std::vector<std::uint8_t> revert{1, 0, 1, 0};
+  AosCoords<double> b{before.data()}, a{after.data()};
+  int pass(bool undo_all) {
+    int n = 0;
+    for (index_t i = 0; i < 4; ++i) n += revert_if_flagged(i, b, a, moved.data(), revert.data(), undo_all);
+    return n;
+  }
+};
+
+TEST(RepairSteps, FlaggedMoversGoBackAndEveryFlagIsCleared) {
+  RepairFixture f;
+  EXPECT_EQ(f.pass(false), 1);
+  EXPECT_EQ(f.after, (std::vector<double>{0, 0, 0, 11, 0, 0, 2, 0, 0, 3, 0, 0}));
+  EXPECT_EQ(f.moved, (std::vector<std::uint8_t>{0, 1, 0, 0}));
+  // A flag left set would put back a move of the next sweep that no tet
+  // objected to.
+  EXPECT_EQ(f.revert, (std::vector<std::uint8_t>(4, 0)));
+  EXPECT_EQ(surviving_disp2(0, f.b, f.a, f.moved.data()), 0.0);
+  EXPECT_EQ(surviving_disp2(1, f.b, f.a, f.moved.data()), 100.0);
+}
+
+TEST(RepairSteps, UndoingTheSweepPutsBackEveryMoverOnce) {
+  RepairFixture f;
+  EXPECT_EQ(f.pass(true), 2);
+  EXPECT_EQ(f.after, f.before);
+  EXPECT_EQ(f.moved, (std::vector<std::uint8_t>(4, 0)));
+  EXPECT_EQ(f.revert, (std::vector<std::uint8_t>(4, 0)));
+  EXPECT_EQ(f.pass(true), 0) << "nothing left to put back";
+  for (index_t i = 0; i < 4; ++i) EXPECT_EQ(surviving_disp2(i, f.b, f.a, f.moved.data()), 0.0);
 }
 
 }  // namespace

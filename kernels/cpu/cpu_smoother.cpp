@@ -7,9 +7,10 @@
 #include <cmath>
 #include <cstring>
 
-#include "kernels/sweep_log.hpp"
+#include "kernels/cpu/jacobi_repair.hpp"
 #include "kernels/node_update.hpp"
 #include "kernels/smoother.hpp"
+#include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/topology.hpp"
 
@@ -50,8 +51,7 @@ SweepStats sweep_in_place(const MeshView& view, AosCoords<double> xyz, const ind
 }
 
 // Form A (Jacobi): every candidate is computed from `prev`; moves land in
-// `next`. Adaptive moves then go through the conflict repair described in
-// node_update.hpp (tet_rejects_movers, kMaxRepairPasses).
+// `next`. Adaptive moves then go through the conflict repair (jacobi_repair.hpp).
 template <bool kAdaptive>
 SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, std::vector<double>& next,
                         std::size_t num_tets, const std::vector<std::uint8_t>& movable, std::vector<std::uint8_t>& moved,
@@ -72,29 +72,9 @@ SweepStats sweep_jacobi(const MeshView& view, const std::vector<double>& prev, s
       old_min[i] = mv.old_min;
     }
   }
-  if (kAdaptive) {
-    for (int pass = 0; pass < kMaxRepairPasses; ++pass) {
-      std::int64_t objecting = 0;
-#pragma omp parallel for num_threads(threads) if (threads > 1) schedule(static) reduction(+ : objecting)
-      for (std::size_t t = 0; t < num_tets; ++t) {
-        const index_t* tv = view.tets + 4 * t;
-        if (!tet_rejects_movers(tv, from, to, moved.data(), old_min.data())) continue;
-        ++objecting;
-        for (int k = 0; k < 4; ++k)
-          if (moved[tv[k]]) {
-#pragma omp atomic write
-            revert[tv[k]] = 1;
-          }
-      }
-      if (objecting == 0) break;
-      // The last pass found conflicts it may not have cleared: undo the sweep.
-      const bool undo_all = repair_undoes_sweep(pass);
-      std::int64_t reverted = 0;
-#pragma omp parallel for num_threads(threads) if (threads > 1) schedule(static) reduction(+ : reverted)
-      for (index_t i = 0; i < n; ++i) reverted += revert_if_flagged(i, from, to, moved.data(), revert.data(), undo_all);
-      reverted_total += reverted;
-    }
-  }
+  if (kAdaptive)
+    reverted_total += repair_jacobi_conflicts(view, num_tets, n, from, to, moved.data(), revert.data(), old_min.data(),
+                                              threads);
   std::int64_t accepted = 0;
   double max_disp2 = 0;
 #pragma omp parallel for num_threads(threads) if (threads > 1) schedule(static) reduction(+ : accepted) \

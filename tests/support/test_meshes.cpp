@@ -3,6 +3,7 @@
 #include <string>
 
 #include "generators/models.hpp"
+#include "mesh/topology.hpp"
 
 namespace tetsmooth::testing {
 
@@ -15,6 +16,14 @@ TetMesh regular_tet() {
 }
 
 TetMesh cube_grid(int n, double jitter, std::uint64_t seed) { return generate_lattice(n, jitter, seed); }
+
+TetMesh pushed_cube_grid(int n, double jitter, std::uint64_t seed, int every, double push) {
+  TetMesh m = cube_grid(n, jitter, seed);
+  const Topology topo = build_topology(m);
+  for (std::size_t i = 0; i < m.num_nodes(); i += static_cast<std::size_t>(every))
+    if (topo.movable[i]) m.xyz[3 * i] += push;
+  return m;
+}
 
 TetMesh cube_with_centre(double cx, double cy, double cz) {
   TetMesh m;

@@ -13,6 +13,11 @@ TetMesh regular_tet();
 // jitter > 0; interior nodes only), via the lattice generator.
 TetMesh cube_grid(int n, double jitter = 0.0, std::uint64_t seed = 7);
 
+// cube_grid with every `every`-th node that is movable pushed `push` lattice
+// spacings along x: far enough (about 1.5) inverts tets of its star, and
+// Form A's movers then conflict in shared tets.
+TetMesh pushed_cube_grid(int n, double jitter, std::uint64_t seed, int every, double push);
+
 // A cube of 8 corners plus one interior node, as a fan of 12 tets around
 // the interior node: the smallest mesh with one movable node.
 TetMesh cube_with_centre(double cx = 0.5, double cy = 0.5, double cz = 0.5);

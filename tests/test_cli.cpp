@@ -20,6 +20,7 @@
 #include "kernels/smoother.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "mesh/io/writable_check.hpp"
 #include "mesh/topology.hpp"
 #include "test_meshes.hpp"
 
@@ -401,6 +402,82 @@ TEST_F(CliFiles, OutputThatCannotHoldTheElementsFailsBeforeSmoothing) {
   EXPECT_EQ(files(), std::vector<std::string>{"hex.msh"});
   // Formats that hold it go through.
   EXPECT_EQ(run({"smooth", path("hex.msh"), "-o", path("out.msh"), "--device", "cpu", "-q"}).code, kExitOk);
+}
+
+// Whether any of `notes` contains `text`.
+bool has_note(const std::vector<std::string>& notes, const std::string& text) {
+  for (const std::string& n : notes)
+    if (n.find(text) != std::string::npos) return true;
+  return false;
+}
+
+// Each loss is named for the formats that drop it and for no other, and
+// only when there is something to lose.
+TEST(OutputLosses, EachNoteGoesWithTheFormatsThatDropIt) {
+  // TetGen and .tsm hold tets only; an empty block loses nothing and is not
+  // listed among what is lost.
+  TetMesh hex = testing::cube_with_centre();
+  hex.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {}, {}, {}, {}});
+  hex.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
+  const auto tetgen = output_losses(hex, "out.node");
+  ASSERT_FALSE(tetgen.empty());
+  EXPECT_EQ(tetgen[0], "1 hexahedron will not be written: tetgen holds tets only");
+  EXPECT_TRUE(has_note(output_losses(hex, "out.tsm"), "1 hexahedron will not be written: tsm holds tets only"));
+
+  // Node markers: TetGen writes them, Medit as vertex references; VTU not.
+  TetMesh marked = testing::regular_tet();
+  marked.extras.node_markers = {1, 0, 0, 2};
+  EXPECT_FALSE(has_note(output_losses(marked, "out.node"), "node markers"));
+  EXPECT_FALSE(has_note(output_losses(marked, "out.mesh"), "node markers"));
+  EXPECT_TRUE(has_note(output_losses(marked, "out.vtu"), "the node markers will not be written"));
+
+  // A node attribute count without values has nothing to lose.
+  TetMesh counted = testing::regular_tet();
+  counted.extras.node_attribute_count = 2;
+  EXPECT_FALSE(has_note(output_losses(counted, "out.vtu"), "node attributes"));
+
+  // TetGen writes its tet attributes back; VTU keeps only the region tags.
+  TetMesh attributes = testing::regular_tet();
+  attributes.extras.tet_attribute_count = 2;
+  attributes.extras.tet_attributes = {1, 0.5};
+  EXPECT_FALSE(has_note(output_losses(attributes, "out.node"), "tet attributes"));
+  EXPECT_TRUE(has_note(output_losses(attributes, "out.vtu"), "the TetGen tet attributes (2 per tet)"));
+
+  // .tsm alone drops the region tags.
+  TetMesh tagged = testing::regular_tet();
+  tagged.extras.tet_tags = {3};
+  EXPECT_TRUE(has_note(output_losses(tagged, "out.tsm"), "the region tags will not be written: tsm"));
+  EXPECT_FALSE(has_note(output_losses(tagged, "out.vtu"), "region tags"));
+}
+
+// MSH keeps a pin through an element on the node (a vertex here), TetGen
+// keeps none: of two pinned interior nodes, one on a vertex element, MSH
+// loses one pin and TetGen both.
+TEST(OutputLosses, PinsKeptByElementsOnlyWhereTheFormatWritesThem) {
+  TetMesh mesh = testing::cube_grid(3);
+  const index_t on_vertex = 1 + 4 * (1 + 4 * 1), bare = 2 + 4 * (2 + 4 * 2);  // interior nodes (1,1,1), (2,2,2)
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  mesh.fixed[static_cast<std::size_t>(on_vertex)] = 1;
+  mesh.fixed[static_cast<std::size_t>(bare)] = 1;
+  mesh.extras.blocks.push_back(PassThroughBlock{"vertex", 1, {on_vertex}, {}, {}, {}});
+  EXPECT_TRUE(has_note(output_losses(mesh, "out.msh"), "1 pinned node will not be pinned in the msh41 output"));
+  EXPECT_TRUE(has_note(output_losses(mesh, "out.node"), "2 pinned nodes will not be pinned in the tetgen output"));
+}
+
+// The probe's failure names the file the run would have written, as the
+// writer's own "cannot write 'path': ..." does, not only the reason.
+TEST(CheckWritable, NamesThePathAndTheReason) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
+  EXPECT_NO_THROW(check_writable(mesh, "out.msh"));
+  try {
+    check_writable(mesh, "out.vtu");
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    const std::string msg = e.what();
+    EXPECT_EQ(msg.rfind("cannot write 'out.vtu': ", 0), 0u) << msg;
+    EXPECT_NE(msg.find("hexahedron"), std::string::npos) << msg;
+  }
 }
 
 // What the output format cannot carry is named before the work: elements

@@ -45,6 +45,28 @@ TEST(Colouring, DeterministicAndFirstFit) {
   }
 }
 
+// Jones-Plassmann's first round: a movable node that goes before all its
+// movable neighbours (colours_before, the priority the CUDA colouring uses
+// too) wins at once and takes colour 0. With the priority read backwards the
+// colouring stays valid, but is no longer the one the GPU produces.
+TEST(Colouring, LocalPriorityMaximaTakeColourZero) {
+  const TetMesh m = testing::random_delaunay(800, 9);
+  const Topology topo = build_topology(m);
+  const Colouring c = colour_nodes(topo.neighbours, topo.movable);
+  std::size_t maxima = 0;
+  for (std::size_t i = 0; i < m.num_nodes(); ++i) {
+    if (!topo.movable[i]) continue;
+    bool first = true;
+    for (const index_t* j = topo.neighbours.row_begin(i); j != topo.neighbours.row_end(i); ++j)
+      if (topo.movable[*j] && !colours_before(static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(*j)))
+        first = false;
+    if (!first) continue;
+    ++maxima;
+    EXPECT_EQ(c.colour[i], 0) << "node " << i << " goes before all its neighbours";
+  }
+  EXPECT_GT(maxima, 10u) << "too few local maxima to tell";
+}
+
 TEST(Colouring, DetectsInvalidColouring) {
   const TetMesh m = testing::cube_grid(3);
   const Topology topo = build_topology(m);
@@ -88,6 +110,12 @@ TEST(Colouring, DetectsInvalidColouring) {
     c = good;
     std::swap(c.classes.items.front(), c.classes.items.back());
     EXPECT_NE(flaw(c).find("classes"), std::string::npos) << flaw(c);
+  }
+  {  // -1 is the one mark of a node that never moves: any other negative
+     // value is a colour array of some other convention
+    Colouring c = good;
+    c.colour[first(false)] = -2;
+    EXPECT_NE(flaw(c).find("never moves"), std::string::npos) << flaw(c);
   }
   {  // a colour array of another mesh
     Colouring c = good;

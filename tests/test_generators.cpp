@@ -173,6 +173,14 @@ TEST(Generators, BoxRejectsBadArguments) {
   EXPECT_THROW(generate_box_delaunay(0, 3, 1), UsageError);
   EXPECT_THROW(generate_box_delaunay(1291, 0, 1), UsageError);
   EXPECT_THROW(generate_box_delaunay(1000, std::numeric_limits<int>::max() - 10, 1), UsageError);
+  // 2^22 per axis: its cube, 2^66, wraps to 0 in 64 bits and would pass the
+  // node count check, so the per-axis bound must refuse it first.
+  try {
+    generate_box_delaunay(1 << 22, 10, 1);
+    ADD_FAILURE() << "no UsageError for a 2^22 lattice";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("exceed 32-bit node indices"), std::string::npos) << e.what();
+  }
 }
 
 // The embankment: its profile's top surface at x (see SlopeGeometry).

@@ -3,6 +3,7 @@
 // rejected with an InputError naming the file and the byte offset.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -35,6 +36,66 @@ TEST(TsmCache, LayoutMatchesTheDocumentedSize) {
   EXPECT_EQ(bytes.size(), 32 + 24 * mesh.num_nodes() + 16 * mesh.num_tets() + 8);
   EXPECT_EQ(bytes.substr(1, 3), "TSM");
   EXPECT_EQ(static_cast<unsigned char>(bytes[8]), kTsmVersion);  // little-endian version
+}
+
+// FNV-1a 64 as published (offset basis 0xcbf29ce484222325, prime
+// 0x100000001b3, xor then multiply), written here from the definition.
+std::uint64_t fnv1a_64(const std::string& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : bytes) h = (h ^ c) * 0x100000001b3ULL;
+  return h;
+}
+
+std::uint64_t le64_at(const std::string& bytes, std::size_t at) {
+  std::uint64_t v = 0;
+  for (int k = 7; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(k)]);
+  return v;
+}
+
+// The trailer of a cache with `bytes` before it, as the layout documents it.
+std::string with_checksum(const std::string& body) {
+  std::string out = body;
+  std::uint64_t h = fnv1a_64(body);
+  for (int k = 0; k < 8; ++k, h >>= 8) out += static_cast<char>(h & 0xff);
+  return out;
+}
+
+// The documented layout byte by byte: a cache written by another build, or
+// read by another tool, agrees on the magic and on the checksum being FNV-1a
+// (a self-consistent variant, FNV-1 say, would round-trip and still break
+// every cache already on disk).
+TEST(TsmCache, MagicAndChecksumAreTheDocumentedOnes) {
+  ASSERT_EQ(fnv1a_64("a"), 0xaf63dc4c8601ec8cULL);  // the published test vector
+  const std::string bytes = bytes_of(testing::regular_tet());
+  EXPECT_EQ(bytes.substr(0, 8), std::string("\x89TSM\r\n\x1a\n", 8));
+  EXPECT_EQ(le64_at(bytes, 16), 4u);
+  EXPECT_EQ(le64_at(bytes, 24), 1u);
+  EXPECT_EQ(le64_at(bytes, bytes.size() - 8), fnv1a_64(bytes.substr(0, bytes.size() - 8)));
+}
+
+// Non-zero flags with a checksum that matches them are refused for the flags
+// themselves (byte 12), not passed because the checksum agrees.
+TEST(TsmCache, RejectsUnknownFlagsAtByteTwelve) {
+  const std::string bytes = bytes_of(testing::regular_tet());
+  std::string body = bytes.substr(0, bytes.size() - 8);
+  body[12] = 1;
+  const std::string msg = read_error(with_checksum(body));
+  EXPECT_NE(msg.find("cube.tsm, byte 12"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("unknown flags 1"), std::string::npos) << msg;
+}
+
+// Values are converted 65,536 at a time: a mesh of more than one batch of
+// coordinates (29,791 nodes: 89,373 values) and of tets (27,000 cubes: 648,000
+// indices) round-trips bit for bit across the batch boundaries.
+TEST(TsmCache, RoundTripAcrossConversionBatches) {
+  const TetMesh mesh = testing::cube_grid(30, 0.3);
+  ASSERT_GT(mesh.xyz.size(), 65536u);
+  ASSERT_GT(mesh.tets.size(), 65536u);
+  std::istringstream in(bytes_of(mesh));
+  const TetMesh back = read_cache(in, "cube.tsm");
+  ASSERT_EQ(back.xyz.size(), mesh.xyz.size());
+  EXPECT_EQ(std::memcmp(back.xyz.data(), mesh.xyz.data(), mesh.xyz.size() * sizeof(double)), 0);
+  EXPECT_EQ(back.tets, mesh.tets);
 }
 
 TEST(TsmCache, RoundTripIsBitExact) {

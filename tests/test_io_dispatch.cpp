@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -28,7 +29,10 @@ class IoDir : public ::testing::Test {
  protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string("tetsmooth_io_") + info->test_suite_name() + "_" + info->name();
+    // The process id keeps two runs of this binary at once (two build trees,
+    // two workers on one host) out of each other's directory.
+    std::string name = std::string("tetsmooth_io_") + info->test_suite_name() + "_" + info->name() + "_" +
+                       std::to_string(::getpid());
     for (char& c : name)
       if (c == '/') c = '_';
     dir_ = fs::temp_directory_path() / name;
@@ -268,6 +272,57 @@ TEST_F(IoDir, AtomicWriteIntoAFifoWritesThrough) {
   EXPECT_EQ(files(), 1u);
 }
 
+// A full disk is reported by its errno (/dev/full fails every write with
+// ENOSPC), not as a stream that merely went bad: the user learns why.
+TEST_F(IoDir, AtomicWriteReportsTheErrnoOfAFailedWrite) {
+  if (::access("/dev/full", W_OK) != 0) GTEST_SKIP() << "no writable /dev/full";
+  try {
+    write_atomically("/dev/full", [](std::ostream& out) { out << std::string(1 << 17, 'x'); });
+    FAIL() << "no OutputError";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find(std::strerror(ENOSPC)), std::string::npos) << e.what();
+  }
+}
+
+// A chain of 40 links is followed to its file; one of 41 is refused as
+// endless, as open() counts (the Linux limit, 40, for a path of links).
+TEST_F(IoDir, AtomicWriteFollowsFortyLinksButNotFortyOne) {
+  write_atomically(path("end.txt"), [](std::ostream& out) { out << "old"; });
+  std::string next = "end.txt";
+  for (int k = 1; k <= 41; ++k) {
+    const std::string name = "link" + std::to_string(k);
+    fs::create_symlink(next, path(name));
+    next = name;
+  }
+  EXPECT_EQ(follow_links(path("link40")).path, path("end.txt"));
+  EXPECT_FALSE(follow_links(path("link40")).endless);
+  EXPECT_TRUE(follow_links(path("link41")).endless);
+  write_atomically(path("link40"), [](std::ostream& out) { out << "new"; });
+  EXPECT_EQ(contents(path("end.txt")), "new");
+  EXPECT_TRUE(fs::is_symlink(path("link40")));
+}
+
+// A link into /proc (as /dev/stdout is, to /proc/self/fd/1) names a file
+// this process holds open: it is appended to in place, after what was
+// written through the descriptor, not replaced by a new file that the
+// descriptor would no longer reach.
+TEST_F(IoDir, AtomicWriteThroughAHeldFileAppendsInPlace) {
+  const int fd = ::open(path("held.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::write(fd, "head ", 5), 5);
+  struct stat before {};
+  ASSERT_EQ(::fstat(fd, &before), 0);
+  fs::create_symlink("/proc/self/fd/" + std::to_string(fd), path("out"));
+  ASSERT_TRUE(follow_links(path("out")).held);
+  write_atomically(path("out"), [](std::ostream& out) { out << "body"; });
+  struct stat after {};
+  ASSERT_EQ(::stat(path("held.txt").c_str(), &after), 0);
+  ::close(fd);
+  EXPECT_EQ(after.st_ino, before.st_ino) << "the held file was replaced";
+  EXPECT_EQ(contents(path("held.txt")), "head body");
+  EXPECT_EQ(files(), 2u);  // held.txt and the link, no temporary
+}
+
 // Killed while the body is still writing: the temporary goes with the
 // process, and the old file stays.
 TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
@@ -276,6 +331,12 @@ TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
   // I/O and user signals, a real-time one, a CPU or file-size limit.
   for (int sig : {SIGTERM, SIGINT, SIGPIPE, SIGABRT, SIGALRM, SIGIO, SIGUSR1, SIGRTMIN + 1, SIGXCPU, SIGXFSZ}) {
     SCOPED_TRACE(strsignal(sig));
+    // A signal this process inherited as ignored (SIGINT in a background job
+    // of a non-interactive shell, or under nohup) stays ignored by design
+    // (the next test), so it cannot end the write here.
+    struct sigaction now {};
+    ::sigaction(sig, nullptr, &now);
+    if (now.sa_handler == SIG_IGN) continue;
     EXPECT_EXIT(write_atomically(path("t.txt"),
                                  [sig](std::ostream& out) {
                                    out << std::string(1 << 20, 'x');  // part of it already in the file
@@ -285,6 +346,30 @@ TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {
     EXPECT_EQ(contents(path("t.txt")), "old");
     EXPECT_EQ(files(), 1u);
   }
+}
+
+// The clean-up handlers go only where the default action would end the
+// process anyway. A signal the program ignores (SIGUSR2 here, as a pipeline
+// ignores SIGPIPE) stays ignored; one whose default is to do nothing (a
+// child ending, a terminal resize, ...) arriving mid-write must not remove
+// the temporary, or the write fails at its rename. Run in a fresh process
+// ("threadsafe" death test), as the handlers are installed once a process.
+TEST_F(IoDir, CleanUpHandlersLeaveHarmlessAndIgnoredSignalsAlone) {
+  const std::string style = GTEST_FLAG_GET(death_test_style);
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        std::signal(SIGUSR2, SIG_IGN);
+        write_atomically(path("t.txt"), [](std::ostream& out) {
+          out << std::string(1 << 17, 'x');  // the temporary exists on disk
+          for (int sig : {SIGUSR2, SIGCHLD, SIGWINCH, SIGURG, SIGCONT}) std::raise(sig);
+        });
+        const bool written = contents(path("t.txt")) == std::string(1 << 17, 'x');
+        fs::remove_all(dir_);  // the child's own directory: no TearDown after _Exit
+        std::_Exit(written ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+  GTEST_FLAG_SET(death_test_style, style);
 }
 
 TEST_F(IoDir, WriteMeshFailureLeavesNoFile) {

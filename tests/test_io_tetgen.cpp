@@ -2,6 +2,7 @@
 // and region attributes, exact round trips, and errors that name file:line.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -190,6 +191,31 @@ TEST(TetGenErrors, BadHeaders) {
   EXPECT_NE(read_error(kNode, "0 4 0\n").find("box.ele:1"), std::string::npos);
 }
 
+// Each header field is refused by its own check, with its value: without
+// them a bad count would still fail, but later and as something else (a
+// truncation, a missing tet), and a marker flag of 2 would be read as 1.
+TEST(TetGenErrors, BadHeaderFieldsAreNamedWithTheirValue) {
+  EXPECT_NE(read_error("-5 3 0 0\n", kEle).find("box.node:1: invalid node count -5"), std::string::npos);
+  EXPECT_NE(read_error("3000000000 3 0 0\n", kEle).find("box.node:1: invalid node count 3000000000"),
+            std::string::npos);
+  EXPECT_NE(read_error("0 3 0 0\n", kEle).find("box.node:1: the .node file declares no nodes"), std::string::npos);
+  EXPECT_NE(read_error("5 3 0 2\n", kEle).find("box.node:1: boundary marker flag must be 0 or 1, found 2"),
+            std::string::npos);
+  EXPECT_NE(read_error(kNode, "2 8 0\n").find("box.ele:1: nodes per tet must be 4, found 8"), std::string::npos);
+  // A whole marker past int would wrap if it were cast unchecked.
+  EXPECT_NE(read_error("5 3 0 1\n0 0 0 0 3000000000\n", kEle)
+                .find("box.node:2: boundary marker 3000000000 out of range"),
+            std::string::npos);
+}
+
+// A header that claims two billion nodes over a file of one: the reader
+// must end in "unexpected end of file" after line 2, not try to reserve room
+// for the claim first (48 GB of coordinates, a bad_alloc on most hosts).
+TEST(TetGenErrors, LyingNodeCountEndsInATruncationError) {
+  const std::string msg = read_error("2000000000 3 0 0\n0 0 0 0\n", kEle);
+  EXPECT_NE(msg.find("box.node:2: unexpected end of file, expected node 2 of 2000000000"), std::string::npos) << msg;
+}
+
 TEST(TetGenErrors, NodeNumbering) {
   EXPECT_NE(read_error("2 3 0 0\n2 0 0 0\n3 1 0 0\n", kEle).find("box.node:2: the first node number"),
             std::string::npos);
@@ -240,6 +266,35 @@ TEST_F(TetGenIo, SeveralTetAttributesAreKept) {
   const TetMesh one = read_tetgen(n1, "box.node", e1, "box.ele");
   EXPECT_TRUE(one.extras.tet_attributes.empty());
   EXPECT_EQ(one.extras.tet_attribute_count, 0);
+}
+
+// A node attribute count without values (validate_mesh accepts it: the
+// values were not kept) writes a node file with no attribute columns that
+// reads back, rather than a header promising columns the rows lack.
+TEST_F(TetGenIo, NodeAttributeCountWithoutValuesWritesNoAttributes) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.node_attribute_count = 2;
+  write_tetgen(mesh, path("bare"));
+  std::ifstream node(path("bare.node"));
+  std::string header;
+  std::getline(node, header);
+  EXPECT_EQ(header, "4 3 0 0");
+  const TetMesh back = read_tetgen(path("bare"));
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_TRUE(back.extras.node_attributes.empty());
+}
+
+// A tet attribute of -0.0 is not a whole number to write as "0": the
+// round trip must keep its sign bit, as it keeps every other bit.
+TEST_F(TetGenIo, NegativeZeroTetAttributeKeepsItsSign) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.tet_attribute_count = 2;
+  mesh.extras.tet_attributes = {3, -0.0};
+  write_tetgen(mesh, path("signed"));
+  const TetMesh back = read_tetgen(path("signed"));
+  ASSERT_EQ(back.extras.tet_attributes.size(), 2u);
+  EXPECT_EQ(back.extras.tet_attributes[1], 0.0);
+  EXPECT_TRUE(std::signbit(back.extras.tet_attributes[1]));
 }
 
 TEST(TetGenErrors, MissingTetAttributeNamesTheLine) {

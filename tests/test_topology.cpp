@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <set>
 #include <tuple>
@@ -195,6 +196,39 @@ TEST(Topology, FaceUsesInFullSortOrder) {
   for (std::size_t k = 0; k < uses.size(); ++k) EXPECT_EQ(key(uses[k]), key(expected[k])) << "use " << k;
   EXPECT_EQ(count_repeated_tets(m.tets), 10u);
   expect_matches_brute_force(m);
+}
+
+// The face convention of tet_mesh.hpp: face f, opposite local vertex f, is
+// listed so that its normal (b-a)x(c-a) points away from that vertex for a
+// positively oriented tet. Checked on the corner tet (0,0,0), x, y, z.
+TEST(Topology, TetFacesFaceOutwardOfAPositiveTet) {
+  const double p[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const auto sub = [](const double* a, const double* b) {
+    return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  };
+  for (int f = 0; f < 4; ++f) {
+    const double* a = p[kTetFaces[f][0]];
+    const std::array<double, 3> u = sub(p[kTetFaces[f][1]], a), v = sub(p[kTetFaces[f][2]], a), w = sub(p[f], a);
+    const std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    EXPECT_LT(n[0] * w[0] + n[1] * w[1] + n[2] * w[2], 0.0) << "face " << f << " faces its own vertex";
+    for (int k = 0; k < 3; ++k) EXPECT_NE(kTetFaces[f][k], f) << "face " << f << " holds its opposite vertex";
+  }
+}
+
+// Csr's == is what the GPU tests compare the device tables with: two tables
+// with the same items but rows cut in other places (here one row [0 1 2]
+// against [0] [1 2]) are different tables and must not compare equal.
+TEST(Topology, CsrEqualityComparesTheRowsNotOnlyTheItems) {
+  Csr one_row, two_rows;
+  one_row.offsets = {0, 3};
+  one_row.items = {0, 1, 2};
+  two_rows.offsets = {0, 1, 3};
+  two_rows.items = {0, 1, 2};
+  EXPECT_FALSE(one_row == two_rows);
+  EXPECT_TRUE(one_row == one_row);
+  Csr other_items = one_row;
+  other_items.items = {0, 1, 3};
+  EXPECT_FALSE(one_row == other_items);
 }
 
 TEST(Topology, MeanEdgeLengthOfRegularTet) {

@@ -104,6 +104,75 @@ TEST(Validate, RejectsWrongArrayShapes) {
   EXPECT_NE(validation_error(attrs).find("tet attribute array has 3 values, expected 2 per tet"), std::string::npos);
 }
 
+// Every per-node and per-tet array of the extras is checked against its own
+// count: the writers index them by node or by tet, so one of another length
+// would be read past its end (regular_tet: 4 nodes, 1 tet).
+TEST(Validate, RejectsExtrasArraysOfTheWrongLength) {
+  TetMesh node_tags = testing::regular_tet();
+  node_tags.extras.node_tags = {1, 2, 3};
+  EXPECT_NE(validation_error(node_tags).find("node tag array has 3 entries for 4 nodes"), std::string::npos);
+
+  TetMesh markers = testing::regular_tet();
+  markers.extras.node_markers = {1, 0, 0, 1, 1};
+  EXPECT_NE(validation_error(markers).find("node marker array has 5 entries for 4 nodes"), std::string::npos);
+
+  TetMesh entities = testing::regular_tet();
+  entities.extras.tet_entity_tags = {1, 1};
+  EXPECT_NE(validation_error(entities).find("tet entity tag array has 2 entries for 1 tets"), std::string::npos);
+
+  TetMesh elements = testing::regular_tet();
+  elements.extras.tet_element_tags = {7, 8};
+  EXPECT_NE(validation_error(elements).find("tet element tag array has 2 entries for 1 tets"), std::string::npos);
+
+  // Node attributes go by node, not by tet: 2 a node is 8 values here.
+  TetMesh attrs = testing::regular_tet();
+  attrs.extras.node_attribute_count = 2;
+  attrs.extras.node_attributes = {0, 1};
+  EXPECT_NE(validation_error(attrs).find("node attribute array has 2 values, expected 2 per node"), std::string::npos);
+  attrs.extras.node_attributes.assign(8, 0.5);
+  EXPECT_NO_THROW(validate_mesh(attrs));
+}
+
+// An attribute count with no values is a mesh whose attributes were not
+// kept (the writers check the size before using them): valid, as the
+// comment on the arrays says ("or empty").
+TEST(Validate, AcceptsAnAttributeCountWithoutValues) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.node_attribute_count = 3;
+  mesh.extras.tet_attribute_count = 2;
+  EXPECT_NO_THROW(validate_mesh(mesh));
+}
+
+// A pass-through block must hold whole elements, of a positive size, with a
+// tag array per element where it has one (a 0-node kind would divide by
+// zero), and an error names the element by its index in the block.
+TEST(Validate, RejectsMalformedPassThroughBlocks) {
+  TetMesh no_nodes = testing::regular_tet();
+  no_nodes.extras.blocks.push_back(PassThroughBlock{"vertex", 0, {0, 1}, {}, {}, {}});
+  EXPECT_NE(validation_error(no_nodes).find("not a multiple of 0"), std::string::npos);
+
+  TetMesh partial = testing::regular_tet();
+  partial.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2, 1}, {}, {}, {}});
+  EXPECT_NE(validation_error(partial).find("holds 4 indices, not a multiple of 3"), std::string::npos);
+
+  for (int which = 0; which < 3; ++which) {
+    TetMesh tagged = testing::regular_tet();
+    PassThroughBlock b{"line", 2, {0, 1, 1, 2}, {}, {}, {}};
+    if (which == 0) b.tags = {5};
+    if (which == 1) b.entity_tags = {5, 5, 5};
+    if (which == 2) b.element_tags = {9};
+    tagged.extras.blocks.push_back(b);
+    EXPECT_NE(validation_error(tagged).find("tag array that does not match its 2 elements"), std::string::npos)
+        << "tag array " << which;
+  }
+
+  // Lines of 2 nodes: index 5 is element 2 (not 5 / 4 = 1, the tets' count).
+  TetMesh lines = testing::regular_tet();
+  lines.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1, 1, 2, 2, 9}, {}, {}, {}});
+  const std::string msg = validation_error(lines);
+  EXPECT_NE(msg.find("line element 2 refers to node 9"), std::string::npos) << msg;
+}
+
 // 4 node-to-tet entries a tet under 32-bit offsets: 2^29 - 1 tets at most
 // (a mesh that size is too big for a test; lattice.cpp and the .tsm reader
 // refuse by this bound before allocating, and their tests show it).

@@ -13,8 +13,10 @@
 #include "apps/cli.hpp"
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
+#include "apps/input_warnings.hpp"
 #include "apps/output_check.hpp"
 #include "apps/progress_line.hpp"
+#include "apps/region_pins.hpp"
 #include "apps/report_text.hpp"
 #include "apps/worst_tets.hpp"
 #include "kernels/smoother.hpp"
@@ -194,6 +196,15 @@ TEST(CliParse, DoubleDashEndsOptions) {
   EXPECT_EQ(v.input, "-odd.vtu");
 }
 
+// A lone "-" is a file name by convention, not an option: it must reach the
+// command as a positional rather than fail as "unknown option '-'".
+TEST(CliParse, LoneDashIsAPositional) {
+  const std::vector<OptionSpec> specs = {{"json", 0, false}};
+  const ParsedArgs p = parse_args({"-", "--json"}, specs, "quality");
+  EXPECT_EQ(p.positionals, std::vector<std::string>{"-"});
+  EXPECT_EQ(p.values.count("json"), 1u);
+}
+
 TEST(CliParse, HelpAndVersion) {
   EXPECT_EQ(parse_as<HelpRequest>({"--help"}).command, "");
   EXPECT_EQ(parse_as<HelpRequest>({"-h"}).command, "");
@@ -235,6 +246,46 @@ TEST(CliParse, AnOptionWithAValueIsGivenOnce) {
             std::string::npos);
   EXPECT_NE(usage_error_of({"smooth", "in.vtu", "-o", "a.vtu", "--tol=1e-3", "--tol", "1e-4"}).find("--tol"),
             std::string::npos);
+}
+
+// Both ends of a range are allowed values; one past either end is not.
+TEST(CliParse, RangeEndsAreInclusive) {
+  EXPECT_EQ(parse_int_option("--n", "0", 0, 100), 0);
+  EXPECT_EQ(parse_int_option("--n", "100", 0, 100), 100);
+  EXPECT_THROW(parse_int_option("--n", "-1", 0, 100), UsageError);
+  EXPECT_THROW(parse_int_option("--n", "101", 0, 100), UsageError);
+}
+
+// A suggestion is offered for near misses only (at most two edits away):
+// a far-fetched "did you mean" misleads more than it helps.
+TEST(CliParse, SuggestionsAreForNearMissesOnly) {
+  const std::vector<OptionSpec> specs = {{"threads", 0, true}};
+  const auto message = [&](const std::string& token) {
+    try {
+      parse_args({token, "1"}, specs, "smooth");
+    } catch (const UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no UsageError");
+  };
+  EXPECT_NE(message("--thraeds").find("did you mean '--threads'"), std::string::npos);
+  const std::string far = message("--thrxxxs");  // three substitutions away
+  EXPECT_NE(far.find("unknown option '--thrxxxs'"), std::string::npos) << far;
+  EXPECT_EQ(far.find("did you mean"), std::string::npos) << far;
+}
+
+// Trailing characters make a number invalid rather than being dropped:
+// "--seed 12abc" must not run with seed 12.
+TEST(CliParse, SeedsWithTrailingCharactersAreRejected) {
+  EXPECT_EQ(parse_u64_option("--seed", "18446744073709551615"), 18446744073709551615u);
+  for (const char* bad : {"12abc", "12 ", "1.5", "0x10"})
+    EXPECT_THROW(parse_u64_option("--seed", bad), UsageError) << bad;
+}
+
+// Short options are single letters; "-qx" is not "-q" with a stray "x".
+TEST(CliParse, ShortOptionsDoNotTakeGluedLetters) {
+  const std::string e = usage_error_of({"quality", "a.vtu", "-qx"});
+  EXPECT_NE(e.find("unknown option '-qx'"), std::string::npos) << e;
 }
 
 TEST(CliParse, NumbersAreCheckedForRange) {
@@ -307,6 +358,15 @@ TEST_F(CliFiles, MissingInputExitsWith3) {
 }
 
 // The command line takes a TetGen base name as the library does.
+// A TetGen input named by its base name is the files base.node and
+// base.ele: writing base.node replaces the input, and is warned as such.
+TEST_F(CliFiles, TetGenBaseNameWrittenOverIsWarnedAsTheInput) {
+  write_mesh(testing::cube_with_centre(), path("box.node"));
+  const CliRun r = run({"convert", path("box"), path("box.node")});
+  EXPECT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find(path("box.node") + " is the input mesh"), std::string::npos) << r.err;
+}
+
 TEST_F(CliFiles, TetGenBaseNameAsInput) {
   write_mesh(testing::cube_with_centre(), path("box.node"));
   const CliRun r = run({"convert", path("box"), path("box.vtu")});
@@ -482,6 +542,21 @@ TEST(CheckWritable, NamesThePathAndTheReason) {
 
 // What the output format cannot carry is named before the work: elements
 // other than tets to TetGen, pins to MSH, node attributes to VTU.
+// The per-tet quality and per-node boundary fields are what a ParaView user
+// thresholds on; every format that can hold fields must get them, whichever
+// way its name is spelled on the command line.
+TEST_F(CliFiles, EveryFormatWithFieldsCarriesQualityAndBoundary) {
+  write_mesh(testing::cube_with_centre(), path("in.vtu"));
+  for (const char* format : {"vtu", "vtk", "msh41", "msh41-binary", "msh22"}) {
+    const std::string out = path(std::string("out_") + format);
+    const CliRun r = run({"convert", path("in.vtu"), out, "--output-format", format});
+    ASSERT_EQ(r.code, kExitOk) << format << ": " << r.err;
+    const std::string text = contents_of(out);
+    EXPECT_NE(text.find("quality"), std::string::npos) << format;
+    EXPECT_NE(text.find("boundary"), std::string::npos) << format;
+  }
+}
+
 TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   TetMesh mesh = testing::cube_with_centre();
   mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
@@ -852,6 +927,64 @@ TEST_F(CliFiles, CoordinatesBeyondTheRadiusRatiosRangeAreNamed) {
 }
 
 // Every tet inverted: the warning points at the file's orientation.
+// A single inverted tet is the usual tangle and worth a warning as much as
+// many; the warning says whether this run's method may make it worse.
+TEST_F(CliFiles, OneInvertedTetIsWarnedWithWhatTheMethodDoesToIt) {
+  TetMesh mesh = testing::cube_with_centre();
+  std::swap(mesh.tets[0], mesh.tets[1]);
+  write_mesh(mesh, path("one.vtu"));
+  const CliRun adaptive = run({"smooth", path("one.vtu"), "-o", path("a.vtu"), "--device", "cpu"});
+  EXPECT_EQ(adaptive.code, kExitOk) << adaptive.err;
+  EXPECT_NE(adaptive.err.find("1 inverted tets (negative volume); continuing: adaptive smoothing never makes them "
+                              "worse"),
+            std::string::npos)
+      << adaptive.err;
+  const CliRun ordinary =
+      run({"smooth", path("one.vtu"), "-o", path("o.vtu"), "--device", "cpu", "--method", "ordinary"});
+  EXPECT_NE(ordinary.err.find("1 inverted tets (negative volume); continuing, but ordinary smoothing may make them "
+                              "worse"),
+            std::string::npos)
+      << ordinary.err;
+}
+
+// One repeated tet, one degenerate tet and one loose node are warned about
+// as much as many: a single stray element is the usual case in a hand-edited
+// file.
+TEST(CliPieces, SingleRepeatedTetDegenerateTetAndLooseNodeAreWarned) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.tets.insert(mesh.tets.end(), mesh.tets.begin(), mesh.tets.begin() + 4);
+  mesh.tets.insert(mesh.tets.end(), {0, 0, 1, 2});  // a repeated node: zero volume
+  mesh.xyz.insert(mesh.xyz.end(), {9, 9, 9});
+  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
+  std::string all;
+  for (const std::string& w : warnings) all += w + "\n";
+  EXPECT_NE(all.find("m.vtu: 1 tets repeat the nodes of an earlier tet"), std::string::npos) << all;
+  EXPECT_NE(all.find("m.vtu: 1 nodes belong to no tet"), std::string::npos) << all;
+  EXPECT_NE(all.find("m.vtu: 1 degenerate tets"), std::string::npos) << all;
+}
+
+// The scale warning names the span, so the user knows how far to scale.
+TEST(CliPieces, HugeSpanIsNamedWithItsSize) {
+  TetMesh mesh = testing::regular_tet();
+  for (double& x : mesh.xyz) x *= 3e40;
+  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
+  std::string all;
+  for (const std::string& w : warnings) all += w + "\n";
+  EXPECT_NE(all.find("m.vtu: the nodes span 3e+40 units"), std::string::npos) << all;
+}
+
+// The scale warning is for spans a double cannot handle; a mesh whose nodes
+// all coincide spans 0, which is degenerate (warned as such), not tiny.
+TEST(CliPieces, ZeroSpanIsNotCalledTooSmall) {
+  TetMesh mesh = testing::regular_tet();
+  for (double& x : mesh.xyz) x = 1;
+  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
+  std::string all;
+  for (const std::string& w : warnings) all += w + "\n";
+  EXPECT_NE(all.find("degenerate"), std::string::npos) << all;
+  EXPECT_EQ(all.find("span"), std::string::npos) << all;
+}
+
 TEST_F(CliFiles, AllTetsInvertedSuggestsTheOppositeOrientation) {
   TetMesh mesh = testing::cube_with_centre();
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) std::swap(mesh.tets[4 * t], mesh.tets[4 * t + 1]);
@@ -885,6 +1018,31 @@ TEST_F(CliFiles, ReportsSurviveFileNamesThatAreNotUtf8) {
 
 // Two layers told apart only by their tets' tags: the interface between
 // them stays put, the run says so, and the written file gains no pins.
+// The note "N nodes on interfaces ... stay fixed" counts what the pins add:
+// interface nodes the file had already fixed are not added again. The file's
+// own pins come back when the pins end.
+TEST(CliPieces, InterfacePinsCountOnlyNodesTheFileLeftFree) {
+  TetMesh mesh = testing::cube_grid(4, 0.2);
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 4; ++k) cx += mesh.xyz[3 * static_cast<std::size_t>(mesh.tets[4 * t + k])] / 4;
+    mesh.extras.tet_tags.push_back(cx < 2 ? 1 : 2);
+  }
+  // The 5 x 5 nodes of the grid column x = 2 (jittered) are the interface;
+  // the file pins 3 of them.
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  std::size_t pinned_by_file = 0;
+  for (std::size_t i = 0; i < mesh.num_nodes() && pinned_by_file < 3; ++i)
+    if (mesh.xyz[3 * i] > 1.5 && mesh.xyz[3 * i] < 2.5) mesh.fixed[i] = 1, ++pinned_by_file;
+  const std::vector<std::uint8_t> file_pins = mesh.fixed;
+  {
+    const RegionInterfacePins pins(mesh);
+    EXPECT_EQ(pins.added_on_interfaces(), 25u - 3u);
+    EXPECT_EQ(pins.added_on_features(), 0u);
+  }
+  EXPECT_EQ(mesh.fixed, file_pins);
+}
+
 TEST_F(CliFiles, MaterialInterfacesStayFixed) {
   TetMesh mesh = testing::cube_grid(4, 0.2);
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
@@ -1042,6 +1200,47 @@ TEST(CliPieces, WorstTetsPicksTheLowestQualitiesWithTheirNodes) {
   EXPECT_EQ(worst_tets(mesh, q, 100).size(), q.size());
 }
 
+// The histogram has ten bins of 0.1 up to q = 1 inclusive: the top bin holds
+// the best tets and must be there with its count and its full bar.
+TEST(CliPieces, HistogramShowsTheTopBin) {
+  QualitySummary s;
+  s.histogram = {0, 0, 0, 0, 0, 0, 0, 0, 0, 7};
+  std::ostringstream os;
+  write_histogram(os, {{"", &s}});
+  // A single column's largest bin fills the whole bar of 44 marks.
+  EXPECT_NE(os.str().find("  0.9-1.0           7 " + std::string(44, '#') + "\n"), std::string::npos) << os.str();
+}
+
+// Each row of the table shows its own value: poor, inverted and degenerate
+// tets are different things (a poor tet is not inverted), as are min, mean
+// and max.
+TEST(CliPieces, QualityTableRowsShowTheirOwnValues) {
+  QualitySummary s;
+  s.min = 0.125;
+  s.mean = 0.5;
+  s.max = 0.875;
+  s.below_0_1 = 3000;
+  s.inverted = 1;
+  s.degenerate = 20;
+  std::ostringstream os;
+  write_quality_table(os, {{"", &s}});
+  const std::string text = os.str();
+  // A row: the label left-aligned in 28 columns, the value right-aligned in 12.
+  const auto row = [](const std::string& label, const std::string& value) {
+    return "  " + label + std::string(28 - label.size(), ' ') + std::string(12 - value.size(), ' ') + value + "\n";
+  };
+  EXPECT_NE(text.find(row("tets with q < 0.1", "3,000")), std::string::npos) << text;
+  EXPECT_NE(text.find(row("inverted tets", "1")), std::string::npos) << text;
+  EXPECT_NE(text.find(row("degenerate tets", "20")), std::string::npos) << text;
+  EXPECT_NE(text.find(row("radius ratio  min", "0.1250")), std::string::npos) << text;
+  EXPECT_NE(text.find(row("              mean", "0.5000")), std::string::npos) << text;
+  EXPECT_NE(text.find(row("              max", "0.8750")), std::string::npos) << text;
+  // Two columns are told apart by their titles, in a header line.
+  std::ostringstream two;
+  write_quality_table(two, {{"before", &s}, {"after", &s}});
+  EXPECT_EQ(two.str().rfind("  " + std::string(28, ' ') + "      before       after\n", 0), 0u) << two.str();
+}
+
 TEST(CliPieces, HistogramBarsShareOneScale) {
   QualitySummary a, b;
   a.histogram = {0, 0, 0, 0, 0, 0, 0, 0, 100, 0};
@@ -1063,6 +1262,26 @@ TEST(CliPieces, HistogramBarsShareOneScale) {
   EXPECT_TRUE(saw_first_bin);
 }
 
+// Qualities are shown with four decimals; only values too small to show
+// that way switch to scientific notation, negative ones (inverted tets)
+// included, and an exact zero stays "0.0000".
+// With no worst tets to list (quality --worst 0, or an empty mesh) the text
+// report has no table header announcing "0 worst tets".
+TEST(CliPieces, NoWorstTetsWriteNothing) {
+  std::ostringstream os;
+  write_worst_tets(os, {});
+  EXPECT_EQ(os.str(), "");
+}
+
+TEST(CliPieces, QualityTextKeepsTinyValuesOfEitherSign) {
+  EXPECT_EQ(quality_text(0.0), "0.0000");
+  EXPECT_EQ(quality_text(0.25), "0.2500");
+  EXPECT_EQ(quality_text(-0.25), "-0.2500");
+  EXPECT_EQ(quality_text(-1.0), "-1.0000");
+  EXPECT_EQ(quality_text(2e-6), "2.00e-06");
+  EXPECT_EQ(quality_text(-2e-6), "-2.00e-06");
+}
+
 TEST(CliPieces, ThousandsSeparators) {
   EXPECT_EQ(with_thousands(0), "0");
   EXPECT_EQ(with_thousands(999), "999");
@@ -1082,6 +1301,30 @@ SweepProgress report_with_quality(int sweep, std::int64_t accepted, MinMeanQuali
     return q;
   };
   return p;
+}
+
+// A terminal has no "clear to end of line" here: a shorter line drawn over a
+// longer one must be padded with spaces, or the tail of the old one stays;
+// at the end the line is blanked, not merely returned to.
+TEST(CliPieces, ProgressLinePadsOverALongerPreviousLine) {
+  using std::chrono::milliseconds;
+  ProgressLine::Clock::time_point clock{};
+  const auto now = [&clock] { return clock; };
+  int calls = 0;
+  std::ostringstream os;
+  ProgressLine line(os, ProgressLine::Style::Redraw, 10, milliseconds(0), milliseconds(0), now);
+  line.update(report_with_quality(1, 1234567, {0.0123456, 0.61234}, clock, milliseconds(0), calls));
+  const std::size_t long_width = os.str().size() - 1;  // without its '\r'
+  line.update(report_with_quality(2, 5, {0.5, 0.5}, clock, milliseconds(0), calls));
+  const std::string second = os.str().substr(long_width + 1);
+  const std::string text = "\r  sweep 2/10  moved 5 up to 0.5  q min 0.5  mean 0.5";
+  ASSERT_LT(text.size(), long_width + 1);
+  EXPECT_EQ(second, text + std::string(long_width + 1 - text.size(), ' '));
+  // Finishing blanks the line it drew and returns to its start, so that the
+  // next message does not land after the progress text.
+  const std::size_t before_finish = os.str().size();
+  line.finish();
+  EXPECT_EQ(os.str().substr(before_finish), "\r" + std::string(text.size() - 1, ' ') + "\r");
 }
 
 TEST(CliPieces, ProgressLineRedrawsInPlaceAndErasesItself) {
@@ -1194,6 +1437,24 @@ TEST(CliPieces, ProgressLineWaitsTheDelayAndPacesItsQualityPasses) {
   clock += milliseconds(100);
   line.update(report_with_quality(5, 1, q, clock, milliseconds(1), calls));
   EXPECT_EQ(calls, 3);
+}
+
+// The refusal says which of the usual mistakes it is: a directory that is
+// not there (a typo in the path) or a file where a directory should be.
+TEST_F(CliFiles, OutputCheckNamesWhyTheDirectoryWillNotDo) {
+  const auto why = [](const std::string& p) {
+    try {
+      check_output_location(p);
+    } catch (const OutputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no OutputError");
+  };
+  const std::string missing = why(path("missing/x.vtu"));
+  EXPECT_NE(missing.find("directory '" + path("missing") + "' does not exist"), std::string::npos) << missing;
+  std::ofstream(path("file")) << "x";
+  const std::string file = why(path("file/x.vtu"));
+  EXPECT_NE(file.find("'" + path("file") + "' is not a directory"), std::string::npos) << file;
 }
 
 TEST_F(CliFiles, OutputCheckRejectsDirectoriesAndMissingParents) {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -319,6 +320,28 @@ TEST(CpuSmoother, GpuSweepCapIsChecked) {
   EXPECT_THROW(check_gpu_sweeps(o), UsageError);
 }
 
+// The names are an interface, not decoration: bench family names
+// (Form/Layout/Strategy/size) are matched by users' --benchmark_filter
+// regular expressions, `stop_reason` is a documented report field, and the
+// method and precision names are the README's option values.
+TEST(CpuSmoother, OptionAndStopReasonNamesAreTheDocumentedOnes) {
+  EXPECT_STREQ(to_string(Method::Adaptive), "adaptive");
+  EXPECT_STREQ(to_string(Method::Ordinary), "ordinary");
+  EXPECT_STREQ(to_string(Form::A), "A");
+  EXPECT_STREQ(to_string(Form::B), "B");
+  EXPECT_STREQ(to_string(Layout::AoS), "AoS");
+  EXPECT_STREQ(to_string(Layout::SoA), "SoA");
+  EXPECT_STREQ(to_string(Strategy::SingleBlock), "SingleBlock");
+  EXPECT_STREQ(to_string(Strategy::MultiBlock), "MultiBlock");
+  EXPECT_STREQ(to_string(Strategy::Coloured), "Coloured");
+  EXPECT_STREQ(to_string(Precision::Float), "float");
+  EXPECT_STREQ(to_string(Precision::Double), "double");
+  EXPECT_STREQ(to_string(StopReason::NoMoves), "no-moves");
+  EXPECT_STREQ(to_string(StopReason::Tolerance), "tolerance");
+  EXPECT_STREQ(to_string(StopReason::MaxIterations), "max-iterations");
+  EXPECT_STREQ(to_string(StopReason::NotStarted), "not-started");
+}
+
 TEST(CpuSmoother, RejectsBadOptions) {
   TetMesh m = testing::regular_tet();
   SmoothOptions o;
@@ -333,6 +356,36 @@ TEST(CpuSmoother, RejectsBadOptions) {
   o = SmoothOptions{};
   o.coloured_blocks = -1;
   EXPECT_THROW(smooth_cpu(m, o), UsageError);
+}
+
+// An infinite tolerance passes "tolerance >= 0" but would stop every run
+// after one sweep whatever it moved: the library rejects it itself, not only
+// the command line's parser.
+TEST(CpuSmoother, RejectsAnInfiniteTolerance) {
+  TetMesh m = testing::regular_tet();
+  SmoothOptions o;
+  o.tolerance = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(smooth_cpu(m, o), UsageError);
+}
+
+// Every lane count the coloured GPU strategy documents (0 = automatic) is
+// accepted; the check runs on every backend, so a CPU run must not refuse one.
+TEST(CpuSmoother, AcceptsEveryDocumentedColouredLaneCount) {
+  for (int lanes : {0, 8, 16, 32}) {
+    SmoothOptions o;
+    o.coloured_lanes = lanes;
+    EXPECT_NO_THROW(check_smooth_options(o)) << lanes;
+  }
+}
+
+// The CUDA MultiBlock loop advances check_every sweeps between host checks:
+// zero would never advance, so it is refused up front like the other options.
+TEST(CpuSmoother, RejectsACheckIntervalOfZero) {
+  SmoothOptions o;
+  o.check_every = 0;
+  EXPECT_THROW(check_smooth_options(o), UsageError);
+  o.check_every = 1;
+  EXPECT_NO_THROW(check_smooth_options(o));
 }
 
 TEST(CpuSmoother, PaperModel5kLosesPoorTets) {

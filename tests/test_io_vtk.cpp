@@ -5,21 +5,30 @@
 // naming file:line or the byte offset.
 #include <gtest/gtest.h>
 #include <lzma.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
 
 #include "input_error.hpp"
 #include "mesh/errors.hpp"
+#include "mesh/io/base64.hpp"
+#include "mesh/io/inflate.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
+#include "mesh/io/xml_scan.hpp"
 #include "support/test_meshes.hpp"
 
 namespace tetsmooth {
@@ -277,6 +286,256 @@ TEST(VtuErrors, BadBase64) {
   const std::string msg = vtu_error(text);
   EXPECT_NE(msg.find("mesh.vtu:13"), std::string::npos) << msg;
   EXPECT_NE(msg.find("base64"), std::string::npos) << msg;
+}
+
+// RFC 4648's own examples, and groups padded after one character, which
+// cannot encode a byte ("Q===" would otherwise decode to nothing and pass).
+TEST(Base64, DecodesTheRfcExamplesAndRejectsPaddingAfterOneCharacter) {
+  const auto decoded = [](std::string_view text) {
+    std::vector<unsigned char> out;
+    std::size_t bad_at = 0;
+    EXPECT_TRUE(base64_decode(text, out, bad_at)) << text;
+    return std::string(out.begin(), out.end());
+  };
+  EXPECT_EQ(decoded("Zg=="), "f");
+  EXPECT_EQ(decoded("Zm8="), "fo");
+  EXPECT_EQ(decoded("Zm9v"), "foo");
+  EXPECT_EQ(decoded("Zm9v\nYmFy"), "foobar");
+  std::vector<unsigned char> out;
+  std::size_t bad_at = 0;
+  EXPECT_FALSE(base64_decode("Zm9vQ===", out, bad_at));
+  EXPECT_EQ(bad_at, 5u);
+}
+
+// Padding may close any group (VTK encodes a block's header apart from its
+// data), but nothing may follow '=' inside a group, and a last group of two
+// or three characters is cut short: both are corrupt data, not a shorter
+// array.
+TEST(Base64, RejectsDataAfterPaddingAndAnIncompleteLastGroup) {
+  std::vector<unsigned char> out;
+  std::size_t bad_at = 0;
+  EXPECT_TRUE(base64_decode("Zg==Zm8=", out, bad_at));
+  EXPECT_EQ(std::string(out.begin(), out.end()), "ffo");
+  EXPECT_FALSE(base64_decode("Zg=v", out, bad_at));
+  EXPECT_EQ(bad_at, 3u);
+  for (const char* cut : {"Zm9vZm", "Zm9vZm9"}) {
+    EXPECT_FALSE(base64_decode(cut, out, bad_at)) << cut;
+    EXPECT_EQ(bad_at, 4u) << cut;
+  }
+}
+
+// A zlib stream cut short is named as truncated, the usual cause (a file
+// copied or downloaded in part), rather than as a size mismatch.
+TEST(Inflate, TruncatedZlibStreamIsNamedAsSuch) {
+  const std::string text(1000, 'x');
+  std::vector<unsigned char> packed(compressBound(text.size()));
+  uLongf size = packed.size();
+  ASSERT_EQ(compress2(packed.data(), &size, reinterpret_cast<const Bytef*>(text.data()), text.size(), 9), Z_OK);
+  std::vector<unsigned char> out;
+  EXPECT_EQ(inflate_stream(Codec::Zlib, packed.data(), size, text.size(), out), "");
+  EXPECT_EQ(std::string(out.begin(), out.end()), text);
+  out.clear();
+  EXPECT_EQ(inflate_stream(Codec::Zlib, packed.data(), size - 4, text.size(), out),
+            "truncated: the zlib stream ends early");
+}
+
+// Bytes after the end of a stream are not part of it: a block's compressed
+// size that runs past its stream is named, for either codec.
+TEST(Inflate, BytesAfterTheStreamAreNamed) {
+  const std::string text(1000, 'x');
+  std::vector<unsigned char> zlib(compressBound(text.size()) + 4);
+  uLongf zsize = zlib.size();
+  ASSERT_EQ(compress2(zlib.data(), &zsize, reinterpret_cast<const Bytef*>(text.data()), text.size(), 9), Z_OK);
+  std::vector<unsigned char> xz(lzma_stream_buffer_bound(text.size()) + 4);
+  std::size_t xsize = 0;
+  ASSERT_EQ(lzma_easy_buffer_encode(6, LZMA_CHECK_CRC64, nullptr, reinterpret_cast<const uint8_t*>(text.data()),
+                                    text.size(), xz.data(), &xsize, xz.size() - 4),
+            LZMA_OK);
+  std::vector<unsigned char> out;
+  EXPECT_EQ(inflate_stream(Codec::Zlib, zlib.data(), zsize + 3, text.size(), out),
+            "3 bytes follow the end of the zlib stream");
+  out.clear();
+  EXPECT_EQ(inflate_stream(Codec::Xz, xz.data(), xsize + 1, text.size(), out),
+            "1 byte follows the end of the xz stream");
+}
+
+// The header's size bounds what a stream may yield: a stream that yields
+// more is stopped there (a small file must not expand without limit), and
+// one that yields less is as wrong, for either codec.
+TEST(Inflate, StreamsYieldExactlyTheSizeTheHeaderSays) {
+  const std::string text(100000, 'x');
+  std::vector<unsigned char> zlib(compressBound(text.size()));
+  uLongf zsize = zlib.size();
+  ASSERT_EQ(compress2(zlib.data(), &zsize, reinterpret_cast<const Bytef*>(text.data()), text.size(), 9), Z_OK);
+  std::vector<unsigned char> xz(lzma_stream_buffer_bound(text.size()));
+  std::size_t xsize = 0;
+  ASSERT_EQ(lzma_easy_buffer_encode(6, LZMA_CHECK_CRC64, nullptr, reinterpret_cast<const uint8_t*>(text.data()),
+                                    text.size(), xz.data(), &xsize, xz.size()),
+            LZMA_OK);
+  for (const auto& [codec, data, size] :
+       {std::tuple{Codec::Zlib, zlib.data(), std::size_t{zsize}}, std::tuple{Codec::Xz, xz.data(), xsize}}) {
+    std::vector<unsigned char> out;
+    EXPECT_EQ(inflate_stream(codec, data, size, 10, out), "decompresses to more than the 10 bytes the header says");
+    EXPECT_LE(out.size(), 11u);
+    out.clear();
+    EXPECT_EQ(inflate_stream(codec, data, size, 200000, out), "decompresses to 100000 bytes, the header says 200000");
+  }
+}
+
+// Every reader validates what it returns (mesh/validate.hpp): a VTU with a
+// non-finite coordinate is an input error, not a mesh that poisons the
+// smoother's arithmetic.
+TEST(VtuErrors, NonFiniteCoordinateIsRejected) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.xyz[4] = std::numeric_limits<double>::quiet_NaN();
+  std::ostringstream out;
+  write_vtu(mesh, out, {});
+  const std::string msg = vtu_error(out.str());
+  EXPECT_NE(msg.find("node 1 has a non-finite coordinate y"), std::string::npos) << msg;
+}
+
+// A block holding more bytes than the piece declares is a file whose counts
+// disagree: reading only the declared part would silently drop data.
+TEST(VtuErrors, ABlockLargerThanTheDeclaredCountIsRejected) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.xyz.insert(mesh.xyz.end(), {5, 5, 5});  // a fifth node, in no tet
+  std::ostringstream out;
+  write_vtu(mesh, out, {});
+  const std::string msg = vtu_error(replaced(out.str(), "NumberOfPoints=\"5\"", "NumberOfPoints=\"4\""));
+  EXPECT_NE(msg.find("block holds 120 bytes, expected 96"), std::string::npos) << msg;
+}
+
+// A negative count is named as such, not as a size beyond the file.
+TEST(VtuErrors, NegativeCountsInThePieceAreNamed) {
+  const std::string ascii = file_text("vtu_ascii.vtu");
+  for (const char* attribute : {"NumberOfPoints", "NumberOfCells"}) {
+    const std::string at = std::string(attribute) + "=\"";
+    const std::size_t value = ascii.find(at) + at.size();
+    std::string text = ascii;
+    text.insert(value, "-");
+    const std::string msg = vtu_error(text);
+    EXPECT_NE(msg.find(std::string("missing or bad ") + attribute), std::string::npos) << msg;
+  }
+}
+
+// The first tag of `text`, scanned as a reader would.
+XmlTag first_tag(const std::string& text) {
+  XmlScanner xml(text, "x.xml");
+  XmlTag tag;
+  EXPECT_TRUE(xml.next(tag)) << text;
+  return tag;
+}
+
+// Names with XML's special characters survive a write and a scan: the writer
+// escapes all five, and the scanner decodes them back.
+TEST(XmlScan, EscapedAttributeValuesDecodeBack) {
+  const std::string name = "a&b<c>d\"e'f&amp;";
+  EXPECT_EQ(xml_escape(name), "a&amp;b&lt;c&gt;d&quot;e&apos;f&amp;amp;");
+  const XmlTag tag = first_tag("<DataArray Name=\"" + xml_escape(name) + "\"/>");
+  ASSERT_NE(tag.attribute("Name"), nullptr);
+  EXPECT_EQ(*tag.attribute("Name"), name);
+}
+
+// Character references: a NUL is not an XML character, and a huge number is
+// an input error naming the reference, not an exception from the number
+// conversion (which the command line would report as an internal error).
+TEST(XmlScan, BadCharacterReferencesAreInputErrors) {
+  EXPECT_EQ(*first_tag("<X a=\"&#65;&#x42;\"/>").attribute("a"), "AB");
+  for (const char* ref : {"&#0;", "&#x0;", "&#99999999999999999999;", "&#x110000;"}) {
+    const std::string msg =
+        testing::input_error_message([&] { first_tag(std::string("<X a=\"") + ref + "\"/>"); }, ref);
+    EXPECT_NE(msg.find("bad character reference"), std::string::npos) << ref << ": " << msg;
+  }
+}
+
+// Code points at the edges of UTF-8's 1-, 2-, 3- and 4-byte forms, and the
+// shortest references, one decimal digit ("&#9;", a tab, is valid XML).
+TEST(XmlScan, CharacterReferencesBecomeUtf8) {
+  EXPECT_EQ(*first_tag("<X a=\"&#9;&#xA;\"/>").attribute("a"), "\t\n");
+  EXPECT_EQ(*first_tag("<X a=\"&#x7F;&#x80;&#x7FF;&#x800;&#xFFFF;&#x10000;&#x10FFFF;\"/>").attribute("a"),
+            "\x7F\xC2\x80\xDF\xBF\xE0\xA0\x80\xEF\xBF\xBF\xF0\x90\x80\x80\xF4\x8F\xBF\xBF");
+}
+
+// A value in single quotes may hold double quotes, and the other way round.
+TEST(XmlScan, EitherQuoteDelimitsAValue) {
+  const XmlTag tag = first_tag("<X a='say \"hi\"' b=\"it's\"/>");
+  EXPECT_EQ(*tag.attribute("a"), "say \"hi\"");
+  EXPECT_EQ(*tag.attribute("b"), "it's");
+}
+
+// An end tag carries no attributes: "</DataArray a=\"1\">" is malformed.
+TEST(XmlScan, AttributesInAnEndTagAreAnError) {
+  const std::string msg = testing::input_error_message([] { first_tag("</X a=\"1\">"); }, "end tag");
+  EXPECT_NE(msg.find("unexpected characters in the end tag 'X'"), std::string::npos) << msg;
+}
+
+// An attribute needs a name: '<X ="1"/>' is malformed, not an attribute
+// called "".
+TEST(XmlScan, AnAttributeWithoutANameIsAnError) {
+  const std::string msg = testing::input_error_message([] { first_tag("<X =\"1\"/>"); }, "nameless attribute");
+  EXPECT_NE(msg.find("malformed attribute in element 'X'"), std::string::npos) << msg;
+}
+
+// A comment ends at "-->", not at the first '>' inside it (ParaView and
+// hand-edited files put arbitrary text in comments).
+TEST(XmlScan, CommentsMayHoldAngleBrackets) {
+  const XmlTag tag = first_tag("<!-- a > b, <c> --><VTKFile type=\"UnstructuredGrid\">");
+  EXPECT_EQ(tag.name, "VTKFile");
+}
+
+// Appended data start after '_'; without it the reader would take the first
+// data byte for the marker and read every value one byte off.
+TEST(VtuErrors, AppendedDataWithoutTheUnderscoreIsRejected) {
+  std::ostringstream out;
+  write_vtu(testing::regular_tet(), out, {});
+  const std::string msg = vtu_error(replaced(out.str(), "\n   _", "\n   "));
+  EXPECT_NE(msg.find("AppendedData must start with '_'"), std::string::npos) << msg;
+}
+
+// Inline base64 whose data stop short of what the block header says is
+// truncated; the reader must not read past what was decoded.
+TEST(VtuErrors, InlineBlockShorterThanItsHeaderIsTruncated) {
+  const std::string msg = vtu_error(replaced(file_text("vtu_base64.vtu"), "AwAAAA==CgoF", "AwAAAA=="));
+  EXPECT_NE(msg.find("truncated: the file ends inside the block of 3 bytes"), std::string::npos) << msg;
+}
+
+// Elements VTU cannot hold are refused before anything is written, and the
+// refusal names the file the user asked for.
+TEST(VtuErrors, UnwritableBlocksNameTheFileAndWriteNothing) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("tetsmooth_vtu_blocks_" + std::to_string(::getpid()) + ".vtu"))
+          .string();
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
+  try {
+    write_vtu_file(mesh, path, {});
+    ADD_FAILURE() << "a hexahedron was written to VTU";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write '" + path + "'"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+// Windows editors start UTF-8 files with a byte order mark; it is not
+// content, and the file reads as without it.
+TEST(Vtu, AUtf8ByteOrderMarkIsSkipped) {
+  const std::string ascii = file_text("vtu_ascii.vtu");
+  std::istringstream plain(ascii), marked("\xEF\xBB\xBF" + ascii);
+  expect_same_mesh(read_vtu(marked, "mesh.vtu"), read_vtu(plain, "mesh.vtu"));
+}
+
+// A raw appended file cut inside the last block's byte count: the reader
+// names the truncated header instead of reading a count past the end.
+TEST(VtuErrors, FileCutInsideABlockHeaderIsTruncated) {
+  std::ostringstream out;
+  write_vtu(testing::regular_tet(), out, {});
+  const std::string text = out.str();
+  const std::size_t types = text.find("Name=\"types\"");
+  const std::size_t offset_at = text.find("offset=\"", types) + 8;
+  const std::size_t offset = std::stoul(text.substr(offset_at));
+  const std::size_t data = text.find("\n   _") + 5;
+  const std::string msg = vtu_error(text.substr(0, data + offset + 3));  // 3 of the 8 header bytes
+  EXPECT_NE(msg.find("truncated block header"), std::string::npos) << msg;
 }
 
 TEST(LegacyVtk, RoundTripKeepsTetsBlocksTagsAndFixedNodes) {
@@ -1013,6 +1272,18 @@ TEST(VtkValuePlaces, VtuAsciiNodeIndexOutOfRangeNamesItsOwnLine) {
   EXPECT_EQ(vtu_error(offsets).rfind(line_of(offsets, "99 13", "mesh.vtu") +
                                          " cell 2: offset 99 outside the connectivity array of 13", 0),
             0u)
+      << vtu_error(offsets);
+}
+
+// Structural errors in the cells name what is wrong, not a consequence of it:
+// a negative last offset is not "more than the file", and an offset out of
+// range is placed on its own line even when the next offset is on another.
+TEST(VtuErrors, OffsetProblemsAreNamedWhereTheyAre) {
+  const std::string ascii = file_text("vtu_ascii.vtu");
+  const std::string negative = vtu_error(replaced(ascii, "4 8 11 13", "4 8 11 -13"));
+  EXPECT_NE(negative.find("negative cell offset"), std::string::npos) << negative;
+  const std::string offsets = replaced(ascii, "4 8 11 13", "4 8\n99\n13");
+  EXPECT_EQ(vtu_error(offsets).rfind(line_of(offsets, "99\n13", "mesh.vtu") + " cell 2: offset 99", 0), 0u)
       << vtu_error(offsets);
 }
 

@@ -1,7 +1,6 @@
 // The command-line tool in-process: parsing and validation of arguments,
 // exit codes, and the content of the reports.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -24,6 +23,7 @@
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/writable_check.hpp"
 #include "mesh/topology.hpp"
+#include "scratch_dir.hpp"
 #include "test_meshes.hpp"
 
 namespace tetsmooth::cli {
@@ -69,13 +69,6 @@ CliRun run(std::vector<std::string> args) {
 // A fresh directory per test, removed afterwards.
 class CliFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("tetsmooth_test_cli_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::vector<std::string> files() const {
     std::vector<std::string> names;
@@ -91,7 +84,8 @@ class CliFiles : public ::testing::Test {
     return p;
   }
 
-  fs::path dir_;
+  tetsmooth::testing::ScratchDir scratch_{"cli"};
+  const fs::path dir_ = scratch_.path();
 };
 
 // --- parsing ---------------------------------------------------------------

@@ -11,6 +11,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/tsm_cache.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
 
@@ -110,11 +111,11 @@ TEST(TsmCache, RoundTripIsBitExact) {
 }
 
 TEST(TsmCache, FileRoundTrip) {
-  const std::filesystem::path path = std::filesystem::temp_directory_path() / "tetsmooth_cache_roundtrip.tsm";
+  const testing::ScratchDir dir("cache");
+  const std::string path = dir.file("roundtrip.tsm");
   const TetMesh mesh = testing::cube_with_centre(0.3, 0.6, 0.45);
-  write_cache_file(mesh, path.string());
-  const TetMesh back = read_cache_file(path.string());
-  std::filesystem::remove(path);
+  write_cache_file(mesh, path);
+  const TetMesh back = read_cache_file(path);
   EXPECT_EQ(back.xyz, mesh.xyz);
   EXPECT_EQ(back.tets, mesh.tets);
 }

@@ -18,6 +18,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 
 namespace tetsmooth {
@@ -27,23 +28,11 @@ namespace fs = std::filesystem;
 
 class IoDir : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    // The process id keeps two runs of this binary at once (two build trees,
-    // two workers on one host) out of each other's directory.
-    std::string name = std::string("tetsmooth_io_") + info->test_suite_name() + "_" + info->name() + "_" +
-                       std::to_string(::getpid());
-    for (char& c : name)
-      if (c == '/') c = '_';
-    dir_ = fs::temp_directory_path() / name;
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::size_t files() const { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {})); }
 
-  fs::path dir_;
+  testing::ScratchDir scratch_{"io"};
+  const fs::path dir_ = scratch_.path();
 };
 
 std::string contents(const std::string& path) {

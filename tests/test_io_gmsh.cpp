@@ -20,6 +20,7 @@
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/writable_check.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
 
@@ -364,15 +365,15 @@ TEST(GmshIo, OwnFieldsAreNotNoted) {
   EXPECT_EQ(read_text(std::string(kMinimal) + data("NodeData", "quality")).extras.read_notes.size(), 1u);
   EXPECT_EQ(read_text(std::string(kMinimal) + data("ElementData", "stress")).extras.read_notes.size(), 1u);
   // tetsmooth's own output, in every MSH flavour, with its fields.
+  const testing::ScratchDir dir("gmsh");
   for (const MeshFormat f : {MeshFormat::Msh41, MeshFormat::Msh41Binary, MeshFormat::Msh22}) {
-    const std::string path = (std::filesystem::temp_directory_path() / "tetsmooth_own_fields.msh").string();
+    const std::string path = dir.file("own_fields.msh");
     MeshFields fields;
     const TetMesh mesh = testing::cube_with_centre();
     fields.tet_scalars.emplace_back("quality", std::vector<double>(mesh.num_tets(), 0.5));
     fields.node_scalars.emplace_back("boundary", std::vector<double>(mesh.num_nodes(), 1.0));
     write_mesh(mesh, path, f, fields);
     EXPECT_TRUE(read_mesh(path).extras.read_notes.empty()) << format_name(f);
-    std::filesystem::remove(path);
   }
 }
 
@@ -858,15 +859,12 @@ TEST(GmshIo, NegativeRegionTagsBecomeNewPositiveOnes) {
 }
 
 TEST(GmshIo, FileWriterReplacesTargetOrThrows) {
-  const auto dir = std::filesystem::temp_directory_path() / "tetsmooth_gmsh_io";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  const std::string path = (dir / "out.msh").string();
+  const testing::ScratchDir dir("gmsh");
+  const std::string path = dir.file("out.msh");
   const TetMesh mesh = testing::cube_grid(2);
   write_gmsh_file(mesh, path, MshFlavour::V41Binary, {});
   EXPECT_EQ(read_gmsh_file(path).xyz, mesh.xyz);
-  EXPECT_THROW(write_gmsh_file(mesh, (dir / "missing" / "out.msh").string(), MshFlavour::V41Ascii, {}), OutputError);
-  std::filesystem::remove_all(dir);
+  EXPECT_THROW(write_gmsh_file(mesh, dir.file("missing/out.msh"), MshFlavour::V41Ascii, {}), OutputError);
 }
 
 // Two tets on volumes 1 and 2, both volumes in physical group 13 as well

@@ -12,6 +12,7 @@
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
 
@@ -255,15 +256,12 @@ TEST(MeditIo, WriterRefusesWhatMeditCannotHold) {
 }
 
 TEST(MeditIo, FileWriterReplacesTargetOrThrows) {
-  const auto dir = std::filesystem::temp_directory_path() / "tetsmooth_medit_io";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const testing::ScratchDir dir("medit");
   const TetMesh mesh = testing::cube_grid(2);
-  const std::string path = (dir / "out.mesh").string();
+  const std::string path = dir.file("out.mesh");
   write_medit_file(mesh, path);
   EXPECT_EQ(read_medit_file(path).xyz, mesh.xyz);
-  EXPECT_THROW(write_medit_file(mesh, (dir / "missing" / "out.mesh").string()), OutputError);
-  std::filesystem::remove_all(dir);
+  EXPECT_THROW(write_medit_file(mesh, dir.file("missing/out.mesh")), OutputError);
 }
 
 // An empty element section leaves no block behind, so a format that has no

@@ -10,6 +10,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/tetgen_io.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 
 namespace tetsmooth {
@@ -19,16 +20,10 @@ namespace fs = std::filesystem;
 
 class TetGenIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tetsmooth_tetgen_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::string path(const std::string& name) const { return scratch_.file(name); }
 
-  fs::path dir_;
+  testing::ScratchDir scratch_{"tetgen"};
+  const fs::path dir_ = scratch_.path();
 };
 
 // The InputError message from reading the two texts as box.node / box.ele.

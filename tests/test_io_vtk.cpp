@@ -5,7 +5,6 @@
 // naming file:line or the byte offset.
 #include <gtest/gtest.h>
 #include <lzma.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -29,6 +28,7 @@
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
 #include "mesh/io/xml_scan.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 
 namespace tetsmooth {
@@ -502,9 +502,8 @@ TEST(VtuErrors, InlineBlockShorterThanItsHeaderIsTruncated) {
 // Elements VTU cannot hold are refused before anything is written, and the
 // refusal names the file the user asked for.
 TEST(VtuErrors, UnwritableBlocksNameTheFileAndWriteNothing) {
-  const std::string path =
-      (std::filesystem::temp_directory_path() / ("tetsmooth_vtu_blocks_" + std::to_string(::getpid()) + ".vtu"))
-          .string();
+  const testing::ScratchDir dir("vtu");
+  const std::string path = dir.file("blocks.vtu");
   TetMesh mesh = testing::cube_with_centre();
   mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
   try {

@@ -2,7 +2,6 @@
 // their byte counts must match the arrays each method reads, counted here
 // from the tets without the library's topology.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -16,6 +15,7 @@
 #include "bench/bench_registry.hpp"
 #include "mesh/io/tsm_cache.hpp"
 #include "run_counters.hpp"
+#include "scratch_dir.hpp"
 #include "test_meshes.hpp"
 
 namespace tetsmooth::bench {
@@ -90,19 +90,14 @@ double counted_bytes_per_sweep(const testing::Counters& c) {
 class BenchRegistry : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tetsmooth_test_bench_registry_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
     mesh_ = tetsmooth::testing::cube_grid(4, 0.2);
     write_cache_file(mesh_, (dir_ / "5k-seed1.tsm").string());
     ::setenv("TETSMOOTH_MESH_CACHE", dir_.c_str(), 1);
   }
-  void TearDown() override {
-    ::unsetenv("TETSMOOTH_MESH_CACHE");
-    fs::remove_all(dir_);
-  }
+  void TearDown() override { ::unsetenv("TETSMOOTH_MESH_CACHE"); }
 
-  fs::path dir_;
+  tetsmooth::testing::ScratchDir scratch_{"bench_registry"};
+  const fs::path dir_ = scratch_.path();
   TetMesh mesh_;
 };
 

@@ -368,5 +368,20 @@ TEST_F(IoDir, WriteMeshFailureLeavesNoFile) {
   EXPECT_EQ(files(), 0u);
 }
 
+// A directory opens as a stream on Linux and fails only at the first read;
+// every reader says what it is instead of reporting a read error at line 1.
+TEST_F(IoDir, DirectoryInputIsNamedAsSuch) {
+  for (const char* name : {"d.vtk", "d.vtu", "d.msh", "d.mesh"}) {
+    fs::create_directory(path(name));
+    try {
+      read_mesh(path(name));
+      ADD_FAILURE() << name << ": no InputError";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(std::string(name) + ": is a directory, not a mesh file"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tetsmooth

@@ -1044,5 +1044,384 @@ TEST(GmshIo, OutputLossesCountNodesThatGmshEntitiesPin) {
   }
 }
 
+// Groupings that MSH 2.2 lines give where an element's lines do not make it
+// a member of every group of its elementary entity: each keeps its first
+// group, with a note counting the elements listed more than once, and no
+// $Entities is made up (it would put elements in groups they were not in).
+TEST(GmshIo, Msh22GroupsNotSharedByTheWholeEntityKeepTheFirst) {
+  const std::string head =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n$EndNodes\n";
+  struct Case {
+    const char* lines;  // element lines: tet 1 = nodes 1 2 3 4, tet 2 = nodes 1 3 2 5
+    const char* repeated;
+    std::vector<int> tags;
+  };
+  const Case cases[] = {
+      // Elementary tag 0 is no entity that groups could be declared on.
+      {"1 4 2 11 0 1 2 3 4\n1 4 2 13 0 1 2 3 4\n2 4 2 11 0 1 3 2 5\n2 4 2 13 0 1 3 2 5\n", "2", {11, 11}},
+      // Tet 2 is in no group, though lines == elements * groups.
+      {"1 4 2 11 1 1 2 3 4\n1 4 2 13 1 1 2 3 4\n1 4 2 11 1 1 2 3 4\n2 4 2 0 1 1 3 2 5\n", "1", {11, 0}},
+      // Both tets in both groups, but tet 2 lists 13 first: its tag is 13.
+      {"1 4 2 11 1 1 2 3 4\n1 4 2 13 1 1 2 3 4\n2 4 2 13 1 1 3 2 5\n2 4 2 11 1 1 3 2 5\n", "2", {11, 13}},
+      // An element listed twice in no group at all.
+      {"1 4 2 0 1 1 2 3 4\n1 4 2 0 1 1 2 3 4\n2 4 2 0 1 1 3 2 5\n", "1", {0, 0}},
+      // Three lines are still one element listed more than once.
+      {"1 4 2 11 1 1 2 3 4\n1 4 2 13 1 1 2 3 4\n1 4 2 17 1 1 2 3 4\n2 4 2 11 1 1 3 2 5\n", "1", {11, 11}},
+  };
+  for (const Case& c : cases) {
+    const std::string lines = c.lines;
+    const std::size_t count = static_cast<std::size_t>(std::count(lines.begin(), lines.end(), '\n'));
+    const TetMesh mesh = read_text(head + "$Elements\n" + std::to_string(count) + "\n" + lines + "$EndElements\n");
+    EXPECT_EQ(mesh.num_tets(), 2u) << lines;
+    EXPECT_EQ(mesh.extras.tet_tags, c.tags) << lines;
+    EXPECT_EQ(raw_section(mesh, "$Entities"), nullptr) << lines;
+    EXPECT_EQ(mesh.extras.read_notes,
+              (std::vector<std::string>{std::string(c.repeated) +
+                                        " elements are listed once per physical group, but not every element of "
+                                        "their elementary entity is in the same groups: they keep only their first "
+                                        "group"}))
+        << lines;
+  }
+}
+
+// Tag 0 is a valid node tag, so a second 0 is a repeated tag like any other.
+TEST(GmshIo, RepeatedNodeTagZeroIsRefused) {
+  const std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n0 0 0 0\n0 1 0 0\n2 0 1 0\n3 0 0 1\n$EndNodes\n"
+      "$Elements\n1\n1 4 2 1 1 0 1 2 3\n$EndElements\n";
+  const std::string message = read_error(text);
+  EXPECT_NE(message.find("node tag 0 occurs twice in $Nodes"), std::string::npos) << message;
+}
+
+// An MSH 2.2 binary file: counts as text lines, nodes as an int tag and
+// three doubles, elements in runs headed by type, count and number of tags.
+class Binary22 {
+ public:
+  Binary22() {
+    s_ = "$MeshFormat\n2.2 1 8\n";
+    i32(1);
+    s_ += "\n$EndMeshFormat\n";
+  }
+  Binary22& text(const std::string& t) {
+    s_ += t;
+    return *this;
+  }
+  Binary22& i32(std::int32_t v) {
+    s_.append(reinterpret_cast<const char*>(&v), 4);
+    return *this;
+  }
+  Binary22& f64(double v) {
+    s_.append(reinterpret_cast<const char*>(&v), 8);
+    return *this;
+  }
+  // $Nodes of the unit tet's four nodes tagged `tags`.
+  Binary22& nodes(const std::int32_t (&tags)[4]) {
+    const double xyz[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    text("$Nodes\n4\n");
+    for (int i = 0; i < 4; ++i) {
+      i32(tags[i]);
+      for (double v : xyz[i]) f64(v);
+    }
+    return text("\n$EndNodes\n");
+  }
+  // One tet element with two tags (physical 7, elementary 1).
+  Binary22& tet(std::int32_t id, const std::int32_t (&nodes)[4]) {
+    i32(id).i32(7).i32(1);
+    for (std::int32_t n : nodes) i32(n);
+    return *this;
+  }
+  const std::string& str() const { return s_; }
+
+ private:
+  std::string s_;
+};
+
+TEST(GmshIo, ReadsBinaryMsh22AndRefusesBadRuns) {
+  const auto file = [](std::int32_t node_tag, std::int32_t element_node, std::int32_t tags, std::int32_t second_run) {
+    Binary22 b;
+    b.nodes({1, 2, 3, node_tag}).text("$Elements\n2\n");
+    b.i32(4).i32(1).i32(tags).i32(1).i32(7).i32(1);  // one tet: number, tags (as many as `tags` says), nodes
+    for (std::int32_t n : {1, 2, 3, element_node}) b.i32(n);
+    b.i32(4).i32(second_run).i32(2);
+    for (std::int32_t k = 0; k < second_run; ++k) b.tet(2 + k, {1, 3, 2, node_tag});
+    return b.text("\n$EndElements\n").str();
+  };
+  // The well-formed file reads: two tets of group 7 on entity 1.
+  const TetMesh mesh = read_text(file(4, 4, 2, 1));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 2, 1, 3}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 7}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{1, 2}));
+
+  struct Bad {
+    std::string text;
+    const char* what;
+  };
+  // A negative tag count would read the run with a wrong layout; a run of 0
+  // or one past the announced total is a corrupt header.
+  const Bad cases[] = {
+      {file(-1, 4, 2, 1), "negative node tag -1"},
+      {file(4, -1, 2, 1), "negative node tag -1"},
+      {file(4, 4, -1, 1), "negative number of element tags -1"},
+      {file(4, 4, 2, 0), "a run of 0 elements does not fit the 1 still to come"},
+      {file(4, 4, 2, 2), "a run of 2 elements does not fit the 1 still to come"},
+  };
+  for (const Bad& c : cases) {
+    const std::string message = testing::input_error_message([&] { read_text(c.text); }, c.what);
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+    EXPECT_NE(offset_in(message), std::string::npos) << message;
+  }
+}
+
+// MSH 4.1 block headers and node tags that do not add up: each is refused
+// naming what is wrong, not read into a mesh of misplaced values.
+TEST(GmshIo, BadMsh41BlocksAndNodeTagsAreRefused) {
+  const BadText cases[] = {
+      {"3 1 0 4\n", "4 1 0 4\n", "t.msh:6:", "entity dimension 4 is not 0, 1, 2 or 3"},
+      {"3 1 0 4\n", "3 1 2 4\n", "t.msh:6:", "parametric flag 2 is not 0 or 1"},
+      {"3 1 4 1\n", "2 1 4 1\n", "t.msh:18:", "element type 4 (tetra) in a block of dimension 2"},
+      {"3 1 4 1\n1 1 2 3 4\n", "3 1 4 2\n1 1 2 3 4\n2 1 3 2 4\n", "t.msh:18:",
+       "the element blocks hold more elements than the 1 announced"},
+      {"$Elements\n1 1 1 1\n", "$Elements\n1 2 1 2\n", "t.msh:", "the element blocks hold 1 elements, not the 2 announced"},
+      // One past the largest tag: the end of a table indexed by tag.
+      {"1 1 2 3 4\n", "1 1 2 3 5\n", "t.msh:19:", "node tag 5, which is not in $Nodes"},
+      // A repeat of the first node's tag, with tags few enough for a table
+      // and spread enough for a sorted list.
+      {"0 4\n1\n2\n3\n", "0 4\n1\n2\n1\n", "t.msh:", "node tag 1 occurs twice"},
+      {"0 4\n1\n2\n3\n4\n", "0 4\n1\n5000\n5000\n4\n", "t.msh:", "node tag 5000 occurs twice"},
+      // A tag missing from a sorted list is not the next larger one.
+      {"0 4\n1\n2\n3\n4\n", "0 4\n1\n2\n3\n5000\n", "t.msh:19:", "node tag 4, which is not in $Nodes"},
+  };
+  for (const BadText& c : cases) {
+    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+}
+
+// $PhysicalNames is kept verbatim and written back, so a body that is not
+// `dim tag "name"` lines in the announced number must be refused, as must a
+// second copy of a section that comes once and a stray end line.
+TEST(GmshIo, BadSectionFramingAndPhysicalNamesAreRefused) {
+  const std::string names = "$PhysicalNames\n1\n3 1 \"volume\"\n$EndPhysicalNames\n";
+  const std::string with_names = replaced(kMinimal, "$EndMeshFormat\n", "$EndMeshFormat\n" + names);
+  EXPECT_NE(raw_section(read_text(with_names), "$PhysicalNames"), nullptr);
+  struct Bad {
+    std::string from, to;
+    const char* where;
+    const char* what;
+  };
+  const Bad cases[] = {
+      {"\n1\n3 1", "\n-1\n3 1", "t.msh:5:", "expected the number of physical names, found '-1'"},
+      {"3 1 \"volume\"", "3 1 \"volume", "t.msh:6:", "expected a physical name as 'dimension tag \"name\"'"},
+      {"3 1 \"volume\"", "4 1 \"volume\"", "t.msh:6:", "expected a physical name"},
+      {"3 1 \"volume\"", "volume", "t.msh:6:", "expected a physical name"},
+      {"$EndPhysicalNames\n", "$EndPhysicalNames\n" + names, "t.msh:8:", "a second $PhysicalNames section"},
+      {"$Elements\n", "$EndFoo\n$Elements\n", "t.msh:20:", "expected a section such as $Nodes, found '$EndFoo'"},
+      {"$EndElements\n", "$EndElements\n$Elements\n1 1 1 1\n3 1 4 1\n2 1 2 3 4\n$EndElements\n", "t.msh:25:",
+       "a second $Elements section"},
+      {"4.1 0 8", "4.1 2 8", "t.msh:2:", "file type 2 is not 0 or 1"},
+      {"4.1 0 8", "4.1 1 4", "t.msh:2:", "binary data size 4 is not 8"},
+  };
+  for (const Bad& c : cases) {
+    const std::string message = read_error(replaced(with_names, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+}
+
+// A binary file cut right after its version line, or with bytes left over
+// before an end line: both are refused at their byte, not read past.
+TEST(GmshIo, BinaryCutShortOrRunningOverIsRefused) {
+  const std::string cut = read_error("$MeshFormat\n4.1 1 8\n");
+  EXPECT_NE(cut.find("unexpected end of file, expected the byte-order integer"), std::string::npos) << cut;
+  Binary22 b;
+  b.nodes({1, 2, 3, 4}).text("$Elements\n1\n").i32(4).i32(1).i32(2).tet(1, {1, 2, 3, 4});
+  const std::string over = read_error(b.i32(0).text("\n$EndElements\n").str());
+  EXPECT_NE(over.find("expected $EndElements"), std::string::npos) << over;
+  EXPECT_NE(offset_in(over), std::string::npos) << over;
+}
+
+// A partitioned entity's parent is a model entity, of dimension at most 3.
+TEST(GmshIo, PartitionedEntityParentPastDimension3IsRefused) {
+  const std::string text = replaced(slurp(testing::data_path("gmsh_partitioned41.msh")), "6 2 5 1 1 ", "6 4 5 1 1 ");
+  const std::string message = testing::input_error_message([&] { read_text(text); }, text);
+  EXPECT_NE(message.find("t.msh:31: partitioned entity of dimension 2 with tag 6 has a parent of dimension 4"),
+            std::string::npos)
+      << message;
+}
+
+// Dropping the partition-boundary triangle that comes first must shift the
+// kept triangles' physical tags along with their nodes and numbers.
+TEST(GmshIo, DroppedBoundaryElementsLeaveTheOthersTagsInPlace) {
+  const std::string text =
+      replaced(slurp(testing::data_path("gmsh_partitioned41.msh")),
+               "2 6 2 1\n101 20 30 42\n2 7 2 1\n102 30 20 57\n2 8 2 1\n103 10 20 30\n",
+               "2 8 2 1\n103 10 20 30\n2 6 2 1\n101 20 30 42\n2 7 2 1\n102 30 20 57\n");
+  const TetMesh mesh = read_text(text);
+  const PassThroughBlock* triangles = nullptr;
+  for (const PassThroughBlock& block : mesh.extras.blocks)
+    if (block.kind == "triangle") triangles = &block;
+  ASSERT_NE(triangles, nullptr);
+  EXPECT_EQ(triangles->element_tags, (std::vector<long long>{101, 102}));
+  EXPECT_EQ(triangles->entity_tags, (std::vector<int>{5, 5}));
+  EXPECT_EQ(triangles->tags, (std::vector<int>{3, 3}));  // surface 5's group, not volume 1's 7
+}
+
+// An $Entities body is whole records and nothing after them.
+TEST(GmshIo, EntitiesTextWithTrailingValuesIsRefused) {
+  const std::string body = "1 0 0 0\n1 0 0 0 0\n";
+  EXPECT_EQ(gmsh::parse_entities_text(body, "e").count(0), 1u);
+  EXPECT_THROW(gmsh::parse_entities_text(body + "2\n", "e"), InputError);
+}
+
+// A block added after reading has no entity tags: the file's $Entities
+// cannot classify it, so entities are made up for every element instead.
+TEST(GmshIo, BlockWithoutEntityTagsIsWrittenOnMadeUpEntities) {
+  TetMesh mesh = read_text(replaced(kMinimal, "$EndMeshFormat\n",
+                                    "$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 1 7 0\n$EndEntities\n"));
+  ASSERT_EQ(mesh.extras.tet_tags, (std::vector<int>{7}));
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2}, {}, {}, {}});
+  for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V22Ascii}) {
+    const TetMesh back = read_text(write_text(mesh, flavour));
+    ASSERT_EQ(back.extras.blocks.size(), 1u);
+    EXPECT_EQ(back.extras.blocks[0].connectivity, (std::vector<index_t>{0, 1, 2}));
+    EXPECT_EQ(back.extras.blocks[0].entity_tags, (std::vector<int>{1}));
+    EXPECT_EQ(back.extras.tet_entity_tags, (std::vector<int>{1}));
+    EXPECT_EQ(back.extras.tet_tags, (std::vector<int>{7}));
+  }
+}
+
+// Without the file's classification, MSH 4.1 output puts each node on the
+// entity of an element that uses it: a node used only by tets of volume 2
+// is in volume 2, whatever the volume of the first tet.
+TEST(GmshIo, NodesAreClassifiedOnTheirOwnElementsEntity) {
+  TetMesh mesh = testing::cube_grid(2);
+  std::vector<std::vector<int>> volumes_of(mesh.num_nodes());
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 4; ++k) cx += mesh.xyz[3 * static_cast<std::size_t>(mesh.tets[4 * t + k])] / 4;
+    const int volume = cx < 1 ? 1 : 2;
+    mesh.extras.tet_entity_tags.push_back(volume);
+    for (int k = 0; k < 4; ++k) volumes_of[static_cast<std::size_t>(mesh.tets[4 * t + k])].push_back(volume);
+  }
+  const TetMesh back = read_text(write_text(mesh, MshFlavour::V41Ascii));
+  ASSERT_EQ(back.extras.node_entity_tags.size(), mesh.num_nodes());
+  std::size_t only_in_2 = 0;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    const std::vector<int>& v = volumes_of[i];
+    if (v.empty()) continue;
+    EXPECT_EQ(back.extras.node_entity_dims[i], 3) << i;
+    if (std::all_of(v.begin(), v.end(), [&](int x) { return x == v.front(); })) {
+      EXPECT_EQ(back.extras.node_entity_tags[i], v.front()) << "node " << i;
+      only_in_2 += v.front() == 2;
+    }
+  }
+  EXPECT_GT(only_in_2, 0u);
+}
+
+// The other byte order with values whose every byte matters (a tag past
+// 32 bits, an entity tag of four non-zero bytes, 1/3): each value is reversed
+// whole, not only its outer bytes.
+TEST(GmshIo, OtherByteOrderReversesEveryByte) {
+  std::string s = "$MeshFormat\n4.1 1 8\n";
+  const auto swapped = [&](const void* p, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) s += static_cast<const char*>(p)[n - 1 - i];
+  };
+  const auto u64 = [&](std::uint64_t v) { swapped(&v, 8); };
+  const auto i32 = [&](std::int32_t v) { swapped(&v, 4); };
+  const auto f64 = [&](double v) { swapped(&v, 8); };
+  const std::uint64_t big = 0x0102030405060708ULL;
+  const std::int32_t entity = 0x01020304;
+  i32(1);
+  s += "\n$EndMeshFormat\n$Nodes\n";
+  for (std::uint64_t v : {std::uint64_t{1}, std::uint64_t{4}, std::uint64_t{1}, big}) u64(v);
+  i32(3), i32(entity), i32(0), u64(4);
+  for (std::uint64_t tag : {std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}, big}) u64(tag);
+  for (double v : {0.0, 0.0, 0.0, 1.0 / 3.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0}) f64(v);
+  s += "\n$EndNodes\n$Elements\n";
+  for (std::uint64_t v : {1, 1, 1, 1}) u64(v);
+  i32(3), i32(entity), i32(4), u64(1);
+  for (std::uint64_t v : {std::uint64_t{1}, std::uint64_t{1}, std::uint64_t{2}, std::uint64_t{3}, big}) u64(v);
+  s += "\n$EndElements\n";
+  const TetMesh mesh = read_text(s);
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1.0 / 3.0, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{1, 2, 3, static_cast<long long>(big)}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{entity}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
+}
+
+// ASCII values stored as 32-bit ints (entity tags, types, flags) that do
+// not fit are refused, not wrapped onto another entity.
+TEST(GmshIo, IntValuesPast32BitsAreRefused) {
+  const std::string message = read_error(replaced(kMinimal, "3 1 4 1\n", "3 4294967297 4 1\n"));
+  EXPECT_NE(message.find("t.msh:18: entity tag 4294967297 is out of the 32-bit range"), std::string::npos)
+      << message;
+}
+
+// A binary unknown section is skipped up to its end line standing alone,
+// not up to a longer name that starts with it.
+TEST(GmshIo, BinarySkipStopsOnlyAtTheWholeEndLine) {
+  Binary22 b;
+  b.text("$Foo\n$EndFoo2\n$EndFoo\n").nodes({1, 2, 3, 4}).text("$Elements\n1\n").i32(4).i32(1).i32(2);
+  const TetMesh mesh = read_text(b.tet(1, {1, 2, 3, 4}).text("\n$EndElements\n").str());
+  EXPECT_EQ(mesh.num_tets(), 1u);
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"$Foo section skipped; it will not be in the written file"}));
+}
+
+// Tets go in the mesh's tets; a pass-through "tetra" block would be read
+// back as more tets, and a negative node index is no node: both refused.
+TEST(GmshIo, WriterRefusesTetraBlocksAndNegativeNodeIndices) {
+  TetMesh tetra = testing::regular_tet();
+  tetra.extras.blocks.push_back(PassThroughBlock{"tetra", 4, {0, 1, 2, 3}, {}, {}, {}});
+  EXPECT_THROW(write_text(tetra, MshFlavour::V41Ascii), OutputError);
+  TetMesh past = testing::regular_tet();
+  past.tets[3] = static_cast<index_t>(past.num_nodes());  // one past the last node
+  EXPECT_THROW(write_text(past, MshFlavour::V41Ascii), OutputError);
+  TetMesh negative = testing::regular_tet();
+  negative.tets[0] = -1;
+  EXPECT_THROW(write_text(negative, MshFlavour::V41Ascii), OutputError);
+  TetMesh block = testing::regular_tet();
+  block.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, -1}, {}, {}, {}});
+  EXPECT_THROW(write_text(block, MshFlavour::V22Ascii), OutputError);
+}
+
+// A partitioned surface whose file names no parent ("0 0") is an ordinary
+// entity: its triangle stays, on its own tag.
+TEST(GmshIo, PartitionedSurfaceWithoutParentKeepsItsElements) {
+  const std::string text = replaced(slurp(testing::data_path("gmsh_partitioned41.msh")), "6 2 5 1 1 ", "6 0 0 1 1 ");
+  const TetMesh mesh = read_text(text);
+  const PassThroughBlock* triangles = nullptr;
+  for (const PassThroughBlock& block : mesh.extras.blocks)
+    if (block.kind == "triangle") triangles = &block;
+  ASSERT_NE(triangles, nullptr);
+  EXPECT_EQ(triangles->element_tags, (std::vector<long long>{101, 102}));
+  EXPECT_EQ(triangles->entity_tags, (std::vector<int>{6, 5}));
+}
+
+// Quads lie on surfaces and wedges have six nodes: blocks of both read
+// from MSH 4.1, and a curve's line comes back through the curve entity
+// written for it (whose record ends in its bounding points).
+TEST(GmshIo, QuadWedgeAndLineBlocksRoundTrip) {
+  const TetMesh mesh = read_text(replaced(replaced(kMinimal, "$Elements\n1 1 1 1\n", "$Elements\n3 3 1 3\n"),
+                                          "$EndElements\n", "2 1 3 1\n2 1 2 3 4\n3 1 6 1\n3 1 2 3 4 1 2\n$EndElements\n"));
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "quad");
+  EXPECT_EQ(mesh.extras.blocks[1].kind, "wedge");
+  EXPECT_EQ(mesh.extras.blocks[1].connectivity, (std::vector<index_t>{0, 1, 2, 3, 0, 1}));
+  TetMesh lined = testing::regular_tet();
+  lined.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1}, {}, {}, {}});
+  const TetMesh back = read_text(write_text(lined, MshFlavour::V41Ascii));
+  ASSERT_EQ(back.extras.blocks.size(), 1u);
+  EXPECT_EQ(back.extras.blocks[0].connectivity, (std::vector<index_t>{0, 1}));
+}
+
+// The $Nodes header gives the smallest then the largest node tag.
+TEST(GmshIo, NodesHeaderGivesTheTagRange) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.node_tags = {7, 3, 9, 5};
+  EXPECT_NE(write_text(mesh, MshFlavour::V41Ascii).find("$Nodes\n1 4 3 9\n"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace tetsmooth

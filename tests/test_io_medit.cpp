@@ -279,5 +279,88 @@ TEST(MeditIo, EmptyElementSectionMakesNoBlock) {
   EXPECT_EQ(read_vtu(in, "m.vtu").tets, mesh.tets);
 }
 
+// A node pinned by nothing Medit has a section for (a VTU's tetsmooth:fixed,
+// say) goes out as a RequiredVertices entry, so the pin survives a round trip.
+TEST(MeditIo, PinnedNodesWithoutElementsBecomeRequiredVertices) {
+  TetMesh mesh = testing::cube_grid(2);
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  mesh.fixed[5] = 1;
+  const TetMesh back = read_text(write_text(mesh));
+  EXPECT_EQ(back.extras.required_nodes, (std::vector<std::int32_t>{5}));
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
+// Node index num_nodes() is one past the last node: refused before writing,
+// whether a tet, a vertex list or a pass-through element names it.
+TEST(MeditIo, WriterRefusesNodeIndexOnePastTheEnd) {
+  const TetMesh good = testing::regular_tet();
+  const auto n = static_cast<index_t>(good.num_nodes());
+  TetMesh tet = good;
+  tet.tets[3] = n;
+  EXPECT_THROW(write_text(tet), OutputError);
+  TetMesh required = good;
+  required.extras.required_nodes = {n};
+  EXPECT_THROW(write_text(required), OutputError);
+  TetMesh edge = good;
+  edge.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, n}, {}, {}, {}});
+  EXPECT_THROW(write_text(edge), OutputError);
+}
+
+// A leading '+' is accepted as Fortran-style writers emit it, but "+-1" and
+// "++1" are not numbers.
+TEST(MeditIo, DoubledSignsAreNotNumbers) {
+  EXPECT_EQ(read_text(replaced(kMinimal, "1 2 3 4 0", "1 2 3 4 +7")).extras.tet_tags, (std::vector<int>{7}));
+  for (const char* bad : {"+-7", "++7"}) {
+    const std::string message = read_error(replaced(kMinimal, "1 2 3 4 0", std::string("1 2 3 4 ") + bad));
+    EXPECT_NE(message.find(std::string("t.mesh:11: expected an integer tetrahedron reference, found '") + bad + "'"),
+              std::string::npos)
+        << message;
+  }
+}
+
+// Sections kept verbatim are checked first: an index of an annotating
+// section is 1-based, a vector component finite.
+TEST(MeditIo, KeptSectionsRefuseZeroIndicesAndNonFiniteValues) {
+  const BadText cases[] = {
+      {"End\n", "Ridges\n1\n0\nEnd\n", "t.mesh:14:", "expected a positive index, found '0'"},
+      {"End\n", "Normals\n1\n0 inf 1\nEnd\n", "t.mesh:14:", "expected a finite number, found 'inf'"},
+  };
+  for (const BadText& c : cases) {
+    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+}
+
+// A quoted string that starts with a space begins with the token '"': the
+// quote alone opens the string, it does not close it.
+TEST(MeditIo, StringOpeningWithALoneQuoteReadsOnToItsClose) {
+  const TetMesh mesh = read_text(replaced(kMinimal, "Vertices\n", "Identifier\n\" spaced name\"\nVertices\n"));
+  ASSERT_EQ(mesh.extras.raw_sections.size(), 1u);
+  EXPECT_EQ(mesh.extras.raw_sections[0], (std::pair<std::string, std::string>{"Identifier", "\" spaced name\"\n"}));
+}
+
+// A block whose nodes per element are not its kind's would be written out
+// of step with the section's element size.
+TEST(MeditIo, WriterRefusesABlockOfTheWrongElementSize) {
+  TetMesh mesh = testing::regular_tet();
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 4, {0, 1, 2, 3}, {}, {}, {}});
+  EXPECT_THROW(write_text(mesh), OutputError);
+}
+
+// Versions 1 to 4 differ only in binary widths; a negative count is refused
+// where it stands rather than read as a huge one.
+TEST(MeditIo, UnknownVersionsAndNegativeCountsAreRefused) {
+  const BadText cases[] = {
+      {"MeshVersionFormatted 2", "MeshVersionFormatted 5", "t.mesh:1:", "unsupported MeshVersionFormatted 5"},
+      {"Vertices\n4\n", "Vertices\n-4\n", "t.mesh:4:", "number of vertices -4 is out of range"},
+  };
+  for (const BadText& c : cases) {
+    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace tetsmooth

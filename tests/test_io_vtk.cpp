@@ -1345,5 +1345,127 @@ TEST(VtuErrors, AFileThatIsNotXmlIsNamedByWhatItHolds) {
   EXPECT_EQ(vtu_error(" \n\t\r\n"), "mesh.vtu:1: empty file, expected <VTKFile type=\"UnstructuredGrid\">");
 }
 
+// A cell count that outruns the CELLS size stops at the cell, before reading
+// the next section's keyword as a node count; a file without POINTS is named
+// as such rather than by its first node index out of range.
+TEST(LegacyVtkErrors, CellsPastTheDeclaredSizeAndMissingPoints) {
+  const std::string v42 =
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n";
+  const std::string past = vtk_error(v42);
+  EXPECT_NE(past.find("cell 1 runs past the 5 values that CELLS declared"), std::string::npos) << past;
+  const std::string no_points =
+      vtk_error(replaced(replaced(v42, "POINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\n", ""), "CELLS 2 5\n4 0 1 2 3\nCELL_TYPES 2\n10\n10\n",
+                         "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n"));
+  EXPECT_NE(no_points.find("no POINTS section"), std::string::npos) << no_points;
+}
+
+// VTK writes NULL_ARRAY for an empty slot of a FIELD; the arrays after it
+// are still read.
+TEST(LegacyVtk, NullArrayInAFieldIsSkipped) {
+  const std::string text =
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n"
+      "CELL_DATA 1\nFIELD FieldData 2\nNULL_ARRAY\ngmsh:physical 1 1 int\n4\n";
+  EXPECT_EQ(vtk_from_text(text).extras.tet_tags, (std::vector<int>{4}));
+}
+
+TEST(LegacyVtk, RejectsFieldsOfTheWrongSize) {
+  MeshFields fields;
+  fields.tet_scalars.push_back({"short", {}});
+  std::ostringstream out;
+  EXPECT_THROW(write_vtk(testing::regular_tet(), out, fields), std::invalid_argument);
+  MeshFields nodes;
+  nodes.node_scalars.push_back({"short", {1.0}});
+  EXPECT_THROW(write_vtk(testing::regular_tet(), out, nodes), std::invalid_argument);
+}
+
+// Tags are written where either the tets or a pass-through block has them:
+// tets alone, or blocks alone (the tets then get 0).
+TEST(VtkTagArrays, TagsOfTetsAloneOrBlocksAloneAreWritten) {
+  TetMesh tets = testing::regular_tet();
+  tets.extras.tet_tags = {5};
+  TetMesh blocks = testing::regular_tet();
+  blocks.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2}, {3}, {}, {}});
+  for (const bool vtu : {false, true}) {
+    SCOPED_TRACE(vtu ? "vtu" : "vtk");
+    const auto round_trip = [&](const TetMesh& mesh) {
+      std::ostringstream out;
+      vtu ? write_vtu(mesh, out, {}) : write_vtk(mesh, out, {});
+      return vtu ? vtu_from_text(out.str()) : vtk_from_text(out.str());
+    };
+    EXPECT_EQ(round_trip(tets).extras.tet_tags, (std::vector<int>{5}));
+    const TetMesh back = round_trip(blocks);
+    EXPECT_EQ(back.extras.tet_tags, (std::vector<int>{0}));
+    ASSERT_EQ(back.extras.blocks.size(), 1u);
+    EXPECT_EQ(back.extras.blocks[0].tags, (std::vector<int>{3}));
+  }
+}
+
+// Region tags come from cell data only: a point array under a tag name is
+// another point array (noted, not read as tags). Any non-zero value of the
+// fixed-node array pins its node, negative ones too.
+TEST(VtkTagArrays, TagNamesOnPointsAreNotTagsAndNonZeroFixedValuesPin) {
+  const std::string v42 =
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n"
+      "POINT_DATA 4\nSCALARS gmsh:physical int 1\nLOOKUP_TABLE default\n1 2 3 4\n"
+      "SCALARS tetsmooth:fixed int 1\nLOOKUP_TABLE default\n0 -1 2 0\n";
+  const TetMesh mesh = vtk_from_text(v42);
+  EXPECT_TRUE(mesh.extras.tet_tags.empty());
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"point data array 'gmsh:physical' is ignored and not written back"}));
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{0, 1, 1, 0}));
+}
+
+// An ascii array with a value too many is named at that value; one whose
+// NumberOfComponents is not the 3 of a point is refused even when the value
+// count would fit another shape.
+TEST(VtuErrors, ExtraValuesAndWrongComponentCountsAreNamed) {
+  const std::string text = file_text("vtu_ascii.vtu");
+  const std::string extra = vtu_error(replaced(text, "0 0 1  1 1 1", "0 0 1  1 1 1 5"));
+  EXPECT_NE(extra.find("mesh.vtu:22:"), std::string::npos) << extra;
+  EXPECT_NE(extra.find("holds more than the expected 15 values"), std::string::npos) << extra;
+  const std::string comps =
+      vtu_error(replaced(text, "Name=\"Points\" NumberOfComponents=\"3\"", "Name=\"Points\" NumberOfComponents=\"5\""));
+  EXPECT_NE(comps.find("has '5' components, expected 3"), std::string::npos) << comps;
+}
+
+// An empty file has no line 0: the error names line 1, where the header
+// was expected.
+TEST(LegacyVtkErrors, EmptyFileNamesLine1) {
+  const std::string msg = vtk_error("");
+  EXPECT_EQ(msg.rfind("mesh.vtk:1:", 0), 0u) << msg;
+}
+
+// A negative count is named as such, not read as a huge one to the end of
+// the file.
+TEST(LegacyVtkErrors, NegativeCountsAreNamed) {
+  const std::string v42 =
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  const std::string msg = vtk_error(replaced(v42, "POINTS 4", "POINTS -1"));
+  EXPECT_NE(msg.find("mesh.vtk:5: invalid point count -1"), std::string::npos) << msg;
+}
+
+// The last offset one past the connectivity array is out of it.
+TEST(LegacyVtkErrors, OffsetOnePastTheConnectivityIsNamed) {
+  const std::string v51 =
+      "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 4\nOFFSETS vtktypeint64\n0 5\nCONNECTIVITY vtktypeint64\n0 1 2 3\n"
+      "CELL_TYPES 1\n10\n";
+  const std::string msg = vtk_error(v51);
+  EXPECT_NE(msg.find("offset 5 outside the connectivity array of 4"), std::string::npos) << msg;
+}
+
+TEST(VtuErrors, NegativeAppendedOffsetIsRefused) {
+  const std::string text = file_text("vtu_appended_base64.vtu");
+  const std::size_t at = text.find("offset=\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t end = text.find('"', at + 8);
+  const std::string msg = vtu_error(text.substr(0, at + 8) + "-1" + text.substr(end));
+  EXPECT_NE(msg.find("missing or bad offset attribute"), std::string::npos) << msg;
+}
+
 }  // namespace
 }  // namespace tetsmooth

@@ -317,5 +317,28 @@ TEST(LegacyVtkBinaryErrors, ANodeIndexOutOfRangeInMeshiosFileNamesItsByte) {
                                  ": cell 1: node 99 out of range [0, 5)");
 }
 
+// Region tags in a signed one-byte array: char is signed in VTK, so the
+// byte 0xFF is tag -1, not 255 (negative TetGen-style regions survive).
+TEST(LegacyVtkBinary, SignedByteTagsKeepTheirSign) {
+  for (const char* type : {"char", "signed_char", "vtktypeint8"}) {
+    SCOPED_TRACE(type);
+    const std::string text = points_and_cells_42() + "CELL_DATA 3\nSCALARS gmsh:physical " + type +
+                             " 1\nLOOKUP_TABLE default\n" + be<std::int8_t>({-1, -128, 7}) + "\n";
+    const TetMesh mesh = read_text(text);
+    EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{-1, -128}));
+    ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+    EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{7}));
+  }
+}
+
+// In BINARY the data start on the line after the keyword's: a token left
+// on the keyword line means the line is not what the reader takes it for.
+TEST(LegacyVtkBinaryErrors, TokensAfterTheArgumentsAreRefused) {
+  std::string text = points_and_cells_42();
+  text.replace(text.find("POINTS 5 double"), 15, "POINTS 5 double junk");
+  const std::string msg = vtk_error(text);
+  EXPECT_NE(msg.find("expected the end of the line before coordinate, found 'junk'"), std::string::npos) << msg;
+}
+
 }  // namespace
 }  // namespace tetsmooth

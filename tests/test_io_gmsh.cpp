@@ -690,6 +690,17 @@ struct BadText {
   const char* what;
 };
 
+// Each case edits `base` (its first `from` becomes `to`); reading the result
+// must fail with a message that names the place (`where`) and the reason.
+template <class Cases>
+void expect_edits_refused(const std::string& base, const Cases& cases) {
+  for (const auto& c : cases) {
+    const std::string message = read_error(replaced(base, c.from, c.to));
+    EXPECT_NE(message.find(c.where), std::string::npos) << message;
+    EXPECT_NE(message.find(c.what), std::string::npos) << message;
+  }
+}
+
 TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
   const BadText cases[] = {
       {"3 1 4 1\n1 1 2 3 4\n", "3 1 11 1\n1 1 2 3 4 1 2 3 4 1 2\n",
@@ -706,11 +717,7 @@ TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
       {"3 1 0 4\n", "3 1 0 5\n", "t.msh:", "more nodes than the 4 announced"},
       {"$MeshFormat\n", "$MeshFormatt\n", "t.msh:1:", "not a Gmsh MSH file"},
   };
-  for (const BadText& c : cases) {
-    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
-    EXPECT_NE(message.find(c.where), std::string::npos) << message;
-    EXPECT_NE(message.find(c.what), std::string::npos) << message;
-  }
+  expect_edits_refused(kMinimal, cases);
   const std::string truncated = read_error(std::string(kMinimal).substr(0, std::string(kMinimal).find("1 0 0\n")));
   EXPECT_NE(truncated.find("t.msh:11: unexpected end of file, expected node coordinate"), std::string::npos)
       << truncated;
@@ -733,11 +740,7 @@ TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
        "a second node section: $Nodes after $Nodes or $ParametricNodes"},
       {nodes.c_str(), "", "t.msh:4:", "$Elements before $Nodes or $ParametricNodes"},
   };
-  for (const BadText& c : parametric) {
-    const std::string message = read_error(replaced(kParametric22, c.from, c.to));
-    EXPECT_NE(message.find(c.where), std::string::npos) << message;
-    EXPECT_NE(message.find(c.what), std::string::npos) << message;
-  }
+  expect_edits_refused(kParametric22, parametric);
 }
 
 TEST(GmshIo, BadPartitionedEntitiesNameFileAndLine) {
@@ -1191,11 +1194,7 @@ TEST(GmshIo, BadMsh41BlocksAndNodeTagsAreRefused) {
       // A tag missing from a sorted list is not the next larger one.
       {"0 4\n1\n2\n3\n4\n", "0 4\n1\n2\n3\n5000\n", "t.msh:19:", "node tag 4, which is not in $Nodes"},
   };
-  for (const BadText& c : cases) {
-    const std::string message = read_error(replaced(kMinimal, c.from, c.to));
-    EXPECT_NE(message.find(c.where), std::string::npos) << message;
-    EXPECT_NE(message.find(c.what), std::string::npos) << message;
-  }
+  expect_edits_refused(kMinimal, cases);
 }
 
 // $PhysicalNames is kept verbatim and written back, so a body that is not
@@ -1222,11 +1221,7 @@ TEST(GmshIo, BadSectionFramingAndPhysicalNamesAreRefused) {
       {"4.1 0 8", "4.1 2 8", "t.msh:2:", "file type 2 is not 0 or 1"},
       {"4.1 0 8", "4.1 1 4", "t.msh:2:", "binary data size 4 is not 8"},
   };
-  for (const Bad& c : cases) {
-    const std::string message = read_error(replaced(with_names, c.from, c.to));
-    EXPECT_NE(message.find(c.where), std::string::npos) << message;
-    EXPECT_NE(message.find(c.what), std::string::npos) << message;
-  }
+  expect_edits_refused(with_names, cases);
 }
 
 // A binary file cut right after its version line, or with bytes left over

@@ -13,6 +13,7 @@
 #include "apps/command_line.hpp"
 #include "apps/exit_codes.hpp"
 #include "apps/input_warnings.hpp"
+#include "apps/on_input_mesh.hpp"
 #include "apps/output_check.hpp"
 #include "apps/progress_line.hpp"
 #include "apps/region_pins.hpp"
@@ -209,6 +210,26 @@ TEST(CliParse, HelpAndVersion) {
   parse_as<VersionRequest>({"--version"});
 }
 
+// After "--", "-h" and "--help" are file names like any other, not a request
+// for help.
+TEST(CliParse, HelpAfterDoubleDashIsAFileName) {
+  const auto c = parse_as<ConvertCommand>({"convert", "--", "in.vtu", "--help"});
+  EXPECT_EQ(c.input, "in.vtu");
+  EXPECT_EQ(c.output, "--help");
+  EXPECT_EQ(parse_as<QualityCommand>({"quality", "--", "-h"}).input, "-h");
+}
+
+// An empty --report (a shell variable left unset) is refused rather than
+// taken as "no report".
+TEST(CliParse, EmptyReportNameIsAUsageError) {
+  EXPECT_EQ(usage_error_of({"smooth", "a.vtu", "-o", "b.vtu", "--report", ""}), "--report needs a file name");
+}
+
+// --worst 0 is the documented way to list no tets.
+TEST(CliParse, WorstZeroListsNone) {
+  EXPECT_EQ(parse_as<QualityCommand>({"quality", "a.vtu", "--worst", "0"}).worst, 0);
+}
+
 TEST(CliParse, UsageErrorsNameTheProblem) {
   EXPECT_NE(usage_error_of({}).find("no command"), std::string::npos);
   EXPECT_NE(usage_error_of({"smoothe", "a"}).find("unknown command 'smoothe'"), std::string::npos);
@@ -337,6 +358,38 @@ TEST(CliExit, HelpGoesToStdoutAndListsExitCodes) {
   const CliRun v = run({"--version"});
   EXPECT_EQ(v.code, kExitOk);
   EXPECT_EQ(v.out.rfind(std::string("tetsmooth ") + TETSMOOTH_VERSION, 0), 0u);
+}
+
+// Each help's exit-status table gives each code the number the CLI returns
+// (apps/exit_codes.hpp), for scripts that branch on it.
+TEST(CliExit, HelpNumbersEachExitStatusAsReturned) {
+  const std::pair<int, const char*> codes[] = {{kExitOk, "success"},          {kExitInternal, "internal error"},
+                                               {kExitUsage, "usage error"},   {kExitInput, "bad input"},
+                                               {kExitOutput, "output error"}, {kExitDevice, "device error"}};
+  for (const std::string command : {"", "generate", "smooth", "quality", "convert"}) {
+    const std::string help = command.empty() ? run({"--help"}).out : run({command, "--help"}).out;
+    for (const auto& [code, name] : codes)
+      EXPECT_NE(help.find("\n  " + std::to_string(code) + "  " + name), std::string::npos) << command << ": " << name;
+  }
+}
+
+// The defaults smooth --help states are those the parser sets.
+TEST(CliExit, SmoothHelpStatesTheParsedDefaults) {
+  const auto c = parse_as<SmoothCommand>({"smooth", "in.vtu", "-o", "out.vtu"});
+  const std::string help = run({"smooth", "--help"}).out;
+  EXPECT_NE(help.find("at most N sweeps (default " + std::to_string(c.options.max_iterations) + ")"),
+            std::string::npos);
+  EXPECT_NE(help.find("(default " + std::to_string(c.options.threads) + ")"), std::string::npos);
+  EXPECT_NE(help.find("length in a sweep (default 1e-4)"), std::string::npos);
+  EXPECT_DOUBLE_EQ(c.options.tolerance, 1e-4);
+}
+
+// Each command's --help is that command's own usage, not the overview.
+TEST(CliExit, EachCommandsHelpIsItsOwn) {
+  for (const std::string command : {"generate", "smooth", "quality", "convert"}) {
+    EXPECT_EQ(run({command, "--help"}).out.rfind("Usage: tetsmooth " + command + " ", 0), 0u) << command;
+    EXPECT_EQ(run({"help", command}).out.rfind("Usage: tetsmooth " + command + " ", 0), 0u) << command;
+  }
 }
 
 TEST(CliExit, UnknownModelIsAUsageError) {
@@ -789,6 +842,44 @@ TEST_F(CliFiles, OrdinarySmoothingThatInvertsTetsSaysSo) {
   EXPECT_EQ(adaptive.err.find("warning"), std::string::npos) << adaptive.err;
 }
 
+// The inversion warning counts the tets smoothing inverted, not those the
+// input already had: a concave star that ordinary smoothing inverts, beside
+// a separate tet that is inverted from the start (all its nodes are on the
+// boundary, so it stays as it is).
+TEST_F(CliFiles, InversionWarningCountsOnlyTheTetsSmoothingInverted) {
+  TetMesh mesh = testing::concave_star();
+  const index_t first = static_cast<index_t>(mesh.num_nodes());
+  const double far[4][3] = {{10, 0, 0}, {11, 0, 0}, {10, 1, 0}, {10, 0, 1}};
+  for (const auto& p : far) mesh.xyz.insert(mesh.xyz.end(), {p[0], p[1], p[2]});
+  mesh.tets.insert(mesh.tets.end(), {first, first + 2, first + 1, first + 3});  // two nodes swapped: inverted
+  write_mesh(mesh, path("in.vtu"));
+  ASSERT_EQ(count_inverted(read_mesh(path("in.vtu"))), 1u);
+  const CliRun r = run({"smooth", path("in.vtu"), "-o", path("out.vtu"), "--device", "cpu", "--method", "ordinary"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const std::size_t inverted_after = count_inverted(read_mesh(path("out.vtu")));
+  ASSERT_GT(inverted_after, 1u) << "the fixture no longer inverts under ordinary smoothing";
+  EXPECT_NE(r.err.find("ordinary smoothing inverted " + std::to_string(inverted_after - 1) + " tets;"),
+            std::string::npos)
+      << r.err;
+}
+
+// The report's total covers every phase it lists (it is measured from the
+// start of the run to the end of the write), and the write is timed: a
+// phase left unset reads 0, while writing a file on steady_clock's
+// nanosecond ticks never takes 0 (no bound on how long it takes).
+TEST_F(CliFiles, ReportTotalCoversItsPhases) {
+  const CliRun r = run({"smooth", lattice(3), "-o", path("out.vtu"), "--device", "cpu", "--report",
+                        path("report.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("report.json")) >> j;
+  const auto& t = j["timings_ms"];
+  double phases = 0;
+  for (const char* phase : {"read", "topology", "colouring", "smoothing", "write"}) phases += t[phase].get<double>();
+  EXPECT_GE(t["total"].get<double>(), phases) << t.dump();
+  EXPECT_GT(t["write"].get<double>(), 0.0) << t.dump();
+}
+
 // Zero-volume tets are neither inverted nor fine: both reports count them
 // under their own name. Two flat tets (five nodes in the plane z = 3) beside
 // a cube, so the count differs from every other count of the report (no
@@ -868,6 +959,58 @@ TEST_F(CliFiles, SmoothReportJsonCarriesOptionsCountsAndQuality) {
   EXPECT_NE(r.err.find("after"), std::string::npos);
   EXPECT_NE(r.err.find("radius ratio histogram"), std::string::npos);
   EXPECT_NE(r.err.find("on cpu (2 thread(s)"), std::string::npos) << r.err;
+}
+
+// The histogram's bins are named by their lower edges, 0 to 0.9 (a bin
+// holds lower <= q < lower + 0.1; the last one also holds q = 1).
+TEST_F(CliFiles, QualityJsonHistogramNamesLowerEdges) {
+  const CliRun r = run({"quality", lattice(2), "--json"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const std::vector<double> edges = nlohmann::json::parse(r.out)["quality"]["histogram"]["lower_edges"];
+  const std::vector<double> expected{0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9};
+  ASSERT_EQ(edges.size(), expected.size());
+  for (std::size_t k = 0; k < edges.size(); ++k) EXPECT_DOUBLE_EQ(edges[k], expected[k]) << k;
+}
+
+// A Gmsh input is reported as "msh" whichever Gmsh format it was read as
+// (the reader takes 2.2 and 4.1 alike): --format msh22 too, not "msh22".
+TEST_F(CliFiles, GmshInputOfEitherVersionIsNamedMsh) {
+  write_mesh(testing::cube_with_centre(), path("v22.msh"), MeshFormat::Msh22);
+  for (const std::vector<std::string>& format :
+       {std::vector<std::string>{}, std::vector<std::string>{"--format", "msh22"},
+        std::vector<std::string>{"--format", "msh41"}}) {
+    std::vector<std::string> args{"quality", path("v22.msh"), "--json"};
+    args.insert(args.end(), format.begin(), format.end());
+    const CliRun r = run(args);
+    ASSERT_EQ(r.code, kExitOk) << r.err;
+    EXPECT_EQ(nlohmann::json::parse(r.out)["input"]["format"], "msh") << (format.empty() ? "" : format[1]);
+  }
+}
+
+// Form A's conflict repair undoes some accepted moves (12 on this lattice);
+// the report counts them as the summary on stderr does. Its "device" is the
+// one the run used, beside the one asked for in "options".
+TEST_F(CliFiles, ReportCountsRevertedMovesAndNamesTheDeviceUsed) {
+  const CliRun r = run({"smooth", lattice(3), "-o", path("out.vtu"), "--form", "A", "--report", path("report.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("report.json")) >> j;
+  const long long reverted = j["reverted_moves"];
+  EXPECT_GT(reverted, 0) << "the fixture no longer reverts moves";
+  EXPECT_NE(r.err.find(", " + std::to_string(reverted) + " moves reverted"), std::string::npos) << r.err;
+  EXPECT_EQ(j["options"]["device"], "auto");
+  EXPECT_EQ(j["device"], cuda_available() ? "cuda" : "cpu");
+}
+
+// The report's colour count is the run's: the one the summary on stderr
+// gives.
+TEST_F(CliFiles, ReportColoursAreTheSummarys) {
+  const CliRun r = run({"smooth", lattice(3), "-o", path("out.vtu"), "--device", "cpu", "--report",
+                        path("report.json")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  nlohmann::json j;
+  std::ifstream(path("report.json")) >> j;
+  EXPECT_NE(r.err.find(", " + std::to_string(j["colours"].get<int>()) + " colours"), std::string::npos) << r.err;
 }
 
 // A volume in two physical groups, as Gmsh's MSH 2.2 writer saves it: every
@@ -965,6 +1108,18 @@ TEST(CliPieces, HugeSpanIsNamedWithItsSize) {
   std::string all;
   for (const std::string& w : warnings) all += w + "\n";
   EXPECT_NE(all.find("m.vtu: the nodes span 3e+40 units"), std::string::npos) << all;
+}
+
+// The span is measured between the nodes, not from the origin: a tet of
+// unit edges scaled to 1e-40 and moved to 1e-30 spans 1e-40, too small for
+// the radius ratio, though its coordinates reach 1e-30.
+TEST(CliPieces, SpanIsMeasuredBetweenTheNodesNotFromTheOrigin) {
+  TetMesh mesh = testing::regular_tet();
+  for (double& x : mesh.xyz) x = 1e-30 + x * 1e-40;
+  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
+  std::string all;
+  for (const std::string& w : warnings) all += w + "\n";
+  EXPECT_NE(all.find("m.vtu: the nodes span 1e-40 units"), std::string::npos) << all;
 }
 
 // The scale warning is for spans a double cannot handle; a mesh whose nodes
@@ -1130,11 +1285,55 @@ TEST_F(CliFiles, QuietPrintsNothingOnSuccess) {
   EXPECT_TRUE(fs::exists(path("out.mesh")));
 }
 
+// -q silences warnings too, not only notes: an input that warns (a node of
+// no tet) leaves stderr empty with -q, and names the node without it.
+TEST_F(CliFiles, QuietSilencesInputWarnings) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.xyz.insert(mesh.xyz.end(), {5.0, 5.0, 5.0});
+  write_mesh(mesh, path("loose.vtu"));
+  const CliRun loud = run({"quality", path("loose.vtu")});
+  ASSERT_EQ(loud.code, kExitOk) << loud.err;
+  EXPECT_NE(loud.err.find("tetsmooth: warning: "), std::string::npos) << "the fixture no longer warns";
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"quality", path("loose.vtu"), "-q"},
+        std::vector<std::string>{"smooth", path("loose.vtu"), "-o", path("out.vtu"), "--device", "cpu", "-q"},
+        std::vector<std::string>{"convert", path("loose.vtu"), path("out.mesh"), "-q"}}) {
+    const CliRun r = run(args);
+    EXPECT_EQ(r.code, kExitOk) << args[0] << ": " << r.err;
+    EXPECT_TRUE(r.err.empty()) << args[0] << ": " << r.err;
+  }
+}
+
 TEST_F(CliFiles, IgnoredCpuOptionsAreNamedInAWarning) {
   const std::string in = lattice(2);
   const CliRun r = run({"smooth", in, "-o", path("out.vtu"), "--device", "cpu", "--strategy", "multiblock"});
   EXPECT_EQ(r.code, kExitOk);
   EXPECT_NE(r.err.find("tetsmooth: warning: --strategy"), std::string::npos) << r.err;
+}
+
+// generate's note names the seed it used and the mesh's quality: min and
+// mean as `quality` measures them on the written file; the seed is used.
+TEST_F(CliFiles, GenerateNoteNamesItsSeedAndQuality) {
+  const CliRun r = run({"generate", "lattice-2", "-o", path("l.vtu"), "--seed", "5"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("lattice-2 (seed 5), 27 nodes, 48 tets"), std::string::npos) << r.err;
+  const CliRun q = run({"quality", path("l.vtu"), "--json"});
+  ASSERT_EQ(q.code, kExitOk) << q.err;
+  const nlohmann::json j = nlohmann::json::parse(q.out);
+  const std::string expected = "radius ratio min " + quality_text(j["quality"]["min"].get<double>()) + " mean " +
+                               quality_text(j["quality"]["mean"].get<double>()) + " (vtu)";
+  EXPECT_NE(r.err.find(expected), std::string::npos) << expected << "\n" << r.err;
+  // Another seed, another jitter.
+  ASSERT_EQ(run({"generate", "lattice-2", "-o", path("m.vtu"), "--seed", "6", "-q"}).code, kExitOk);
+  EXPECT_NE(read_mesh(path("l.vtu")).xyz, read_mesh(path("m.vtu")).xyz);
+}
+
+// convert's note names the format read and the format written.
+TEST_F(CliFiles, ConvertNoteNamesBothFormats) {
+  write_mesh(testing::cube_with_centre(), path("in.mesh"));
+  const CliRun r = run({"convert", path("in.mesh"), path("out.vtu")});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  EXPECT_NE(r.err.find("(medit -> vtu)"), std::string::npos) << r.err;
 }
 
 TEST_F(CliFiles, QualityJsonListsTheWorstTetsWorstFirst) {
@@ -1171,6 +1370,47 @@ TEST_F(CliFiles, NoMovableTetsGiveNoMinimumOverThem) {
   EXPECT_NE(text.out.find("min over movable tets                  -\n"), std::string::npos) << text.out;
 }
 
+// The run's summary on stderr: how many of all the nodes may move, and on
+// how many CPU threads (0, the default, is every core; 1 is one thread),
+// and why no GPU was used when the CLI chose the device.
+TEST_F(CliFiles, SmoothSummaryNamesMovableNodesAndThreads) {
+  const std::string in = lattice(4);  // 125 nodes, the 3^3 interior ones movable
+  const CliRun all = run({"smooth", in, "-o", path("all.vtu"), "--device", "cpu"});
+  ASSERT_EQ(all.code, kExitOk) << all.err;
+  EXPECT_NE(all.err.find("  27 of 125 nodes movable"), std::string::npos) << all.err;
+  EXPECT_NE(all.err.find("on cpu (all cores"), std::string::npos) << all.err;
+  const CliRun one = run({"smooth", in, "-o", path("one.vtu"), "--device", "cpu", "--threads", "1"});
+  ASSERT_EQ(one.code, kExitOk) << one.err;
+  EXPECT_NE(one.err.find("on cpu (1 thread(s)"), std::string::npos) << one.err;
+  // Why no GPU was used is said when the CLI chose (auto), not when the user did.
+  EXPECT_EQ(all.err.find("no GPU used"), std::string::npos) << all.err;
+  if (cuda_available()) return;
+  const CliRun chosen = run({"smooth", in, "-o", path("auto.vtu")});
+  ASSERT_EQ(chosen.code, kExitOk) << chosen.err;
+  EXPECT_NE(chosen.err.find("; no GPU used: "), std::string::npos) << chosen.err;
+}
+
+// Nodes pinned on a material interface are neither boundary nodes nor
+// movable: `quality` counts the two apart. A 4^3 grid split at x = 2 has
+// 98 boundary nodes of 125 and 27 interior ones, 9 of them on the interface.
+TEST_F(CliFiles, QualityCountsInterfaceNodesAsNeitherBoundaryNorMovable) {
+  TetMesh mesh = testing::cube_grid(4, 0.2);
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 4; ++k) cx += mesh.xyz[3 * static_cast<std::size_t>(mesh.tets[4 * t + k])] / 4;
+    mesh.extras.tet_tags.push_back(cx < 2 ? 1 : 2);
+  }
+  write_mesh(mesh, path("layers.vtu"));
+  const CliRun json = run({"quality", path("layers.vtu"), "--json"});
+  ASSERT_EQ(json.code, kExitOk) << json.err;
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  EXPECT_EQ(j["input"]["boundary_nodes"], 98);
+  EXPECT_EQ(j["input"]["movable_nodes"], 18);
+  const CliRun text = run({"quality", path("layers.vtu")});
+  ASSERT_EQ(text.code, kExitOk) << text.err;
+  EXPECT_NE(text.out.find("125 nodes (98 on the boundary, 18 movable)"), std::string::npos) << text.out;
+}
+
 TEST_F(CliFiles, QualityTextStatesIndexBase) {
   const std::string in = lattice(2);
   const CliRun r = run({"quality", in, "--worst", "2"});
@@ -1180,6 +1420,19 @@ TEST_F(CliFiles, QualityTextStatesIndexBase) {
 }
 
 // --- pieces ----------------------------------------------------------------
+
+// The library throws InputError without a file for a mesh too large for its
+// tables; on_input_mesh names the input file, keeps the message and the type
+// (exit 3), and passes a step's result through.
+TEST(CliPieces, MeshWideInputErrorsNameTheInputFile) {
+  EXPECT_EQ(on_input_mesh("big.vtu", [] { return 7; }), 7);
+  try {
+    on_input_mesh("big.vtu", []() -> int { throw InputError("", "too many nodes for 32-bit indices"); });
+    ADD_FAILURE() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "big.vtu: too many nodes for 32-bit indices");
+  }
+}
 
 TEST(CliPieces, WorstTetsPicksTheLowestQualitiesWithTheirNodes) {
   TetMesh mesh = testing::cube_with_centre();

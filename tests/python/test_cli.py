@@ -472,7 +472,9 @@ class ExitCodes(CliTestCase):
             if not setpriv:
                 missing("setpriv (util-linux) is needed to run as a user other than root")
             prefix = [setpriv, "--reuid=65534", "--regid=65534", "--clear-groups"]
-        for args in (["smooth", source, "-o", target], ["convert", source, target]):
+        # generate has no input to read, but its output is checked the same way.
+        for args in (["smooth", source, "-o", target], ["convert", source, target],
+                     ["generate", "lattice-2", "-o", target]):
             with self.subTest(command=args[0]):
                 proc = subprocess.run([*prefix, BIN, *args], capture_output=True, text=True, timeout=600)
                 self.assert_one_error_line(proc, EXIT_OUTPUT, "kept.vtu", "not writable")

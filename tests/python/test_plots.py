@@ -170,6 +170,37 @@ class LoaderTests(unittest.TestCase):
     def setUpClass(cls):
         cls.result = bj.load_result(FIXTURE)
 
+    def test_ratio_of_a_missing_or_non_positive_denominator_is_none(self):
+        # A zero time (a run that did nothing measurable) must leave a blank cell, not stop the script.
+        self.assertIsNone(bj.ratio(1.0, 0.0))
+        self.assertIsNone(bj.ratio(1.0, -2.0))
+        self.assertIsNone(bj.ratio(None, 2.0))
+        self.assertEqual(bj.ratio(3.0, 2.0), 1.5)
+
+    def test_not_skipped_is_a_result(self):
+        # A "skipped" field of "NotSkipped" is the state of a run that was not skipped (the loader
+        # accepts it beside false and ""): a result like any other, not an error.
+        document = {"context": {}, "benchmarks": [entry("Serial/FormB/5k/manual_time", 7.0, skipped="NotSkipped")]}
+        result = bj.parse_result(document)
+        self.assertEqual(result.errors, {})
+        self.assertAlmostEqual(result.time_ms("Serial/FormB/5k"), 7.0)
+
+    def test_describe_names_cpus_and_copy_bandwidth_in_their_units(self):
+        # 2.5e12 bytes/s is 2500.0 GB/s (1 GB = 1e9 bytes); the CPU line carries the core count.
+        document = {"context": {"host_name": "vm", "num_cpus": 16},
+                    "benchmarks": [entry("Memory/CopyBandwidth/manual_time", 1.0, bytes_per_s=2.5e12),
+                                   entry("Serial/FormB/5k/manual_time", 7.0)]}
+        lines = bj.parse_result(document).describe()
+        self.assertIn("CPU: vm, 16 CPUs", lines)
+        self.assertIn("measured device copy bandwidth: 2500.0 GB/s (Memory/CopyBandwidth)", lines)
+
+    def test_context_keeps_the_first_spelling_of_a_model(self):
+        # As for the benchmarks, the spelling met first wins when a context names one model twice.
+        document = {"context": {"model_77k_nodes": "100", "model_77k_tets": "400",
+                                "model_slope-77k_nodes": "200", "model_slope-77k_tets": "800"},
+                    "benchmarks": [entry("Serial/FormB/77k/manual_time", 7.0)]}
+        self.assertEqual(bj.parse_result(document).mesh_size("77k"), (100, 400))
+
     def test_median_aggregate_is_preferred(self):
         # Repetitions 4.10, 4.00, 4.90: median 4.10, mean 4.333.
         self.assertAlmostEqual(self.result.time_ms("FormB/AoS/MultiBlock/5k"), 4.10)
@@ -281,6 +312,25 @@ class PaperNumberTests(unittest.TestCase):
                 four = [paper.speedup(form, c, model) for c in paper.SPEEDUP_COLUMNS[:4]]
                 self.assertAlmostEqual(paper.speedup(form, "max", model), max(four), places=3)
 
+    def test_table_2_model_sizes(self):
+        # Typed from the paper's Table 2 (nodes, tetrahedra); the tables put these beside our meshes' sizes,
+        # and nothing else in paper_numbers.py cross-checks them.
+        table_2 = {"5k": (5000, 32978), "10k": (10000, 66542), "59k": (59261, 391220),
+                   "77k": (76928, 388428), "109k": (109260, 727088)}
+        self.assertEqual(paper.MODEL_SIZES, table_2)
+
+    def test_serial_cpu_column(self):
+        # Typed from the CPU column of Tables 3-4.  The speedup check above allows 0.2 %, so a CPU time
+        # off by a digit in both forms (15,852 for 15,825) would pass it.
+        cpu = {"5k": 1473, "10k": 3745, "59k": 8452, "77k": 15825, "109k": 36592}
+        for form in bj.FORMS:
+            self.assertEqual({model: paper.time_ms(form, "cpu", model) for model in paper.MODELS}, cpu, form)
+
+    def test_table_numbers_by_form(self):
+        # Running time: Table 3 is Form A, Table 4 Form B; speedup: Table 5 Form A, Table 6 Form B.
+        # Headings and figure titles name the table by these numbers.
+        self.assertEqual(paper.TABLE_NUMBER, {"time": {"FormA": 3, "FormB": 4}, "speedup": {"FormA": 5, "FormB": 6}})
+
     def test_spot_values(self):
         self.assertEqual(paper.time_ms("FormA", "soa_multi", "59k"), 1254)
         self.assertEqual(paper.time_ms("FormB", "aos_multi", "109k"), 1618)
@@ -317,6 +367,43 @@ class ReportTests(unittest.TestCase):
         self.assertEqual(self.completed.returncode, 0, self.completed.stderr)
         for name in CSV_FILES + FIGURES + ("tables.md",):
             self.assertTrue(os.path.isfile(os.path.join(self.out, name)), name)
+
+    def test_report_lists_every_file_it_wrote(self):
+        # publish_results.sh shows this list as what was filed: tables and figures alike.
+        listed = [os.path.basename(line) for line in self.completed.stdout.splitlines()[1:]]
+        self.assertEqual(sorted(listed), sorted(CSV_FILES + FIGURES + ("tables.md",)))
+
+    def test_report_passes_metric_and_quality_model_on(self):
+        # --metric picks the time of the tables as of the figures, and --quality-model the model of
+        # Figure 13; here cpu_time is 1.5 times real_time, and 5k is not the default 109k.
+        import report
+        document = raw_fixture()
+        for item in document["benchmarks"]:
+            if item["name"].startswith("FormB/AoS/MultiBlock/5k"):
+                item["cpu_time"] = item["real_time"] * 1.5
+        with tempfile.TemporaryDirectory() as out:
+            path = write_result(out, document)
+            with mock.patch("sys.stdout"), mock.patch("sys.stderr"):
+                figures = figures_drawn(lambda: report.main([path, out, "--metric", "cpu_time",
+                                                             "--quality-model", "5k"]))
+            try:
+                self.assertIn("model 5k", figures[-1]._suptitle.get_text())
+            finally:
+                for figure in figures:
+                    report.make_figures.plt.close(figure)
+            row = {r["model"]: r for r in read_csv(os.path.join(out, "table4.csv"))}["5k"]
+            loaded = bj.load_result(path)
+        cpu = loaded.time_ms("FormB/AoS/MultiBlock/5k", "cpu_time")
+        self.assertNotAlmostEqual(cpu, loaded.time_ms("FormB/AoS/MultiBlock/5k", "real_time"))
+        self.assertAlmostEqual(float(row["aos_multi_ms"]), cpu, places=6)
+
+    def test_report_says_how_many_benchmarks_failed(self):
+        # The fixture has one benchmark that reported an error; a run without any says nothing of errors.
+        self.assertIn("report: 1 benchmark(s) reported errors", self.completed.stderr)
+        with tempfile.TemporaryDirectory() as out:
+            clean = run_script("report.py", write_result(out, float_document()), out)
+        self.assertEqual(clean.returncode, 0, clean.stderr)
+        self.assertNotIn("reported errors", clean.stderr)
 
     def test_time_table_columns_and_values(self):
         rows = read_csv(os.path.join(self.out, "table4.csv"))
@@ -548,6 +635,119 @@ class PrecisionAndFormattingTests(unittest.TestCase):
             self.assertGreaterEqual(len(labelled), 3, [t.label1.get_text() for t in labelled])
         finally:
             make_figures.plt.close(figures[0])
+
+
+class FigureDataTests(unittest.TestCase):
+    """What the figures plot, read back from their lines: each ratio is the quotient its label names,
+    the paper's rows carry the paper's numbers, and the panels name the paper's table."""
+
+    # Our GPU times on 5k: SoA 3x AoS, Form A 2x Form B, single 2x multi 4x coloured; distinct enough
+    # that any swapped quotient gives another number.
+    STRATEGY_MS = {"SingleBlock": 8.0, "MultiBlock": 4.0, "Coloured": 2.0}
+    SERIAL_MS = {"FormA": 800.0, "FormB": 400.0}
+    THREADS_MS = {"FormA": 100.0, "FormB": 80.0}
+
+    @classmethod
+    def gpu_ms(cls, form, layout, strategy):
+        return cls.STRATEGY_MS[strategy] * (3.0 if layout == "SoA" else 1.0) * (2.0 if form == "FormA" else 1.0)
+
+    @classmethod
+    def setUpClass(cls):
+        benchmarks = []
+        for form in bj.FORMS:
+            benchmarks.append(entry(f"Serial/{form}/5k/manual_time", cls.SERIAL_MS[form]))
+            benchmarks.append(entry(f"Threads/{form}/5k/manual_time", cls.THREADS_MS[form]))
+            for layout in bj.LAYOUTS:
+                for strategy in bj.STRATEGIES:
+                    benchmarks.append(entry(f"{form}/{layout}/{strategy}/5k/manual_time",
+                                            cls.gpu_ms(form, layout, strategy)))
+        cls.result = bj.parse_result({"context": {"gpu_name": "GPU X", "gpu_precision": "double"},
+                                      "benchmarks": benchmarks})
+
+    def draw(self, name):
+        import make_figures
+        with tempfile.TemporaryDirectory() as out:
+            figures = figures_drawn(lambda: getattr(make_figures, name)(self.result, out, "real_time"))
+        self.addCleanup(make_figures.plt.close, figures[0])
+        return figures[0].axes  # row-major: 2 panels of ours, 2 of the paper's, 2 of ratios
+
+    def first_value(self, ax, label):
+        """y at the 5k tick of the line labelled `label`."""
+        lines = [line for line in ax.lines if line.get_label() == label]
+        self.assertEqual(len(lines), 1, f"{label} in {[line.get_label() for line in ax.lines]}")
+        return float(lines[0].get_ydata()[0])
+
+    def test_layout_ratio_is_soa_over_aos(self):
+        axes = self.draw("fig09_layout")
+        self.assertAlmostEqual(self.first_value(axes[4], "ours multi"), 3.0)  # Form A panel
+        self.assertAlmostEqual(self.first_value(axes[4], "paper multi"), 139 / 467)  # Table 3, 5k
+        # The middle row is the paper's own times for the layout its legend names (Table 3, 5k).
+        self.assertEqual(self.first_value(axes[2], "SoA single"), 151)
+        self.assertEqual(self.first_value(axes[2], "AoS multi"), 467)
+
+    def test_time_panels_name_tables_3_and_4(self):
+        for name in ("fig09_layout", "fig11_cpu_gpu", "fig12_blocks"):
+            axes = self.draw(name)
+            self.assertIn("(Table 3)", axes[2].get_title(), name)  # Form A
+            self.assertIn("(Table 4)", axes[3].get_title(), name)  # Form B
+
+    def test_form_ratio_is_form_a_over_form_b(self):
+        axes = self.draw("fig10_form")
+        self.assertAlmostEqual(self.first_value(axes[4], "ours single"), 2.0)  # AoS panel
+        self.assertAlmostEqual(self.first_value(axes[4], "paper single"), 450 / 169)  # Tables 3-4, AoS single
+
+    def test_speedups_are_serial_over_the_fastest(self):
+        axes = self.draw("fig11_cpu_gpu")
+        self.assertAlmostEqual(self.first_value(axes[4], "ours: best GPU over serial"), 800.0 / 4.0)  # coloured AoS
+        self.assertAlmostEqual(self.first_value(axes[4], "ours: threads over serial"), 800.0 / 100.0)
+        # The paper's best over serial is the Max column of its Table 5 (10.597 for 5k, Form A).
+        self.assertAlmostEqual(self.first_value(axes[4], "paper: best GPU over serial"), 10.597, delta=0.01)
+        self.assertAlmostEqual(self.first_value(axes[5], "paper: best GPU over serial"), 15.344, delta=0.01)
+        self.assertEqual(self.first_value(axes[3], "CPU serial"), 1473)
+
+    def test_block_ratios_are_single_over_the_other(self):
+        axes = self.draw("fig12_blocks")
+        self.assertAlmostEqual(self.first_value(axes[4], "ours AoS: single / multi"), 2.0)
+        self.assertAlmostEqual(self.first_value(axes[4], "ours AoS: single / coloured"), 4.0)
+        self.assertAlmostEqual(self.first_value(axes[4], "paper AoS: single / multi"), 450 / 467)
+
+    def test_model_ticks_follow_the_models(self):
+        # The values are plotted in bj.MODELS order; the tick under each must name that model.
+        axes = self.draw("fig09_layout")
+        labels = [tick.get_text().split("\n")[0] for tick in axes[0].get_xticklabels()]
+        self.assertEqual(labels, list(bj.MODELS))
+
+    def test_time_rows_share_limits_that_hold_every_value(self):
+        # Ours (a few ms) and the paper's (hundreds to thousands of ms) share one y range, so the two
+        # devices compare by eye; that range must hold every value of either row.
+        axes = self.draw("fig09_layout")[:4]
+        self.assertEqual(len({ax.get_ylim() for ax in axes}), 1)
+        low, high = axes[0].get_ylim()
+        for ax in axes:
+            for line in ax.lines:
+                for y in line.get_ydata():
+                    if not math.isnan(y):
+                        self.assertTrue(low <= y <= high, f"{line.get_label()}: {y} outside {low}..{high}")
+
+    def test_quality_panels_show_their_own_histograms(self):
+        import make_figures
+        ordinary = [900, 800, 700, 600, 500, 400, 300, 200, 100, 50]
+        adaptive = [5, 10, 20, 40, 80, 160, 320, 640, 1280, 2560]
+        document = {"context": {}, "benchmarks": [
+            entry("Serial/FormB/5k/manual_time", 1.0, **histogram_counters("hist_before", HIST_INPUT),
+                  **histogram_counters("hist_after", adaptive)),
+            entry("Serial/Ordinary/5k/manual_time", 1.0, **histogram_counters("hist_before", HIST_INPUT),
+                  **histogram_counters("hist_after", ordinary))]}
+        result = bj.parse_result(document)
+        with tempfile.TemporaryDirectory() as out:
+            figures = figures_drawn(lambda: make_figures.fig13_quality(result, out, "5k"))
+        self.addCleanup(make_figures.plt.close, figures[0])
+        axes = figures[0].axes
+        self.assertIn("ordinary", axes[1].get_title())
+        self.assertIn("adaptive", axes[2].get_title())
+        self.assertEqual([p.get_height() for p in axes[0].patches], HIST_INPUT)
+        self.assertEqual([p.get_height() for p in axes[1].patches], ordinary)
+        self.assertEqual([p.get_height() for p in axes[2].patches], adaptive)
 
 
 class OptionAndEdgeTests(unittest.TestCase):

@@ -50,6 +50,34 @@ class PublishResults(unittest.TestCase):
             self.assertIn(name, present)
         self.assertTrue(any(name.startswith("fig") for name in present), present)
 
+    def test_logs_stay_until_a_run_brings_its_own(self):
+        # A re-run without --logs keeps the earlier run's logs; --logs replaces them, missing ones too.
+        logs = os.path.join(self.tmp, "out")
+        os.mkdir(logs)
+        for name in ("gpu_tests.log", "device.txt"):
+            self.write(os.path.join("out", name), "first")
+        self.assertEqual(publish("--dest", self.dest, "--logs", logs, SMALL).returncode, 0)
+        done = publish("--dest", self.dest, SMALL)
+        self.assertEqual(done.returncode, 0, done.stderr)
+        self.assertTrue({"gpu_tests.log", "device.txt"} <= set(os.listdir(self.dest)))
+        os.remove(os.path.join(logs, "device.txt"))
+        self.write(os.path.join("out", "gpu_tests.log"), "second")
+        self.assertEqual(publish("--dest", self.dest, "--logs", logs, SMALL).returncode, 0)
+        self.assertNotIn("device.txt", os.listdir(self.dest))
+        with open(os.path.join(self.dest, "gpu_tests.log"), encoding="utf-8") as handle:
+            self.assertEqual(handle.read(), "second")
+
+    def test_float_result_is_filed_as_given(self):
+        # FLOAT.json is filed as bench_float.json byte for byte, beside BENCH.json, not a copy of it.
+        with open(SMALL, encoding="utf-8") as handle:
+            document = json.load(handle)
+        document["context"]["gpu_precision"] = "float"
+        float_path = self.write("float.json", json.dumps(document))
+        self.assertEqual(publish("--dest", self.dest, SMALL, float_path).returncode, 0)
+        for name, source in (("bench_float.json", float_path), ("bench_smooth.json", SMALL)):
+            with open(os.path.join(self.dest, name), "rb") as filed, open(source, "rb") as given:
+                self.assertEqual(filed.read(), given.read(), name)
+
     def test_a_new_run_replaces_the_old_files_and_keeps_notes(self):
         self.assertEqual(publish("--dest", self.dest, SMALL, SMALL).returncode, 0)
         for name in ("fig99_old.png", "ncu_notes.txt"):
@@ -84,7 +112,8 @@ class PublishResults(unittest.TestCase):
         for args in (["--logs", os.path.join(self.tmp, "no-such-folder"), SMALL],  # no log to take
                      ["--logs", self.tmp, SMALL],                                 # a folder without logs
                      [SMALL, ""],                                                  # an empty FLOAT
-                     [SMALL, os.path.join(self.tmp, "missing float.json")]):
+                     [SMALL, os.path.join(self.tmp, "missing float.json")],
+                     [SMALL, SMALL, SMALL]):                                      # a third result, not filed
             done = publish("--dest", self.dest, *args)
             self.assertEqual(done.returncode, 2, args)
             self.assertEqual(sorted(os.listdir(self.dest)), before, args)

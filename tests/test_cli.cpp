@@ -1084,6 +1084,13 @@ TEST_F(CliFiles, OneInvertedTetIsWarnedWithWhatTheMethodDoesToIt) {
       << ordinary.err;
 }
 
+// The input warnings for `mesh` read from "m.vtu", a line each.
+std::string input_warnings_text(const TetMesh& mesh) {
+  std::string all;
+  for (const std::string& w : input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu")) all += w + "\n";
+  return all;
+}
+
 // One repeated tet, one degenerate tet and one loose node are warned about
 // as much as many: a single stray element is the usual case in a hand-edited
 // file.
@@ -1092,9 +1099,7 @@ TEST(CliPieces, SingleRepeatedTetDegenerateTetAndLooseNodeAreWarned) {
   mesh.tets.insert(mesh.tets.end(), mesh.tets.begin(), mesh.tets.begin() + 4);
   mesh.tets.insert(mesh.tets.end(), {0, 0, 1, 2});  // a repeated node: zero volume
   mesh.xyz.insert(mesh.xyz.end(), {9, 9, 9});
-  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
-  std::string all;
-  for (const std::string& w : warnings) all += w + "\n";
+  const std::string all = input_warnings_text(mesh);
   EXPECT_NE(all.find("m.vtu: 1 tets repeat the nodes of an earlier tet"), std::string::npos) << all;
   EXPECT_NE(all.find("m.vtu: 1 nodes belong to no tet"), std::string::npos) << all;
   EXPECT_NE(all.find("m.vtu: 1 degenerate tets"), std::string::npos) << all;
@@ -1104,9 +1109,7 @@ TEST(CliPieces, SingleRepeatedTetDegenerateTetAndLooseNodeAreWarned) {
 TEST(CliPieces, HugeSpanIsNamedWithItsSize) {
   TetMesh mesh = testing::regular_tet();
   for (double& x : mesh.xyz) x *= 3e40;
-  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
-  std::string all;
-  for (const std::string& w : warnings) all += w + "\n";
+  const std::string all = input_warnings_text(mesh);
   EXPECT_NE(all.find("m.vtu: the nodes span 3e+40 units"), std::string::npos) << all;
 }
 
@@ -1116,9 +1119,7 @@ TEST(CliPieces, HugeSpanIsNamedWithItsSize) {
 TEST(CliPieces, SpanIsMeasuredBetweenTheNodesNotFromTheOrigin) {
   TetMesh mesh = testing::regular_tet();
   for (double& x : mesh.xyz) x = 1e-30 + x * 1e-40;
-  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
-  std::string all;
-  for (const std::string& w : warnings) all += w + "\n";
+  const std::string all = input_warnings_text(mesh);
   EXPECT_NE(all.find("m.vtu: the nodes span 1e-40 units"), std::string::npos) << all;
 }
 
@@ -1127,9 +1128,7 @@ TEST(CliPieces, SpanIsMeasuredBetweenTheNodesNotFromTheOrigin) {
 TEST(CliPieces, ZeroSpanIsNotCalledTooSmall) {
   TetMesh mesh = testing::regular_tet();
   for (double& x : mesh.xyz) x = 1;
-  const std::vector<std::string> warnings = input_warnings(mesh, inspect_input(mesh, "m.vtu"), "m.vtu");
-  std::string all;
-  for (const std::string& w : warnings) all += w + "\n";
+  const std::string all = input_warnings_text(mesh);
   EXPECT_NE(all.find("degenerate"), std::string::npos) << all;
   EXPECT_EQ(all.find("span"), std::string::npos) << all;
 }

@@ -93,7 +93,8 @@ Options:
   --device auto|cpu|cuda    auto picks CUDA when a GPU is usable, else the CPU (default auto)
   --threads N               CPU threads, 0 = all cores (default 0). --threads 1 is the serial
                             reference in natural node order; other counts visit nodes colour by
-                            colour, so the result does not depend on the thread count
+                            colour, so the result does not depend on the thread count. They
+                            build the topology too (on the host, for CUDA)
   --strategy coloured|multiblock|singleblock
                             CUDA: how sweeps are launched (default coloured in form B,
                             multiblock in form A; coloured is a form B scheme)

@@ -24,7 +24,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
   // material interfaces and Gmsh features pinned as `smooth` pins them.
   const Topology topology = on_input_mesh(c.input, [&] {
     const RegionInterfacePins pins(mesh);
-    return build_topology(mesh);
+    return build_topology(mesh, 0);  // all cores
   });
   record.boundary_nodes = static_cast<std::size_t>(std::count(topology.boundary.begin(), topology.boundary.end(), 1));
   record.movable_nodes = static_cast<std::size_t>(std::count(topology.movable.begin(), topology.movable.end(), 1));

@@ -1,43 +1,78 @@
 #include "mesh/colouring.hpp"
 
+#include "mesh/team_size.hpp"
+
+#include <algorithm>
+#include <cstddef>
 #include <numeric>
 #include <string>
 
 namespace tetsmooth {
 
-Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable) {
+namespace {
+
+// Whether pending node i beats every uncoloured movable neighbour.
+bool wins_round(const Csr& neighbours, const std::vector<std::uint8_t>& movable,
+                const std::vector<std::int32_t>& colour, index_t i) {
+  for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j)
+    if (movable[*j] && colour[*j] < 0 && colours_before(*j, i)) return false;
+  return true;
+}
+
+// The smallest colour no neighbour of i has; `used` is scratch.
+int first_free_colour(const Csr& neighbours, const std::vector<std::int32_t>& colour, index_t i,
+                      std::vector<std::uint8_t>& used) {
+  used.assign(used.size(), 0);
+  for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j) {
+    const int c = colour[*j];
+    if (c < 0) continue;
+    if (static_cast<std::size_t>(c) >= used.size()) used.resize(c + 1, 0);
+    used[c] = 1;
+  }
+  int c = 0;
+  while (static_cast<std::size_t>(c) < used.size() && used[c]) ++c;
+  return c;
+}
+
+}  // namespace
+
+Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable, int threads) {
   const std::size_t n = neighbours.rows();
+  threads = team_size(threads);
+  const bool shared = threads > 1;
   Colouring result;
   result.colour.assign(n, -1);
   std::vector<index_t> pending;
   for (std::size_t i = 0; i < n; ++i)
     if (movable[i]) pending.push_back(static_cast<index_t>(i));
 
-  std::vector<index_t> winners;
-  std::vector<std::uint8_t> used;  // colours seen around one node
+  std::vector<std::uint8_t> wins;
+  std::vector<index_t> winners, still;
   while (!pending.empty()) {
     // A round's winners are decided on the colours of earlier rounds only.
+    const auto count = static_cast<std::ptrdiff_t>(pending.size());
+    wins.resize(pending.size());
+#pragma omp parallel for num_threads(shared ? threads : 1) if (shared) schedule(static)
+    for (std::ptrdiff_t k = 0; k < count; ++k) wins[k] = wins_round(neighbours, movable, result.colour, pending[k]);
     winners.clear();
-    std::vector<index_t> still;
-    for (index_t i : pending) {
-      bool wins = true;
-      for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i) && wins; ++j)
-        if (movable[*j] && result.colour[*j] < 0 && colours_before(*j, i)) wins = false;
-      (wins ? winners : still).push_back(i);
-    }
-    for (index_t i : winners) {
-      used.assign(used.size(), 0);
-      for (const index_t* j = neighbours.row_begin(i); j != neighbours.row_end(i); ++j) {
-        const int c = result.colour[*j];
-        if (c < 0) continue;
-        if (static_cast<std::size_t>(c) >= used.size()) used.resize(c + 1, 0);
-        used[c] = 1;
+    still.clear();
+    for (std::ptrdiff_t k = 0; k < count; ++k) (wins[k] ? winners : still).push_back(pending[k]);
+    // No two winners are neighbours (of two pending neighbours one goes
+    // first), so each takes its colour from those of earlier rounds, in
+    // whatever order the winners are coloured.
+    int top = result.num_colours;
+    const auto won = static_cast<std::ptrdiff_t>(winners.size());
+#pragma omp parallel num_threads(shared ? threads : 1) if (shared)
+    {
+      std::vector<std::uint8_t> used;  // colours seen around one node
+#pragma omp for schedule(static) reduction(max : top)
+      for (std::ptrdiff_t k = 0; k < won; ++k) {
+        const int c = first_free_colour(neighbours, result.colour, winners[k], used);
+        result.colour[winners[k]] = c;
+        top = std::max(top, c + 1);
       }
-      int c = 0;
-      while (static_cast<std::size_t>(c) < used.size() && used[c]) ++c;
-      result.colour[i] = c;
-      result.num_colours = std::max(result.num_colours, c + 1);
     }
+    result.num_colours = top;
     pending.swap(still);
     ++result.rounds;
   }

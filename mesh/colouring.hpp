@@ -41,7 +41,9 @@ struct Colouring {
   Csr classes;                       // colour -> its nodes, ascending
 };
 
-Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable);
+// On `threads` OpenMP threads (1 by default; 0 for all cores): a round's
+// nodes are independent, so the colouring is the same whatever the count.
+Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable, int threads = 1);
 
 // Builds `classes` from a per-node colour array (-1 = uncoloured).
 Csr colour_classes(const std::vector<std::int32_t>& colour, int num_colours);

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <omp.h>
-
+#include "mesh/team_size.hpp"
 #include "mesh/tet_quality.hpp"
 
 namespace tetsmooth {
@@ -40,7 +39,7 @@ MinMeanQuality min_mean_quality(const TetMesh& mesh, int threads) {
   const std::size_t tets = mesh.num_tets();
   if (tets == 0) return r;
   double lowest = 1, sum = 0;
-#pragma omp parallel for num_threads(threads > 0 ? threads : omp_get_max_threads()) schedule(static) \
+#pragma omp parallel for num_threads(team_size(threads)) schedule(static) \
     reduction(min : lowest) reduction(+ : sum)
   for (std::size_t t = 0; t < tets; ++t) {
     const Corners c = corners(mesh, t);

@@ -35,6 +35,15 @@ TEST(Colouring, DeterministicAndFirstFit) {
   const Colouring a = colour_nodes(topo.neighbours, topo.movable);
   const Colouring b = colour_nodes(topo.neighbours, topo.movable);
   EXPECT_EQ(a.colour, b.colour);
+  // The threads of a round decide and colour its nodes in any order: the
+  // colouring must not depend on their number.
+  for (int threads : {2, 3, 0}) {
+    const Colouring c = colour_nodes(topo.neighbours, topo.movable, threads);
+    EXPECT_EQ(c.colour, a.colour) << threads << " threads";
+    EXPECT_EQ(c.num_colours, a.num_colours) << threads << " threads";
+    EXPECT_EQ(c.rounds, a.rounds) << threads << " threads";
+    EXPECT_TRUE(c.classes == a.classes) << threads << " threads";
+  }
   // First fit: a node of colour c > 0 has a coloured neighbour of every smaller colour.
   for (std::size_t i = 0; i < m.num_nodes(); ++i) {
     for (int lower = 0; lower < a.colour[i]; ++lower) {

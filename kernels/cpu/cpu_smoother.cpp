@@ -1,7 +1,5 @@
 // The CPU smoother: the serial reference (threads == 1) and its OpenMP
 // version, around the shared per-node math of kernels/node_update.hpp.
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,6 +10,7 @@
 #include "kernels/smoother.hpp"
 #include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
+#include "mesh/team_size.hpp"
 #include "mesh/topology.hpp"
 
 namespace tetsmooth {
@@ -130,12 +129,12 @@ void run_sweeps(TetMesh& mesh, const Topology& topo, const Colouring* colouring,
 
 SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& opt, const Colouring* given) {
   check_smooth_options(opt);
-  const int threads = opt.threads == 0 ? omp_get_max_threads() : opt.threads;
+  const int threads = team_size(opt.threads);
   SmoothResult result;
   result.backend = threads == 1 ? "cpu-serial" : "cpu-threads";
 
   auto t0 = Clock::now();
-  const Topology topo = build_topology(mesh);
+  const Topology topo = build_topology(mesh, threads);
   result.topology_ms = ms_since(t0);
   result.movable_nodes = static_cast<std::size_t>(std::count(topo.movable.begin(), topo.movable.end(), 1));
   result.before = summarize_quality(mesh, topo.movable);
@@ -151,7 +150,7 @@ SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& opt, const Colouring
       if (!flaw.empty()) throw UsageError("the colouring given to smooth_cpu does not fit this mesh: " + flaw);
       colouring = given;
     } else {
-      computed = colour_nodes(topo.neighbours, topo.movable);
+      computed = colour_nodes(topo.neighbours, topo.movable, threads);
       colouring = &computed;
     }
     result.num_colours = colouring->num_colours;

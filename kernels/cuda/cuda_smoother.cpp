@@ -30,9 +30,10 @@ bool cuda_available(std::string* why) {
 SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring) {
   std::string why;
   if (!cuda_available(&why)) throw DeviceError(why);
-  // The summaries need the movable flags; the host topology is cheap next to
-  // reading and writing the mesh files around this call.
-  const Topology topo = build_topology(mesh);
+  // The summaries need the movable flags; the host topology, on the CPU
+  // threads the options ask for, is cheap next to reading and writing the
+  // mesh files around this call.
+  const Topology topo = build_topology(mesh, options.threads);
   // The coloured loop trusts its classes: a node listed there moves.
   if (colouring && options.strategy == Strategy::Coloured) {
     const std::string flaw = colouring_flaw(topo.neighbours, topo.movable, *colouring);

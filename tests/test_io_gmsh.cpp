@@ -926,6 +926,23 @@ TEST(GmshIo, Msh22ElementsOfOneEntityInDifferentGroupsKeepTheirFirst) {
   EXPECT_EQ(twice.num_tets(), 3u);
 }
 
+// A line repeating an element for a further group names the same entity, so
+// lines that differ only in their elementary tag are two elements, each on
+// its own entity; only their shared number is lost (as a tag used twice).
+TEST(GmshIo, Msh22LinesDifferingOnlyInTheirElementaryTagAreTwoElements) {
+  const std::string text =
+      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n$EndNodes\n"
+      "$Elements\n3\n1 4 2 11 1 1 2 3 4\n1 4 2 11 2 1 2 3 4\n2 4 2 11 1 1 3 2 5\n$EndElements\n";
+  const TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 0, 1, 2, 3, 0, 2, 1, 4}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 2, 1}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{11, 11, 11}));
+  EXPECT_EQ(raw_section(mesh, "$Entities"), nullptr);
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"element tag 1 is used twice; MSH output numbers the elements 1, 2, ... "
+                                      "instead of keeping their tags"}));
+}
+
 TEST(GmshIo, Msh22PartitionTagsAreNoted) {
   const std::string text =
       "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n5\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n5 0 0 -1\n$EndNodes\n"

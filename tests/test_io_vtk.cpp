@@ -25,6 +25,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/base64.hpp"
 #include "mesh/io/inflate.hpp"
+#include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
 #include "mesh/io/xml_scan.hpp"
@@ -1168,6 +1169,34 @@ TEST(VtuCompressedErrors, HeadersThatDisagreeWithTheDataOrTheFile) {
                                  ": Points: the compression header's block count 4294967295 exceeds the file");
 }
 
+// Appended base64 blocks have no end of their own: a block header shorter
+// than it declares (by its block count, or by header_type) decodes into the
+// characters after it, and is refused rather than read past what it gave.
+TEST(VtuErrors, AppendedBase64HeaderShorterThanItDeclaresIsRefused) {
+  Packing p;
+  p.form = VtuForm::AppendedBase64;
+  std::string text = compressed_vtu(vtu_text(testing::regular_tet()), p);
+  const std::size_t types = appended_data_at(text, "types");
+  // 1 block (16 header bytes, 24 characters) made 2: 20 bytes are due, its
+  // 24 characters and the next 4, the data's, give 19.
+  const std::string compressed = text;
+  text.replace(types, 8, base64({2, 0, 0, 0, 0x00, 0x80}));
+  EXPECT_EQ(vtu_error(text), "mesh.vtu, byte " + std::to_string(types) + ": types: invalid base64 block header");
+  // Not even the block count: 2 bytes where its 4 are due.
+  text = compressed;
+  text.replace(types, 8, "AQ==AQ==");
+  EXPECT_EQ(vtu_error(text), "mesh.vtu, byte " + std::to_string(types) + ": types: invalid base64 block header");
+  // UInt64 headers, the types' byte count in 4 bytes: 8 are due, 7 given.
+  const std::string plain = file_text("vtu_appended_base64.vtu");
+  const std::string short_header = replaced(plain, "AwAAAAAAAAA=CgoF", "AwAAAA==CgoF");
+  EXPECT_EQ(vtu_error(short_header), "mesh.vtu, byte " + std::to_string(short_header.find("AwAAAA==")) +
+                                         ": types: invalid base64 block header");
+  // A file that ends inside the header.
+  const std::size_t cut = plain.find("AwAAAAAAAAA=") + 8;
+  EXPECT_EQ(vtu_error(plain.substr(0, cut)),
+            "mesh.vtu, byte " + std::to_string(cut - 8) + ": types: invalid base64 block header");
+}
+
 TEST(VtuCompressedErrors, AHugeDeclaredSizeIsNotAllocatedBeforeTheDataYieldIt) {
   // 10^10 points (240 GB of Float64) in one block, as a header may say;
   // the file padded so that this many points pass the early bound.
@@ -1284,6 +1313,30 @@ TEST(VtuErrors, OffsetProblemsAreNamedWhereTheyAre) {
   const std::string offsets = replaced(ascii, "4 8 11 13", "4 8\n99\n13");
   EXPECT_EQ(vtu_error(offsets).rfind(line_of(offsets, "99\n13", "mesh.vtu") + " cell 2: offset 99", 0), 0u)
       << vtu_error(offsets);
+}
+
+// mesh_from_vtk_cells wants the leading 0 and one offset per cell type, and
+// one tag per cell. The VTU reader sizes all three from NumberOfCells, so no
+// .vtu reaches these checks; a direct caller does (and a legacy file, below,
+// the offsets one).
+TEST(VtkCells, OffsetsOrTagsLongerThanTheCellTypesAreRefused) {
+  const auto error = [](const std::vector<long long>& offsets, const std::vector<int>& tags) {
+    TetMesh mesh = testing::regular_tet();
+    const std::vector<long long> connectivity{0, 1, 2, 3, 0, 1, 2};  // a tet, then a triangle's worth
+    const VtkCellPlace place = [](VtkCellArray, std::size_t, std::size_t) { return VtkValuePlace{"nowhere", ""}; };
+    return testing::input_error_message(
+        [&] { mesh_from_vtk_cells(mesh, connectivity, offsets, {10}, tags, "cells.vtu:7", place); },
+        "mesh_from_vtk_cells");
+  };
+  EXPECT_EQ(error({0, 4, 7}, {}), "cells.vtu:7: cell offsets do not match the 1 cell types");
+  EXPECT_EQ(error({0}, {}), "cells.vtu:7: cell offsets do not match the 1 cell types");
+  EXPECT_EQ(error({4, 8}, {}), "cells.vtu:7: cell offsets do not match the 1 cell types");  // no leading 0
+  EXPECT_EQ(error({0, 4}, {5, 6}), "cells.vtu:7: 2 region tags for 1 cells");
+  // The same arrays at their right lengths make one tet.
+  TetMesh mesh = testing::regular_tet();
+  mesh_from_vtk_cells(mesh, {0, 1, 2, 3}, {0, 4}, {10}, {5}, "cells.vtu:7", {});
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{5}));
 }
 
 TEST(VtkValuePlaces, VtuBinaryNamesTheValuesByteOrTheArraysDataAndTheEntry) {
@@ -1456,6 +1509,30 @@ TEST(LegacyVtkErrors, OffsetOnePastTheConnectivityIsNamed) {
       "CELL_TYPES 1\n10\n";
   const std::string msg = vtk_error(v51);
   EXPECT_NE(msg.find("offset 5 outside the connectivity array of 4"), std::string::npos) << msg;
+}
+
+// Legacy files reach the offsets check of mesh_from_vtk_cells: CELLS and
+// CELL_TYPES count the cells each on their own, and a cell without a type
+// (or a type without a cell) is refused, not dropped.
+TEST(LegacyVtkErrors, CellsAndCellTypesOfDifferentCountsAreRefused) {
+  const std::string v42 =
+      "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 10\n4 0 1 2 3\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+  EXPECT_EQ(vtk_error(v42), "mesh.vtk:10: cell offsets do not match the 1 cell types");
+  EXPECT_EQ(vtk_error(replaced(v42, "CELL_TYPES 1\n10\n", "CELL_TYPES 3\n10 10 10\n")),
+            "mesh.vtk:10: cell offsets do not match the 3 cell types");
+}
+
+// 5.x OFFSETS start with the 0 of the first cell; read from another start,
+// the cell would take nodes that are not its own (here a valid tet).
+TEST(LegacyVtkErrors, OffsetsThatDoNotStartAtZeroAreRefused) {
+  const std::string v51 =
+      "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 8\nOFFSETS vtktypeint64\n4 8\nCONNECTIVITY vtktypeint64\n3 3 3 3 0 1 2 3\n"
+      "CELL_TYPES 1\n10\n";
+  EXPECT_EQ(vtk_error(v51), "mesh.vtk:12: cell offsets do not match the 1 cell types");
+  const std::string from_zero = replaced(replaced(v51, "CELLS 2 8", "CELLS 2 4"), "4 8\n", "0 4\n");
+  EXPECT_EQ(vtk_from_text(replaced(from_zero, "3 3 3 3 0 1 2 3", "0 1 2 3")).tets, (std::vector<index_t>{0, 1, 2, 3}));
 }
 
 TEST(VtuErrors, NegativeAppendedOffsetIsRefused) {

@@ -1181,20 +1181,22 @@ TEST(VtuErrors, AppendedBase64HeaderShorterThanItDeclaresIsRefused) {
   // 24 characters and the next 4, the data's, give 19.
   const std::string compressed = text;
   text.replace(types, 8, base64({2, 0, 0, 0, 0x00, 0x80}));
-  EXPECT_EQ(vtu_error(text), "mesh.vtu, byte " + std::to_string(types) + ": types: invalid base64 block header");
+  EXPECT_EQ(vtu_error(text),
+            "mesh.vtu, byte " + std::to_string(types) + ": types: truncated block header: 19 of its 20 bytes");
   // Not even the block count: 2 bytes where its 4 are due.
   text = compressed;
   text.replace(types, 8, "AQ==AQ==");
-  EXPECT_EQ(vtu_error(text), "mesh.vtu, byte " + std::to_string(types) + ": types: invalid base64 block header");
+  EXPECT_EQ(vtu_error(text),
+            "mesh.vtu, byte " + std::to_string(types) + ": types: truncated block header: 2 of its 4 bytes");
   // UInt64 headers, the types' byte count in 4 bytes: 8 are due, 7 given.
   const std::string plain = file_text("vtu_appended_base64.vtu");
   const std::string short_header = replaced(plain, "AwAAAAAAAAA=CgoF", "AwAAAA==CgoF");
   EXPECT_EQ(vtu_error(short_header), "mesh.vtu, byte " + std::to_string(short_header.find("AwAAAA==")) +
-                                         ": types: invalid base64 block header");
+                                         ": types: truncated block header: 7 of its 8 bytes");
   // A file that ends inside the header.
   const std::size_t cut = plain.find("AwAAAAAAAAA=") + 8;
   EXPECT_EQ(vtu_error(plain.substr(0, cut)),
-            "mesh.vtu, byte " + std::to_string(cut - 8) + ": types: invalid base64 block header");
+            "mesh.vtu, byte " + std::to_string(cut - 8) + ": types: truncated block header: 6 of its 8 bytes");
 }
 
 TEST(VtuCompressedErrors, AHugeDeclaredSizeIsNotAllocatedBeforeTheDataYieldIt) {
@@ -1533,6 +1535,24 @@ TEST(LegacyVtkErrors, OffsetsThatDoNotStartAtZeroAreRefused) {
   EXPECT_EQ(vtk_error(v51), "mesh.vtk:12: cell offsets do not match the 1 cell types");
   const std::string from_zero = replaced(replaced(v51, "CELLS 2 8", "CELLS 2 4"), "4 8\n", "0 4\n");
   EXPECT_EQ(vtk_from_text(replaced(from_zero, "3 3 3 3 0 1 2 3", "0 1 2 3")).tets, (std::vector<index_t>{0, 1, 2, 3}));
+}
+
+// VTK ends the connectivity array at the last offset: a 5.x file with more
+// connectivity values than its cells use is refused at that offset, not
+// read with the extra values dropped.
+TEST(LegacyVtkErrors, ConnectivityLongerThanTheCellsUseIsRefused) {
+  const std::string v51 =
+      "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+      "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nCELLS 2 5\nOFFSETS vtktypeint64\n0 4\nCONNECTIVITY vtktypeint64\n0 1 2 3 4\n"
+      "CELL_TYPES 1\n10\n";
+  EXPECT_EQ(vtk_error(v51), "mesh.vtk:9: the cells use 4 of the connectivity array's 5 values");
+  const std::string exact = replaced(replaced(v51, "CELLS 2 5", "CELLS 2 4"), "0 1 2 3 4\n", "0 1 2 3\n");
+  EXPECT_EQ(vtk_from_text(exact).tets, (std::vector<index_t>{0, 1, 2, 3}));
+  // With no cells at all, the place is the cell types'.
+  const std::string none = replaced(replaced(replaced(v51, "CELLS 2 5", "CELLS 1 5"), "0 4\n", "0\n"), "CELL_TYPES 1\n10\n",
+                                    "CELL_TYPES 0\n");
+  EXPECT_NE(vtk_error(none).find("the cells use 0 of the connectivity array's 5 values"), std::string::npos)
+      << vtk_error(none);
 }
 
 TEST(VtuErrors, NegativeAppendedOffsetIsRefused) {

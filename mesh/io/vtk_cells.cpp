@@ -174,6 +174,16 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     for (long long k = begin; k < end; ++k) block.connectivity.push_back(static_cast<index_t>(connectivity[k]));
     if (!tags.empty()) block.tags.push_back(tags[c]);
   }
+  // Every offset is now within the connectivity array. VTK's cell arrays end
+  // it at the last offset: values past it are a malformed file (a count or
+  // an offset written wrong), not spare room to skip.
+  const auto used = static_cast<std::size_t>(offsets.back());
+  if (used != connectivity.size()) {
+    const VtkValuePlace at = count ? place(VtkCellArray::Offsets, count, count - 1) : VtkValuePlace{where, ""};
+    throw InputError(at.where, "the cells use " + std::to_string(used) + " of the connectivity array's " +
+                                   std::to_string(connectivity.size()) + " values" +
+                                   (at.entry.empty() ? "" : " (" + at.entry + ")"));
+  }
   if (mesh.extras.blocks.empty()) return;
   mesh.fixed.resize(mesh.num_nodes(), 0);
   mark_element_nodes(mesh.extras.blocks, mesh.fixed);

@@ -150,13 +150,20 @@ std::size_t VtuArrayDecoder::appended_at(const VtuDataArray& a, const char* what
 // first item, the block count, says.
 void VtuArrayDecoder::appended_base64(std::size_t at, const char* what, std::vector<unsigned char>& storage) const {
   const VtuBlocks blocks(enc_, byte_where(at), what);
+  // Valid base64 that decodes to fewer bytes than the header needs: padding
+  // inside it, or the end of the file.
+  const auto check_header = [&](std::size_t due) {
+    if (storage.size() < due)
+      fail(byte_where(at), what,
+           "truncated block header: " + std::to_string(storage.size()) + " of its " + std::to_string(due) + " bytes");
+  };
   base64_run(at, base64_length(enc_.header_bytes), what, "block header", storage);
-  if (storage.size() < enc_.header_bytes) fail(byte_where(at), what, "invalid base64 block header");
+  check_header(enc_.header_bytes);
   const std::size_t header = blocks.header_size(storage.data(), text_.size());
   const std::size_t header_chars = base64_length(header);
   storage.clear();
   base64_run(at, header_chars, what, "block header", storage);
-  if (storage.size() < header) fail(byte_where(at), what, "invalid base64 block header");
+  check_header(header);
   const std::uint64_t data = blocks.data_size(storage.data(), text_.size());
   base64_run(at + header_chars, base64_length(data), what, "data", storage);
 }

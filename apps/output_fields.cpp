@@ -19,7 +19,8 @@ bool format_carries_fields(MeshFormat format) {
 MeshFields quality_fields(const TetMesh& mesh) {
   MeshFields fields;
   fields.tet_scalars.emplace_back("quality", tet_qualities(mesh));
-  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes());
+  // On all cores, as tet_qualities.
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes(), 0);
   fields.node_scalars.emplace_back("boundary", std::vector<double>(boundary.begin(), boundary.end()));
   return fields;
 }

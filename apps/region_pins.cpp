@@ -4,8 +4,8 @@
 
 namespace tetsmooth::cli {
 
-RegionInterfacePins::RegionInterfacePins(TetMesh& mesh) : mesh_(mesh), file_pins_(mesh.fixed) {
-  const std::vector<std::uint8_t> pinned = region_interface_nodes(mesh);
+RegionInterfacePins::RegionInterfacePins(TetMesh& mesh, int threads) : mesh_(mesh), file_pins_(mesh.fixed) {
+  const std::vector<std::uint8_t> pinned = region_interface_nodes(mesh, {}, threads);
   for (std::size_t i = 0; i < pinned.size(); ++i) {
     if (pinned[i] == kNotPinned || (!mesh.fixed.empty() && mesh.fixed[i])) continue;
     if (mesh.fixed.empty()) mesh.fixed.assign(mesh.num_nodes(), 0);

@@ -15,7 +15,8 @@ namespace tetsmooth::cli {
 
 class RegionInterfacePins {
  public:
-  explicit RegionInterfacePins(TetMesh& mesh);
+  // `threads` sorts the faces (0 all cores, as --threads).
+  RegionInterfacePins(TetMesh& mesh, int threads);
   ~RegionInterfacePins();
   RegionInterfacePins(const RegionInterfacePins&) = delete;
   RegionInterfacePins& operator=(const RegionInterfacePins&) = delete;

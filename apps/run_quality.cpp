@@ -23,8 +23,8 @@ void run_quality(const QualityCommand& c, const Console& console) {
   // The topology tells which tets smoothing could change (min_movable), with
   // material interfaces and Gmsh features pinned as `smooth` pins them.
   const Topology topology = on_input_mesh(c.input, [&] {
-    const RegionInterfacePins pins(mesh);
-    return build_topology(mesh, 0);  // all cores
+    const RegionInterfacePins pins(mesh, 0);  // all cores, as the quality summary
+    return build_topology(mesh, 0);
   });
   record.boundary_nodes = static_cast<std::size_t>(std::count(topology.boundary.begin(), topology.boundary.end(), 1));
   record.movable_nodes = static_cast<std::size_t>(std::count(topology.movable.begin(), topology.movable.end(), 1));

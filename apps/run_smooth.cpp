@@ -155,7 +155,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
                         ProgressLine::interval_for(style));
   if (style != ProgressLine::Style::Off) options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
   try {
-    const RegionInterfacePins pins(mesh);
+    const RegionInterfacePins pins(mesh, options.threads);
     if (pins.added_on_interfaces() > 0)
       console.note(with_thousands(pins.added_on_interfaces()) +
                    " nodes on interfaces between regions (tets of different tags or Gmsh volumes) stay fixed");

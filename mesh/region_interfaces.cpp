@@ -21,7 +21,7 @@ bool tet_entities_split_regions(const TetMesh& mesh) {
   return false;
 }
 
-std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceSources sources) {
+std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceSources sources, int threads) {
   const std::size_t nodes = mesh.num_nodes(), tets = mesh.num_tets();
   std::vector<std::uint8_t> pinned(nodes, kNotPinned);
   const FileExtras& extras = mesh.extras;
@@ -38,7 +38,7 @@ std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceS
   if (sources.node_entities && dims.size() == nodes)
     for (std::size_t i = 0; i < nodes && !by_node; ++i) by_node = dims[i] < 3 && !file_pins(i);
   if (!by_region && !by_entity && !by_node) return pinned;
-  const RowItems<FaceUse> uses = sorted_face_uses(mesh.tets);
+  const RowItems<FaceUse> uses = sorted_face_uses(mesh.tets, threads);
   // A tet's side of an interface: its region tag and its entity tag, 0 for
   // either that is not looked at.
   using Side = std::pair<int, int>;

@@ -44,8 +44,10 @@ inline constexpr std::uint8_t kOnGmshFeature = 2;
 // the data above. A tet listed more than once (Gmsh's MSH 2.2 writer
 // repeats the tets of a volume in two physical groups, under both tags) is
 // one tet with all of its (region, entity) pairs: a face is an interface
-// when its two tets' sets of pairs differ.
-std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceSources sources = {});
+// when its two tets' sets of pairs differ. The face sort runs on `threads`
+// (as build_topology's: 1 the default, 0 all cores; the same result).
+std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceSources sources = {},
+                                                 int threads = 1);
 
 // Whether the Gmsh entity tags of the tets tell apart tets of one region
 // (of the whole mesh, where the tets carry no region tags): only then do

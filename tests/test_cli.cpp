@@ -1184,7 +1184,7 @@ TEST(CliPieces, InterfacePinsCountOnlyNodesTheFileLeftFree) {
     if (mesh.xyz[3 * i] > 1.5 && mesh.xyz[3 * i] < 2.5) mesh.fixed[i] = 1, ++pinned_by_file;
   const std::vector<std::uint8_t> file_pins = mesh.fixed;
   {
-    const RegionInterfacePins pins(mesh);
+    const RegionInterfacePins pins(mesh, 2);
     EXPECT_EQ(pins.added_on_interfaces(), 25u - 3u);
     EXPECT_EQ(pins.added_on_features(), 0u);
   }

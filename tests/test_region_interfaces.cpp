@@ -35,6 +35,8 @@ TEST(RegionInterfaces, ThePlaneBetweenTwoLayers) {
   const std::vector<std::uint8_t> expected = on_plane_x_2(m);
   ASSERT_EQ(std::count(expected.begin(), expected.end(), 1), 25);
   EXPECT_EQ(region_interface_nodes(m), expected);
+  // The face sort on several threads finds the same plane.
+  for (int threads : {2, 3, 0}) EXPECT_EQ(region_interface_nodes(m, {}, threads), expected) << threads << " threads";
 }
 
 TEST(RegionInterfaces, NoneWithoutTagsOrWithOneRegion) {

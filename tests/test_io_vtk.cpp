@@ -1525,34 +1525,38 @@ TEST(LegacyVtkErrors, CellsAndCellTypesOfDifferentCountsAreRefused) {
             "mesh.vtk:10: cell offsets do not match the 3 cell types");
 }
 
+// A 5.1 ASCII file of five points and the cell arrays given as their
+// values' text: CELLS counts the values of each; one cell type per offset
+// after the first, all tets.
+std::string legacy51(const std::string& offsets, const std::string& connectivity) {
+  const auto count = [](const std::string& values) {
+    std::istringstream in(values);
+    return std::distance(std::istream_iterator<std::string>(in), std::istream_iterator<std::string>());
+  };
+  const auto cells = count(offsets) - 1;
+  std::string types;
+  for (long k = 0; k < cells; ++k) types += k ? " 10" : "10";
+  return "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+         "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nCELLS " +
+         std::to_string(count(offsets)) + " " + std::to_string(count(connectivity)) + "\nOFFSETS vtktypeint64\n" +
+         offsets + "\nCONNECTIVITY vtktypeint64\n" + connectivity + "\nCELL_TYPES " + std::to_string(cells) + "\n" +
+         types + "\n";
+}
+
 // 5.x OFFSETS start with the 0 of the first cell; read from another start,
 // the cell would take nodes that are not its own (here a valid tet).
 TEST(LegacyVtkErrors, OffsetsThatDoNotStartAtZeroAreRefused) {
-  const std::string v51 =
-      "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
-      "0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 2 8\nOFFSETS vtktypeint64\n4 8\nCONNECTIVITY vtktypeint64\n3 3 3 3 0 1 2 3\n"
-      "CELL_TYPES 1\n10\n";
-  EXPECT_EQ(vtk_error(v51), "mesh.vtk:12: cell offsets do not match the 1 cell types");
-  const std::string from_zero = replaced(replaced(v51, "CELLS 2 8", "CELLS 2 4"), "4 8\n", "0 4\n");
-  EXPECT_EQ(vtk_from_text(replaced(from_zero, "3 3 3 3 0 1 2 3", "0 1 2 3")).tets, (std::vector<index_t>{0, 1, 2, 3}));
+  EXPECT_EQ(vtk_error(legacy51("4 8", "3 3 3 3 0 1 2 3")), "mesh.vtk:12: cell offsets do not match the 1 cell types");
+  EXPECT_EQ(vtk_from_text(legacy51("0 4", "0 1 2 3")).tets, (std::vector<index_t>{0, 1, 2, 3}));
 }
 
 // VTK ends the connectivity array at the last offset: a 5.x file with more
 // connectivity values than its cells use is refused at that offset, not
 // read with the extra values dropped.
 TEST(LegacyVtkErrors, ConnectivityLongerThanTheCellsUseIsRefused) {
-  const std::string v51 =
-      "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
-      "0 0 0 1 0 0 0 1 0 0 0 1 1 1 1\nCELLS 2 5\nOFFSETS vtktypeint64\n0 4\nCONNECTIVITY vtktypeint64\n0 1 2 3 4\n"
-      "CELL_TYPES 1\n10\n";
-  EXPECT_EQ(vtk_error(v51), "mesh.vtk:9: the cells use 4 of the connectivity array's 5 values");
-  const std::string exact = replaced(replaced(v51, "CELLS 2 5", "CELLS 2 4"), "0 1 2 3 4\n", "0 1 2 3\n");
-  EXPECT_EQ(vtk_from_text(exact).tets, (std::vector<index_t>{0, 1, 2, 3}));
-  // With no cells at all, the place is the cell types'.
-  const std::string none = replaced(replaced(replaced(v51, "CELLS 2 5", "CELLS 1 5"), "0 4\n", "0\n"), "CELL_TYPES 1\n10\n",
-                                    "CELL_TYPES 0\n");
-  EXPECT_NE(vtk_error(none).find("the cells use 0 of the connectivity array's 5 values"), std::string::npos)
-      << vtk_error(none);
+  EXPECT_EQ(vtk_error(legacy51("0 4", "0 1 2 3 4")), "mesh.vtk:9: the cells use 4 of the connectivity array's 5 values");
+  const std::string none = vtk_error(legacy51("0", "0 1 2 3 4"));  // no cells at all
+  EXPECT_NE(none.find("the cells use 0 of the connectivity array's 5 values"), std::string::npos) << none;
 }
 
 TEST(VtuErrors, NegativeAppendedOffsetIsRefused) {

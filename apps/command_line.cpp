@@ -101,7 +101,6 @@ SmoothCommand parse_smooth(const std::vector<std::string>& args) {
                        "singleblock");
   }
   c.layout_given = p.has("layout");
-  c.threads_given = p.has("threads");
   c.quiet = p.has("quiet");
   return c;
 }

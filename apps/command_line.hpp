@@ -33,7 +33,7 @@ struct SmoothCommand {
   ProgressMode progress = ProgressMode::Auto;
   bool quiet = false;
   // Options only one backend uses, remembered so a run can say it ignored them.
-  bool strategy_given = false, layout_given = false, threads_given = false;
+  bool strategy_given = false, layout_given = false;
 };
 
 struct QualityCommand {

@@ -36,9 +36,8 @@ Device choose_device(Device requested, std::string& why_not_cuda) {
 }
 
 std::vector<std::string> ignored_option_warnings(const SmoothCommand& c, Device device) {
+  // --threads is never ignored: a CUDA run builds its host topology on them.
   std::vector<std::string> warnings;
-  if (device == Device::Cuda && c.threads_given)
-    warnings.emplace_back("--threads applies to the CPU only; ignored on CUDA");
   if (device == Device::Cpu) {
     if (c.strategy_given) warnings.emplace_back("--strategy selects a CUDA launch scheme; ignored on the CPU");
     if (c.layout_given) warnings.emplace_back("--layout selects the CUDA data layout; ignored on the CPU");

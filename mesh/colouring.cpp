@@ -58,8 +58,9 @@ Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& m
     still.clear();
     for (std::ptrdiff_t k = 0; k < count; ++k) (wins[k] ? winners : still).push_back(pending[k]);
     // No two winners are neighbours (of two pending neighbours one goes
-    // first), so each takes its colour from those of earlier rounds, in
-    // whatever order the winners are coloured.
+    // first, each seeing the other in its symmetric row), so each takes its
+    // colour from those of earlier rounds, in whatever order the winners
+    // are coloured.
     int top = result.num_colours;
     const auto won = static_cast<std::ptrdiff_t>(winners.size());
 #pragma omp parallel num_threads(shared ? threads : 1) if (shared)

@@ -43,6 +43,10 @@ struct Colouring {
 
 // On `threads` OpenMP threads (1 by default; 0 for all cores): a round's
 // nodes are independent, so the colouring is the same whatever the count.
+// The rows must be symmetric (j in row i exactly when i is in row j), as
+// build_neighbours makes them: with a one-sided row two neighbours could
+// both win a round, and on several threads one would read the colour the
+// other is writing.
 Colouring colour_nodes(const Csr& neighbours, const std::vector<std::uint8_t>& movable, int threads = 1);
 
 // Builds `classes` from a per-node colour array (-1 = uncoloured).

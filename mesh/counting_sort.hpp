@@ -34,8 +34,9 @@ struct RowBuckets {
 // is the same whatever `threads` is.
 //
 // With threads > 1 the producers are split into that many runs (at most
-// kMaxSortRuns), one a thread, and each run counts its items by row in a
-// count array of its own (8 bytes a row a run). A row's items from run c
+// kMaxSortRuns, which bounds the memory), shared out among the threads
+// OpenMP gives (the result does not depend on how many), and each run counts
+// its items by row in a count array of its own (8 bytes a row a run). A row's items from run c
 // then go after those of runs before c, each run placing its own without
 // atomics: atomic bumps of shared counts serialised the scattered writes
 // (two threads took half as long again as one on the 109k model's edges).

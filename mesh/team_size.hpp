@@ -1,6 +1,7 @@
 #pragma once
 // What a `threads` argument of the library asks OpenMP for: 0 means all
-// cores (OpenMP's default team), 1 or less one thread, the serial reference.
+// cores (OpenMP's default team, omp_get_max_threads(), which
+// OMP_NUM_THREADS sets), 1 or less one thread, the serial reference.
 // For sources built with OpenMP (every library target links it).
 #include <algorithm>
 

@@ -9,8 +9,10 @@
 // sorting, and takes 2.5 s with this.
 //
 // `threads` (1 by default, the serial reference; 0 for all cores) runs the
-// tables' counting sorts and row sorts on that many OpenMP threads; every
-// table comes out the same whatever the count.
+// tables' counting sorts (on at most kMaxSortRuns of them, with a count
+// array of 8 bytes a row for each: 128 MB a million nodes at 16) and row
+// sorts on that many OpenMP threads; every table comes out the same
+// whatever the count. count_repeated_tets stays serial.
 #include <array>
 #include <cstddef>
 #include <cstdint>

@@ -110,7 +110,7 @@ TEST(CliParse, SmoothDefaultsAreThoseDocumented) {
   EXPECT_TRUE(c.report_path.empty());
   EXPECT_FALSE(c.quiet);
   EXPECT_EQ(c.progress, ProgressMode::Auto);
-  EXPECT_FALSE(c.strategy_given || c.layout_given || c.threads_given);
+  EXPECT_FALSE(c.strategy_given || c.layout_given);
 }
 
 TEST(CliParse, SmoothTakesEveryOptionInBothSpellings) {
@@ -155,7 +155,7 @@ TEST(CliParse, SmoothTakesEveryOptionInBothSpellings) {
   EXPECT_EQ(c.output_format, MeshFormat::Vtk);
   EXPECT_EQ(c.progress, ProgressMode::Always);
   EXPECT_TRUE(c.quiet);
-  EXPECT_TRUE(c.strategy_given && c.layout_given && c.threads_given);
+  EXPECT_TRUE(c.strategy_given && c.layout_given);
   // Form A is Jacobi: there is no node order to choose.
   EXPECT_EQ(c.options.ordering, Ordering::Natural);
 }

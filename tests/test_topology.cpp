@@ -211,6 +211,25 @@ TEST(Topology, FaceUsesInFullSortOrder) {
   expect_matches_brute_force(m);
 }
 
+// Rows finished side by side share the neighbour marks (`seen` in
+// build_neighbours); with node labels scattered, rows on different threads
+// meet the same neighbours, and a mark overwritten in between keeps one
+// twice unless it is made unique. A lattice big enough for many chunks of
+// rows a thread, built again and again, must give the serial tables.
+TEST(Topology, ScatteredLabelsGiveTheSerialTablesOnManyThreads) {
+  TetMesh m = testing::cube_grid(30, 0.2);
+  const std::size_t n = m.num_nodes();  // 31^3, which 7919 does not divide
+  for (index_t& v : m.tets) v = static_cast<index_t>((static_cast<std::size_t>(v) * 7919) % n);
+  const Topology serial = build_topology(m, 1);
+  for (int round = 0; round < 4; ++round)
+    for (int threads : {2, 4, 0}) {
+      const Topology t = build_topology(m, threads);
+      ASSERT_TRUE(t.neighbours == serial.neighbours) << threads << " threads, round " << round;
+      ASSERT_TRUE(t.node_tets == serial.node_tets) << threads << " threads, round " << round;
+      ASSERT_EQ(t.boundary, serial.boundary) << threads << " threads, round " << round;
+    }
+}
+
 // The face convention of tet_mesh.hpp: face f, opposite local vertex f, is
 // listed so that its normal (b-a)x(c-a) points away from that vertex for a
 // positively oriented tet. Checked on the corner tet (0,0,0), x, y, z.

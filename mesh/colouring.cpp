@@ -1,11 +1,11 @@
 #include "mesh/colouring.hpp"
 
-#include "mesh/team_size.hpp"
-
 #include <algorithm>
 #include <cstddef>
 #include <numeric>
 #include <string>
+
+#include "mesh/team_size.hpp"
 
 namespace tetsmooth {
 

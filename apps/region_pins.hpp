@@ -21,8 +21,9 @@ class RegionInterfacePins {
   RegionInterfacePins(const RegionInterfacePins&) = delete;
   RegionInterfacePins& operator=(const RegionInterfacePins&) = delete;
 
-  // Nodes that the file had not pinned already: on interfaces (kOnInterface),
-  // and on Gmsh features inside the mesh (kOnGmshFeature, on no interface).
+  // Nodes that the file had not pinned already, off the boundary (which
+  // stays in place anyway): on interfaces (kOnInterface), and on Gmsh
+  // features inside the mesh (kOnGmshFeature, on no interface).
   std::size_t added_on_interfaces() const { return added_interface_; }
   std::size_t added_on_features() const { return added_features_; }
 

@@ -54,7 +54,7 @@ std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceS
     std::sort(set.begin(), set.end());
     set.erase(std::unique(set.begin(), set.end()), set.end());
   };
-  std::vector<std::uint8_t> boundary(by_node ? nodes : 0, 0);
+  std::vector<std::uint8_t> boundary(nodes, 0);
   std::vector<Side> seen, set;
   for (std::size_t first = 0, last; first < uses.size(); first = last) {
     for (last = first + 1; last < uses.size() && uses[last].face == uses[first].face; ++last) {
@@ -75,9 +75,13 @@ std::vector<std::uint8_t> region_interface_nodes(const TetMesh& mesh, InterfaceS
     }
     if (differs)
       for (index_t n : uses[first].face) pinned[static_cast<std::size_t>(n)] = kOnInterface;
-    if (by_node && tets_on_face == 1)
+    if (tets_on_face == 1)
       for (index_t n : uses[first].face) boundary[static_cast<std::size_t>(n)] = 1;
   }
+  // The boundary stays in place anyway; its nodes at the rim of an
+  // interface are not counted as pinned by it.
+  for (std::size_t i = 0; i < nodes; ++i)
+    if (boundary[i]) pinned[i] = kNotPinned;
   if (by_node) {
     // Nodes in no tet never move; they are no feature of the mesh.
     std::vector<std::uint8_t> used(nodes, 0);

@@ -28,10 +28,12 @@ struct InterfaceSources {
 };
 
 // Per node, why it stays in place besides the boundary and the file's pins.
+// Boundary nodes (on a face of one tet, as find_boundary_nodes finds them)
+// are kNotPinned: they stay in place anyway.
 inline constexpr std::uint8_t kNotPinned = 0;
 // On a face shared by tets of different regions or, with entity_tags, of
-// different Gmsh volume entities (on the boundary too, at the rim of the
-// interface).
+// different Gmsh volume entities, and not on the boundary (the interface's
+// rim is).
 inline constexpr std::uint8_t kOnInterface = 1;
 // With node_entities: classified by Gmsh on a point, curve or surface, in
 // a tet but on no boundary face and no interface face, and not pinned by

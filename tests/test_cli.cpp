@@ -396,7 +396,13 @@ TEST(CliExit, UnknownModelIsAUsageError) {
   EXPECT_EQ(run({"generate", "no-such-model", "-o", "/tmp/never-written.vtu"}).code, kExitUsage);
 }
 
-TEST(CliExit, UnknownExtensionIsAUsageError) { EXPECT_EQ(run({"convert", "a.vtu", "b.xyz"}).code, kExitUsage); }
+TEST(CliExit, UnknownExtensionIsAUsageError) {
+  const CliRun r = run({"convert", "a.vtu", "b.xyz"});
+  EXPECT_EQ(r.code, kExitUsage);
+  // The message names the way out: the options that name a format.
+  EXPECT_NE(r.err.find("cannot tell the mesh format of 'b.xyz'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--output-format"), std::string::npos) << r.err;
+}
 
 TEST_F(CliFiles, MissingInputExitsWith3) {
   const CliRun r = run({"quality", path("absent.vtu")});
@@ -569,6 +575,25 @@ TEST(OutputLosses, PinsKeptByElementsOnlyWhereTheFormatWritesThem) {
   mesh.extras.blocks.push_back(PassThroughBlock{"vertex", 1, {on_vertex}, {}, {}, {}});
   EXPECT_TRUE(has_note(output_losses(mesh, "out.msh"), "1 pinned node will not be pinned in the msh41 output"));
   EXPECT_TRUE(has_note(output_losses(mesh, "out.node"), "2 pinned nodes will not be pinned in the tetgen output"));
+}
+
+// Medit has no point elements: a vertex block goes out as RequiredVertices,
+// its pin kept, its elements and their tags (a Gmsh physical point, say)
+// not; the run says so. Other formats keep the block.
+TEST(OutputLosses, PointElementsLoseTheirTagsInMedit) {
+  TetMesh mesh = testing::cube_grid(3);
+  const index_t a = 1 + 4 * (1 + 4 * 1), b = 2 + 4 * (2 + 4 * 2);
+  mesh.extras.blocks.push_back(PassThroughBlock{"vertex", 1, {a, b}, {40, 40}, {}, {}});
+  EXPECT_TRUE(has_note(output_losses(mesh, "out.mesh"),
+                       "2 point elements will be written as RequiredVertices, without their tags or element ids "
+                       "(their nodes stay pinned): medit has no point elements"));
+  for (const char* other : {"out.msh", "out.vtu", "out.vtk"})
+    EXPECT_FALSE(has_note(output_losses(mesh, other), "point element")) << other;
+  mesh.extras.blocks.back().connectivity.pop_back();
+  mesh.extras.blocks.back().tags.pop_back();
+  EXPECT_TRUE(has_note(output_losses(mesh, "out.mesh"),
+                       "1 point element will be written as RequiredVertices, without its tag or element id (its node "
+                       "stays pinned): medit has no point elements"));
 }
 
 // The probe's failure names the file the run would have written, as the
@@ -1167,8 +1192,8 @@ TEST_F(CliFiles, ReportsSurviveFileNamesThatAreNotUtf8) {
 // Two layers told apart only by their tets' tags: the interface between
 // them stays put, the run says so, and the written file gains no pins.
 // The note "N nodes on interfaces ... stay fixed" counts what the pins add:
-// interface nodes the file had already fixed are not added again. The file's
-// own pins come back when the pins end.
+// interface nodes on the boundary, or that the file had already fixed, are
+// not added again. The file's own pins come back when the pins end.
 TEST(CliPieces, InterfacePinsCountOnlyNodesTheFileLeftFree) {
   TetMesh mesh = testing::cube_grid(4, 0.2);
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
@@ -1176,16 +1201,25 @@ TEST(CliPieces, InterfacePinsCountOnlyNodesTheFileLeftFree) {
     for (int k = 0; k < 4; ++k) cx += mesh.xyz[3 * static_cast<std::size_t>(mesh.tets[4 * t + k])] / 4;
     mesh.extras.tet_tags.push_back(cx < 2 ? 1 : 2);
   }
-  // The 5 x 5 nodes of the grid column x = 2 (jittered) are the interface;
-  // the file pins 3 of them.
+  // The 5 x 5 nodes of the grid column x = 2 (jittered) are the interface,
+  // 3 x 3 of them off the boundary; the file pins 3 of those and one on the
+  // boundary.
   mesh.fixed.assign(mesh.num_nodes(), 0);
-  std::size_t pinned_by_file = 0;
-  for (std::size_t i = 0; i < mesh.num_nodes() && pinned_by_file < 3; ++i)
-    if (mesh.xyz[3 * i] > 1.5 && mesh.xyz[3 * i] < 2.5) mesh.fixed[i] = 1, ++pinned_by_file;
+  const auto inside = [](double c) { return c > 0.5 && c < 3.5; };
+  std::size_t pinned_inside = 0;
+  bool pinned_on_boundary = false;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    if (!(mesh.xyz[3 * i] > 1.5 && mesh.xyz[3 * i] < 2.5)) continue;
+    const bool off_boundary = inside(mesh.xyz[3 * i + 1]) && inside(mesh.xyz[3 * i + 2]);
+    if (off_boundary && pinned_inside < 3) mesh.fixed[i] = 1, ++pinned_inside;
+    if (!off_boundary && !pinned_on_boundary) mesh.fixed[i] = 1, pinned_on_boundary = true;
+  }
+  ASSERT_EQ(pinned_inside, 3u);
+  ASSERT_TRUE(pinned_on_boundary);
   const std::vector<std::uint8_t> file_pins = mesh.fixed;
   {
     const RegionInterfacePins pins(mesh, 2);
-    EXPECT_EQ(pins.added_on_interfaces(), 25u - 3u);
+    EXPECT_EQ(pins.added_on_interfaces(), 9u - 3u);
     EXPECT_EQ(pins.added_on_features(), 0u);
   }
   EXPECT_EQ(mesh.fixed, file_pins);
@@ -1201,7 +1235,8 @@ TEST_F(CliFiles, MaterialInterfacesStayFixed) {
   write_mesh(mesh, path("layers.vtu"));
   const CliRun r = run({"smooth", path("layers.vtu"), "-o", path("out.vtu"), "--device", "cpu"});
   ASSERT_EQ(r.code, kExitOk) << r.err;
-  EXPECT_NE(r.err.find("25 nodes on interfaces between regions"), std::string::npos) << r.err;
+  // The plane's 9 nodes off the boundary: the others stay fixed anyway.
+  EXPECT_NE(r.err.find("9 nodes on interfaces between regions"), std::string::npos) << r.err;
   const TetMesh out = read_mesh(path("out.vtu"));
   EXPECT_TRUE(out.fixed.empty());
   EXPECT_EQ(out.extras.tet_tags, mesh.extras.tet_tags);

@@ -171,8 +171,8 @@ TEST(GmshIo, ReadsFilesWrittenByGmsh) {
   for (const TetMesh* param : {&param22, &param_binary22}) {
     EXPECT_EQ(param->extras.read_notes,
               (std::vector<std::string>{"the parametric coordinates of " + std::to_string(on_curves_and_surfaces) +
-                                        " nodes on curves and surfaces are not kept: the nodes that move would "
-                                        "leave them stale"}));
+                                        " nodes on curves and surfaces are not kept: tetsmooth writes plain node "
+                                        "coordinates"}));
     EXPECT_TRUE(param->extras.node_entity_dims.empty());
     EXPECT_EQ(param->extras.tet_entity_tags, binary22.extras.tet_entity_tags);
   }
@@ -323,13 +323,19 @@ TEST(GmshIo, ReadsBinaryPartitionedFile) {
   EXPECT_EQ(mesh.xyz, read_gmsh_file(testing::data_path("gmsh_partitioned41.msh")).xyz);
 }
 
-// Sections the reader skips are named once per kind; $Comments is not.
+// Sections the reader skips are named once per kind, data sections once
+// per view (their first string tag, when they have one); $Comments is not.
 TEST(GmshIo, SkippedSectionsAreNoted) {
-  const std::string data = "$NodeData\n1\n\"p\"\n1\n0\n3\n0\n1\n1\n1 0.5\n$EndNodeData\n";
+  const auto data = [](const std::string& tags) {
+    return "$NodeData\n" + tags + "1\n0\n3\n0\n1\n1\n1 0.5\n$EndNodeData\n";
+  };
   const std::string text = std::string(kMinimal) + "$Comments\nhello\n$EndComments\n" +
-                           "$Periodic\n1\n0 1 2\n0\n0\n$EndPeriodic\n" + data + data;
+                           "$Periodic\n1\n0 1 2\n0\n0\n$EndPeriodic\n" + data("1\n\"p\"\n") + data("1\n\"p\"\n") +
+                           data("1\n\"pore pressure\"\n") + data("0\n") + data("0\n");
   EXPECT_EQ(read_text(text).extras.read_notes,
             (std::vector<std::string>{"$Periodic section skipped; it will not be in the written file",
+                                      "$NodeData 'p' section skipped; it will not be in the written file",
+                                      "$NodeData 'pore pressure' section skipped; it will not be in the written file",
                                       "$NodeData section skipped; it will not be in the written file"}));
   EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
   EXPECT_TRUE(read_gmsh_file(testing::data_path("gmsh_sparse41.msh")).extras.read_notes.empty());
@@ -476,7 +482,9 @@ INSTANTIATE_TEST_SUITE_P(Flavours, GmshRoundTrip,
                          });
 
 // Parametric coordinates (Mesh.SaveParametric) are read past, with a note:
-// moved nodes would leave them stale, so the output has none.
+// the output has plain nodes (a node on an embedded surface of an MSH 2.2
+// file, which has no other classification, may move, and would leave its
+// parameters stale).
 TEST(GmshIo, ParametricCoordinatesAreNotedAndDropped) {
   const std::string text = replaced(kMinimal, "1 4 1 4\n3 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n",
                                     "2 4 1 4\n2 1 1 3\n1\n2\n3\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n"
@@ -485,8 +493,8 @@ TEST(GmshIo, ParametricCoordinatesAreNotedAndDropped) {
   EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1}));
   ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
   EXPECT_EQ(mesh.extras.read_notes[0],
-            "the parametric coordinates of 3 nodes on curves and surfaces are not kept: the nodes that move would leave "
-            "them stale");
+            "the parametric coordinates of 3 nodes on curves and surfaces are not kept: tetsmooth writes plain node "
+            "coordinates");
   EXPECT_TRUE(read_text(kMinimal).extras.read_notes.empty());
 }
 
@@ -515,7 +523,7 @@ void expect_parametric22_read(const TetMesh& mesh) {
   EXPECT_TRUE(mesh.extras.node_entity_dims.empty());
   EXPECT_EQ(mesh.extras.read_notes,
             (std::vector<std::string>{"the parametric coordinates of 2 nodes on curves and surfaces are not kept: "
-                                      "the nodes that move would leave them stale"}));
+                                      "tetsmooth writes plain node coordinates"}));
 }
 
 TEST(GmshIo, Msh22ParametricNodesAreTheNodes) {
@@ -1030,12 +1038,12 @@ TEST(GmshIo, OutputLossesCountNodesThatGmshEntitiesPin) {
   EXPECT_TRUE(losses_of(point, "out.msh", MeshFormat::Auto).empty());
   EXPECT_EQ(losses_of(point, "out.msh", MeshFormat::Msh22),
             (std::vector<std::string>{"1 node" + feature + "msh22 output, which does not keep the nodes' entities, "
-                                      "so a later run may move them"}));
+                                      "so a later run may move it"}));
   for (const char* name : {"out.vtu", "out.vtk", "out.mesh", "out.node", "out.tsm"})
     EXPECT_EQ(losses_of(point, name, MeshFormat::Auto),
               (std::vector<std::string>{"1 node" + feature + format_name(format_from_path(name)) +
                                         " output, which has no place for Gmsh entities, so a later run may move "
-                                        "them"}))
+                                        "it"}))
         << name;
   // MSH 4.1 output keeps the classification where it can declare the point.
   const TetMesh back = read_text(write_text(point, MshFlavour::V41Ascii));

@@ -80,7 +80,9 @@ void read_nodes_v41(Source& src, ReadState& state) {
     if (count > total - extras.node_tags.size())
       src.fail("the node blocks hold more nodes than the " + std::to_string(total) + " announced");
     // Parametric coordinates (u, v, w up to the entity dimension) follow the
-    // coordinates; they are dropped: nodes that move leave them stale.
+    // coordinates; they are dropped, and the writers write plain nodes
+    // (nodes on curves and surfaces stay in place, but a volume's nodes,
+    // which Gmsh writes without parameters, would leave any stale).
     const int extra_values = parametric != 0 ? dim : 0;
     if (extra_values > 0) parametric_nodes += count;
     src.reservable(count, 8 + 24 + 8 * static_cast<std::size_t>(extra_values));
@@ -102,7 +104,7 @@ void read_nodes_v41(Source& src, ReadState& state) {
 
 std::string parametric_note(std::uint64_t nodes) {
   return "the parametric coordinates of " + std::to_string(nodes) +
-         " nodes on curves and surfaces are not kept: the nodes that move would leave them stale";
+         " nodes on curves and surfaces are not kept: tetsmooth writes plain node coordinates";
 }
 
 template <class Source>

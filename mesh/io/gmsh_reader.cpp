@@ -76,10 +76,13 @@ void check_partition_tags(Source& src, const ReadState& state) {
 
 // The format asks readers to ignore the sections they do not know ($Periodic,
 // $GhostElements, post-processing data, ...); the user hears of each kind
-// once. $Comments holds nothing a mesh would miss.
-void note_skipped(const std::string& section, FileExtras& extras) {
+// once, and of data sections once a view (`view`, their first string tag:
+// a field such as "pore_pressure" over many time steps is one note).
+// $Comments holds nothing a mesh would miss.
+void note_skipped(const std::string& section, FileExtras& extras, const std::string& view = "") {
   if (section == "$Comments") return;
-  std::string note = text_excerpt(section) + " section skipped; it will not be in the written file";
+  std::string note = text_excerpt(section) + (view.empty() ? "" : " " + quoted_token(view)) +
+                     " section skipped; it will not be in the written file";
   if (std::find(extras.read_notes.begin(), extras.read_notes.end(), note) == extras.read_notes.end())
     extras.read_notes.push_back(std::move(note));
 }
@@ -153,7 +156,8 @@ void read_sections(Source& src, ReadState& state) {
     } else if (section == "$MeshFormat") {
       src.fail("a second $MeshFormat section");
     } else if (section == "$NodeData" || section == "$ElementData") {
-      if (!is_recomputed_field(section, skip_data_section(src, end))) note_skipped(section, state.mesh.extras);
+      const std::string view = skip_data_section(src, end);
+      if (!is_recomputed_field(section, view)) note_skipped(section, state.mesh.extras, view);
       continue;
     } else {
       src.skip_section(end);

@@ -82,7 +82,8 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh or .tsm, or give the format");
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh or .tsm, or name the format "
+                   "(--format for an input, --output-format for an output)");
 }
 
 MeshFormat input_format_of(const std::string& path, MeshFormat requested) {

@@ -131,16 +131,12 @@ std::size_t entity_pins_lost(const TetMesh& mesh, MeshFormat format) {
   const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
   const InterfaceSources kept_sources{is_msh(format), classified && msh41 && gmsh::keeps_node_entities(mesh)};
   if (!entities_lost && (!classified || kept_sources.node_entities)) return 0;
+  // Neither marks a boundary node: those stay fixed anyway.
   const std::vector<std::uint8_t> all = region_interface_nodes(mesh);
   const std::vector<std::uint8_t> kept = region_interface_nodes(mesh, kept_sources);
-  std::size_t candidates = 0;
-  for (std::size_t i = 0; i < nodes; ++i)
-    candidates += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i);
-  if (candidates == 0) return 0;
-  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, nodes);
   std::size_t lost = 0;
   for (std::size_t i = 0; i < nodes; ++i)
-    lost += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i) && !boundary[i];
+    lost += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i);
   return lost;
 }
 
@@ -188,15 +184,25 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     }
     if (elements > 0) notes.push_back(kinds + " will not be written: " + name + " holds tets only");
   }
+  if (f == MeshFormat::Medit) {
+    std::size_t points = 0;
+    for (const PassThroughBlock& b : e.blocks)
+      if (b.kind == "vertex") points += b.connectivity.size();
+    if (points > 0)
+      notes.push_back(count_of(points, "point element") + " will be written as RequiredVertices, without " +
+                      (points == 1 ? "its tag or element id (its node stays"
+                                   : "their tags or element ids (their nodes stay") +
+                      " pinned): " + name + " has no point elements");
+  }
   if (const std::size_t lost = pins_lost(mesh, f); lost > 0)
     notes.push_back(count_of(lost, "pinned node") + " will not be pinned in the " + name +
-                    " output, so a later run may move them");
+                    " output, so a later run may move " + (lost == 1 ? "it" : "them"));
   if (const std::size_t lost = entity_pins_lost(mesh, f); lost > 0)
     notes.push_back(count_of(lost, "node") + " that Gmsh's entities keep in place (between volumes of one " +
                     "physical group, or on points, curves or surfaces inside the mesh) will not be pinned in the " +
                     name + " output, " +
                     (is_msh(f) ? "which does not keep the nodes' entities" : "which has no place for Gmsh entities") +
-                    ", so a later run may move them");
+                    ", so a later run may move " + (lost == 1 ? "it" : "them"));
   const bool any_marker = std::any_of(e.node_markers.begin(), e.node_markers.end(), [](int m) { return m != 0; });
   if (f != MeshFormat::TetGen && f != MeshFormat::Medit && any_marker)
     notes.push_back("the node markers will not be written: " + name + " has no place for them");

@@ -2,12 +2,12 @@
 // Material interfaces of a mesh whose tets carry region tags
 // (FileExtras::tet_tags: Gmsh physical groups, TetGen region attributes,
 // Medit references, VTK tag arrays), and the rest of the geometry a Gmsh
-// file tells of: the volume entity of each tet (FileExtras::tet_entity_tags,
-// MSH 2.2 elementary tags and MSH 4.1 entity blocks), as one physical group
-// may hold several volumes side by side, and the point, curve or surface
-// entity Gmsh classified a node on (FileExtras::node_entity_dims, MSH 4.1
-// and MSH 2.2's $ParametricNodes), which shows surfaces, curves and points
-// embedded in a volume even where the file has no elements on them.
+// mesh tells of: the volume entity of each tet (FileExtras::tet_entity_tags:
+// MSH 2.2 elementary tags, MSH 4.1 entity blocks, gmsh:geometrical cell data
+// in VTU and VTK), as one physical group may hold several volumes side by
+// side, and the point, curve or surface entity Gmsh classified a node on
+// (FileExtras::node_entity_dims, MSH 4.1), which shows surfaces, curves and
+// points embedded in a volume even where the file has no elements on them.
 #include <cstdint>
 #include <vector>
 

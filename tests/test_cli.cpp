@@ -749,8 +749,9 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
             std::string::npos)
       << wide22.err;
   EXPECT_EQ(read_mesh(path("wide22.msh")).extras.node_tags, (std::vector<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9}));
-  // Gmsh physical names, and entity tags that split a region, have no place
-  // in VTU; entity tags that follow the regions lose nothing.
+  // Gmsh physical names have no place in VTU, nor entity tags that split a
+  // region in Medit (VTU keeps them as gmsh:geometrical); entity tags that
+  // follow the regions lose nothing.
   TetMesh named = testing::cube_with_centre();
   named.extras.tet_tags = {5, 5, 5, 5, 5, 5, 6, 6, 6, 6, 6, 6};
   named.extras.tet_entity_tags = {1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2};
@@ -764,15 +765,19 @@ TEST_F(CliFiles, WhatTheOutputFormatDropsIsNamed) {
   named.extras.raw_sections.clear();
   named.extras.tet_entity_tags = {1, 1, 1, 1, 1, 3, 2, 2, 2, 2, 2, 2};
   write_mesh(named, path("split.msh"));
-  const CliRun split = run({"convert", path("split.msh"), path("split.vtu")});
-  EXPECT_NE(split.err.find("the Gmsh entity tags will not be written: vtu has no place for them"), std::string::npos)
+  const CliRun split = run({"convert", path("split.msh"), path("split.mesh")});
+  EXPECT_NE(split.err.find("the Gmsh entity tags will not be written: medit has no place for them"),
+            std::string::npos)
       << split.err;
+  const CliRun split_vtu = run({"convert", path("split.msh"), path("split.vtu")});
+  EXPECT_EQ(split_vtu.err.find("entity tags"), std::string::npos) << split_vtu.err;
+  EXPECT_EQ(read_mesh(path("split.vtu")).extras.tet_entity_tags, named.extras.tet_entity_tags);
   // Boundary patches told apart only by their entity tags are named too.
   TetMesh patches = testing::cube_with_centre();
   patches.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 2, 3, 0, 3, 1}, {}, {7, 8}, {}});
   write_mesh(patches, path("patches.msh"));
-  const CliRun patch_vtu = run({"convert", path("patches.msh"), path("patches.vtu")});
-  EXPECT_NE(patch_vtu.err.find("the Gmsh entity tags will not be written"), std::string::npos) << patch_vtu.err;
+  const CliRun patch_medit = run({"convert", path("patches.msh"), path("patches.mesh")});
+  EXPECT_NE(patch_medit.err.find("the Gmsh entity tags will not be written"), std::string::npos) << patch_medit.err;
   // Our own MSH numbers nodes and elements 1, 2, ...: nothing to lose.
   write_mesh(testing::cube_with_centre(), path("plain.msh"));
   const CliRun positional = run({"convert", path("plain.msh"), path("plain.vtu")});

@@ -687,16 +687,53 @@ TEST(VtkTagArrays, LegacyVtkTakesTagsUnderEveryKnownName) {
   }
 }
 
-TEST(VtkTagArrays, VtuFromMeshioKeepsGmshPhysicalGroupsOfTetsAndTriangles) {
-  // As meshio writes a Gmsh mesh: gmsh:physical and gmsh:geometrical, Int32.
+// As meshio writes a Gmsh mesh: gmsh:physical, the region tags, and
+// gmsh:geometrical, the entity tags, which keep volumes of one physical
+// group apart; both Int32.
+TEST(VtkTagArrays, VtuFromMeshioKeepsGmshPhysicalGroupsAndEntitiesOfTetsAndTriangles) {
   const std::string arrays =
-      vtu_cell_array("gmsh:physical", "7 -3 2 0") + vtu_cell_array("gmsh:geometrical", "1 1 4 9");
+      vtu_cell_array("gmsh:physical", "7 -3 2 0") + vtu_cell_array("gmsh:geometrical", "1 2 4 9");
   const TetMesh mesh = vtu_from_text(vtu_with_cell_data(arrays));
   expect_vtu_fixture_tags(mesh);
   EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
-  EXPECT_EQ(mesh.extras.read_notes,
-            (std::vector<std::string>{kTemperatureNote,
-                                      "cell data array 'gmsh:geometrical' is ignored and not written back"}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(mesh.extras.blocks[0].entity_tags, (std::vector<int>{4}));
+  EXPECT_EQ(mesh.extras.blocks[1].entity_tags, (std::vector<int>{9}));
+  EXPECT_EQ(mesh.extras.read_notes, std::vector<std::string>{kTemperatureNote});
+  // Entity tags alone, and entity tags that are not whole numbers or do not
+  // match the cells, as region tags are.
+  const TetMesh alone = vtu_from_text(vtu_with_cell_data(vtu_cell_array("gmsh:geometrical", "1 2 4 9")));
+  EXPECT_TRUE(alone.extras.tet_tags.empty());
+  EXPECT_EQ(alone.extras.tet_entity_tags, (std::vector<int>{1, 2}));
+  const std::string half = vtu_with_cell_data(vtu_cell_array("gmsh:geometrical", "1 2.5 4 9", "Float64"));
+  EXPECT_NE(vtu_error(half).find("cell 1: gmsh:geometrical value 2.5 is not an integer"), std::string::npos)
+      << vtu_error(half);
+  const std::string short_array = vtu_with_cell_data(vtu_cell_array("gmsh:geometrical", "1 2 4"));
+  EXPECT_NE(vtu_error(short_array).find("gmsh:geometrical"), std::string::npos) << vtu_error(short_array);
+}
+
+// What tetsmooth writes of entity tags, VTU and VTK read back: the tets',
+// and the blocks' (0 for a block without them).
+TEST(VtkTagArrays, EntityTagsRoundTripThroughVtuAndVtk) {
+  TetMesh mesh = testing::cube_with_centre();
+  mesh.extras.tet_entity_tags = {1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2};
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 2, 3, 0, 3, 1}, {}, {7, 8}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1}, {}, {}, {}});
+  for (MeshFormat format : {MeshFormat::Vtu, MeshFormat::Vtk}) {
+    SCOPED_TRACE(format_name(format));
+    std::ostringstream out;
+    format == MeshFormat::Vtu ? write_vtu(mesh, out, {}) : write_vtk(mesh, out, {});
+    const TetMesh back = format == MeshFormat::Vtu ? vtu_from_text(out.str()) : vtk_from_text(out.str());
+    EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_entity_tags);
+    ASSERT_EQ(back.extras.blocks.size(), 2u);
+    EXPECT_EQ(back.extras.blocks[0].entity_tags, (std::vector<int>{7, 8}));
+    EXPECT_EQ(back.extras.blocks[1].entity_tags, (std::vector<int>{0}));
+    EXPECT_TRUE(back.extras.tet_tags.empty());
+  }
+  // A mesh without entity tags gets no such array.
+  std::ostringstream plain;
+  write_vtu(testing::cube_with_centre(), plain, {});
+  EXPECT_EQ(plain.str().find("gmsh:geometrical"), std::string::npos);
 }
 
 // Two tets and a triangle with their Gmsh tags as meshio writes them: cell
@@ -712,12 +749,13 @@ TEST(VtkTagArrays, LegacyVtkFromMeshioKeepsGmshPhysicalGroupsFromFieldData) {
   const std::string& text = kMeshioVtk;
   const TetMesh mesh = vtk_from_text(text);
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{7, 8}));
+  EXPECT_EQ(mesh.extras.tet_entity_tags, (std::vector<int>{1, 1}));
   ASSERT_EQ(mesh.extras.blocks.size(), 1u);
   EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
   EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{3}));
+  EXPECT_EQ(mesh.extras.blocks[0].entity_tags, (std::vector<int>{6}));
   EXPECT_EQ(mesh.extras.read_notes,
-            (std::vector<std::string>{"point data array 'gmsh:dim_tags' is ignored and not written back",
-                                      "cell data array 'gmsh:geometrical' is ignored and not written back"}));
+            (std::vector<std::string>{"point data array 'gmsh:dim_tags' is ignored and not written back"}));
 }
 
 TEST(VtkTagArrays, VtuPrefersTheEarlierNameWhereverItStands) {
@@ -1327,7 +1365,7 @@ TEST(VtkCells, OffsetsOrTagsLongerThanTheCellTypesAreRefused) {
     const std::vector<long long> connectivity{0, 1, 2, 3, 0, 1, 2};  // a tet, then a triangle's worth
     const VtkCellPlace place = [](VtkCellArray, std::size_t, std::size_t) { return VtkValuePlace{"nowhere", ""}; };
     return testing::input_error_message(
-        [&] { mesh_from_vtk_cells(mesh, connectivity, offsets, {10}, tags, "cells.vtu:7", place); },
+        [&] { mesh_from_vtk_cells(mesh, connectivity, offsets, {10}, tags, {}, "cells.vtu:7", place); },
         "mesh_from_vtk_cells");
   };
   EXPECT_EQ(error({0, 4, 7}, {}), "cells.vtu:7: cell offsets do not match the 1 cell types");
@@ -1336,7 +1374,7 @@ TEST(VtkCells, OffsetsOrTagsLongerThanTheCellTypesAreRefused) {
   EXPECT_EQ(error({0, 4}, {5, 6}), "cells.vtu:7: 2 region tags for 1 cells");
   // The same arrays at their right lengths make one tet.
   TetMesh mesh = testing::regular_tet();
-  mesh_from_vtk_cells(mesh, {0, 1, 2, 3}, {0, 4}, {10}, {5}, "cells.vtu:7", {});
+  mesh_from_vtk_cells(mesh, {0, 1, 2, 3}, {0, 4}, {10}, {5}, {}, "cells.vtu:7", {});
   EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{5}));
 }

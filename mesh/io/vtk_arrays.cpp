@@ -22,6 +22,8 @@ bool is_tag_array(const VtkArrayDecl& a) { return a.on_cells && a.components == 
 
 bool is_fixed_array(const VtkArrayDecl& a) { return !a.on_cells && a.components == 1 && a.name == kVtkFixedArray; }
 
+bool is_entity_array(const VtkArrayDecl& a) { return a.on_cells && a.components == 1 && a.name == kVtkEntityArray; }
+
 // The fields the command line writes with every VTU/VTK file (per-tet
 // "quality", per-node "boundary"; apps/output_fields.cpp) are computed
 // afresh from the mesh on each write, so reading them loses nothing, and a
@@ -67,7 +69,7 @@ void check_count(const std::vector<double>& values, std::size_t expected, const 
 
 }  // namespace
 
-bool vtk_array_wanted(const VtkArrayDecl& a) { return is_tag_array(a) || is_fixed_array(a); }
+bool vtk_array_wanted(const VtkArrayDecl& a) { return is_tag_array(a) || is_entity_array(a) || is_fixed_array(a); }
 
 VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vector<std::string>& notes) {
   VtkArrayPick pick;
@@ -75,11 +77,12 @@ VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vecto
     if (is_tag_array(arrays[i]) &&
         (pick.tags == kNoVtkArray || tag_rank(arrays[i].name) < tag_rank(arrays[pick.tags].name)))
       pick.tags = i;
+    if (is_entity_array(arrays[i]) && pick.entities == kNoVtkArray) pick.entities = i;
     if (is_fixed_array(arrays[i]) && pick.fixed == kNoVtkArray) pick.fixed = i;
   }
   std::vector<std::string> dropped[2];  // point data, cell data
   for (std::size_t i = 0; i < arrays.size(); ++i)
-    if (i != pick.tags && i != pick.fixed && !is_recomputed_field(arrays[i]))
+    if (i != pick.tags && i != pick.entities && i != pick.fixed && !is_recomputed_field(arrays[i]))
       dropped[arrays[i].on_cells].push_back(arrays[i].name);
   if (!dropped[0].empty()) notes.push_back(dropped_note("point data", dropped[0]));
   if (!dropped[1].empty()) notes.push_back(dropped_note("cell data", dropped[1]));

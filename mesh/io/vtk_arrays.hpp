@@ -32,15 +32,16 @@ inline constexpr std::size_t kNoVtkArray = SIZE_MAX;
 // The arrays a reader carries over, as indices into the list it gave.
 struct VtkArrayPick {
   std::size_t tags = kNoVtkArray;
+  std::size_t entities = kNoVtkArray;  // the first kVtkEntityArray on cells
   std::size_t fixed = kNoVtkArray;
 };
 
 // Whether the reader may need the values of `a` (a one-component array of a
-// tag name on cells, or kVtkFixedArray on points): a streaming reader keeps
-// those until it has seen every array.
+// tag name or kVtkEntityArray on cells, or kVtkFixedArray on points): a
+// streaming reader keeps those until it has seen every array.
 bool vtk_array_wanted(const VtkArrayDecl& a);
 
-// Picks the tag and fixed-node arrays from every point and cell data array
+// Picks the tag, entity and fixed-node arrays from every point and cell data array
 // of a file, in file order, and adds to `notes` one sentence per kind (point
 // data, cell data) naming the arrays that are not carried over, leaving out
 // the "quality" and "boundary" fields that tetsmooth itself writes (the
@@ -52,7 +53,7 @@ VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vecto
 // nothing when there are none.
 void note_vtk_field_data(const std::vector<std::string>& names, std::vector<std::string>& notes);
 
-// The values of the region tag array `name`, one per cell, as ints.
+// The values of the region (or entity) tag array `name`, one per cell, as ints.
 // InputError at `where` (the file and the array's line) for a count other
 // than `cells`, or naming the cell whose value is not a whole number in the
 // range of int.

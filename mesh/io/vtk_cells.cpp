@@ -89,10 +89,12 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
   VtkCells cells;
   const FileExtras& ex = mesh.extras;
   bool tagged = ex.tet_tags.size() == mesh.num_tets();
+  bool with_entities = ex.tet_entity_tags.size() == mesh.num_tets();
   std::size_t total = mesh.num_tets();
   for (const PassThroughBlock& b : ex.blocks) {
     total += b.connectivity.size() / b.nodes_per_element;
     tagged = tagged || !b.tags.empty();
+    with_entities = with_entities || !b.entity_tags.empty();
   }
   cells.connectivity = mesh.tets;
   cells.offsets.reserve(total + 1);
@@ -106,6 +108,10 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
     cells.tags = ex.tet_tags;
     cells.tags.resize(mesh.num_tets(), 0);
   }
+  if (with_entities) {
+    cells.entities = ex.tet_entity_tags;
+    cells.entities.resize(mesh.num_tets(), 0);
+  }
   for (const PassThroughBlock& b : ex.blocks) {
     const std::size_t count = b.connectivity.size() / b.nodes_per_element;
     const std::uint8_t type = by_kind(b.kind, b.nodes_per_element)->vtk;
@@ -114,6 +120,7 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
       cells.offsets.push_back(cells.offsets.back() + b.nodes_per_element);
       cells.types.push_back(type);
       if (tagged) cells.tags.push_back(b.tags.empty() ? 0 : b.tags[e]);
+      if (with_entities) cells.entities.push_back(b.entity_tags.empty() ? 0 : b.entity_tags[e]);
     }
   }
   return cells;
@@ -121,7 +128,8 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
 
 void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
                          const std::vector<long long>& offsets, const std::vector<long long>& types,
-                         const std::vector<int>& tags, const std::string& where, const VtkCellPlace& place) {
+                         const std::vector<int>& tags, const std::vector<int>& entities, const std::string& where,
+                         const VtkCellPlace& place) {
   const std::size_t count = types.size();
   const auto fail = [&](std::size_t cell, const std::string& what) {
     throw InputError(where, "cell " + std::to_string(cell) + ": " + what);
@@ -135,10 +143,13 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     throw InputError(where, "cell offsets do not match the " + std::to_string(count) + " cell types");
   if (!tags.empty() && tags.size() != count)
     throw InputError(where, std::to_string(tags.size()) + " region tags for " + std::to_string(count) + " cells");
+  if (!entities.empty() && entities.size() != count)
+    throw InputError(where, std::to_string(entities.size()) + " entity tags for " + std::to_string(count) + " cells");
   const long long num_nodes = static_cast<long long>(mesh.num_nodes());
   std::vector<std::size_t> block_of_type(256, SIZE_MAX);
   mesh.tets.clear();
   mesh.extras.tet_tags.clear();
+  mesh.extras.tet_entity_tags.clear();
   mesh.extras.blocks.clear();
   for (std::size_t c = 0; c < count; ++c) {
     const long long begin = offsets[c], end = offsets[c + 1];
@@ -163,6 +174,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     if (type == kVtkTetra) {
       for (long long k = begin; k < end; ++k) mesh.tets.push_back(static_cast<index_t>(connectivity[k]));
       if (!tags.empty()) mesh.extras.tet_tags.push_back(tags[c]);
+      if (!entities.empty()) mesh.extras.tet_entity_tags.push_back(entities[c]);
       continue;
     }
     std::size_t& slot = block_of_type[static_cast<std::size_t>(type)];
@@ -173,6 +185,7 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     PassThroughBlock& block = mesh.extras.blocks[slot];
     for (long long k = begin; k < end; ++k) block.connectivity.push_back(static_cast<index_t>(connectivity[k]));
     if (!tags.empty()) block.tags.push_back(tags[c]);
+    if (!entities.empty()) block.entity_tags.push_back(entities[c]);
   }
   // Every offset is now within the connectivity array. VTK's cell arrays end
   // it at the last offset: values past it are a malformed file (a count or

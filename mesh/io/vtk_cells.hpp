@@ -2,9 +2,11 @@
 // The VTK view of a TetMesh's cells, shared by the VTU and legacy VTK
 // readers and writers: tets (VTK_TETRA = 10) first, then the pass-through
 // blocks in order, as vertices (1), lines (3), triangles (5) or quads (9).
-// Tags travel in a per-cell integer array named kVtkTagArray and fixed nodes
-// in a per-point 0/1 array named kVtkFixedArray; readers also take tags
-// under other names (vtk_arrays.hpp).
+// Tags travel in a per-cell integer array named kVtkTagArray, Gmsh entity
+// tags in one named kVtkEntityArray (meshio's name for them, so that a Gmsh
+// mesh that meshio wrote keeps its volumes apart) and fixed nodes in a
+// per-point 0/1 array named kVtkFixedArray; readers also take tags under
+// other names (vtk_arrays.hpp).
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -16,6 +18,7 @@ namespace tetsmooth {
 
 inline constexpr const char* kVtkTagArray = "tetsmooth:tag";
 inline constexpr const char* kVtkFixedArray = "tetsmooth:fixed";
+inline constexpr const char* kVtkEntityArray = "gmsh:geometrical";
 
 // Name of a VTK cell type for messages ("hexahedron", "quadratic tetra", ...).
 std::string vtk_cell_type_name(long long type);
@@ -25,6 +28,7 @@ struct VtkCells {
   std::vector<std::int64_t> offsets;  // #cells + 1 entries, offsets[0] = 0
   std::vector<std::uint8_t> types;
   std::vector<int> tags;  // one per cell (0 where absent), or empty when the mesh has no tags
+  std::vector<int> entities;  // Gmsh entity tags, the same way
   std::size_t size() const { return types.size(); }
 };
 
@@ -54,11 +58,13 @@ using VtkCellPlace = std::function<VtkValuePlace(VtkCellArray array, std::size_t
 // Splits cells read from a file into mesh.tets and mesh.extras.blocks (one
 // block per cell type, in order of first appearance) and fixes the nodes of
 // the blocks. mesh.xyz must be filled; offsets has #cells + 1 entries from 0;
-// tags is one per cell (from vtk_region_tags) or empty. Errors are
+// tags and entities (Gmsh entity tags) are one per cell (from
+// vtk_region_tags) or empty. Errors are
 // InputErrors naming the cell: at the value at fault for an offset or a node
 // index (`place`), else at `where` (the cell types).
 void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivity,
                          const std::vector<long long>& offsets, const std::vector<long long>& types,
-                         const std::vector<int>& tags, const std::string& where, const VtkCellPlace& place);
+                         const std::vector<int>& tags, const std::vector<int>& entities, const std::string& where,
+                         const VtkCellPlace& place);
 
 }  // namespace tetsmooth

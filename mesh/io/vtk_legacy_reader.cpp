@@ -50,10 +50,12 @@ class LegacyReader {
     if (!have_types_) lines_.fail("no CELL_TYPES section");
     const VtkArrayPick pick = pick_vtk_arrays(arrays_, mesh_.extras.read_notes);
     note_vtk_field_data(field_data_, mesh_.extras.read_notes);
-    std::vector<int> tags;
-    if (pick.tags != kNoVtkArray)
-      tags = vtk_region_tags(kept_[pick.tags].values, types_.size(), arrays_[pick.tags].name, kept_[pick.tags].where);
-    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, tags, types_where_,
+    const auto cell_tags = [&](std::size_t i) {
+      return i == kNoVtkArray ? std::vector<int>{}
+                              : vtk_region_tags(kept_[i].values, types_.size(), arrays_[i].name, kept_[i].where);
+    };
+    mesh_from_vtk_cells(mesh_, connectivity_, offsets_, types_, cell_tags(pick.tags), cell_tags(pick.entities),
+                        types_where_,
                         [this](VtkCellArray array, std::size_t index, std::size_t cell) {
                           return cell_value_place(array, index, cell);
                         });

@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/field_check.hpp"
@@ -63,16 +65,19 @@ void write_vtk(const TetMesh& mesh, std::ostream& out, const MeshFields& fields)
   out << "CELL_TYPES " << cells.size() << '\n';
   for (std::uint8_t t : cells.types) out << static_cast<int>(t) << '\n';
 
-  if (!fields.tet_scalars.empty() || !cells.tags.empty()) {
+  if (!fields.tet_scalars.empty() || !cells.tags.empty() || !cells.entities.empty()) {
     out << "CELL_DATA " << cells.size() << '\n';
     const std::size_t tets = mesh.num_tets();
     for (const auto& [name, values] : fields.tet_scalars)
       write_scalars(out, name, "double", cells.size(), [&v = values, tets](std::ostream& o, std::size_t i) {
         put_real(o, i < tets ? v[i] : std::numeric_limits<double>::quiet_NaN());
       });
-    if (!cells.tags.empty())
-      write_scalars(out, kVtkTagArray, "int", cells.size(),
-                    [&t = cells.tags](std::ostream& o, std::size_t i) { put_integer(o, t[i]); });
+    const std::pair<const char*, const std::vector<int>*> tag_arrays[] = {{kVtkTagArray, &cells.tags},
+                                                                          {kVtkEntityArray, &cells.entities}};
+    for (const auto& [name, values] : tag_arrays)
+      if (!values->empty())
+        write_scalars(out, name, "int", cells.size(),
+                      [&t = *values](std::ostream& o, std::size_t i) { put_integer(o, t[i]); });
   }
   const bool any_fixed = std::any_of(mesh.fixed.begin(), mesh.fixed.end(), [](std::uint8_t f) { return f != 0; });
   if (!fields.node_scalars.empty() || any_fixed) {

@@ -192,15 +192,17 @@ TetMesh read_vtu(std::istream& in, const std::string& source) {
     return decode.reals(*layout.data[i], count, 1, name.c_str());
   };
   const auto where = [&](std::size_t i) { return xml.where(layout.data[i]->tag.begin); };
-  std::vector<int> tags;
-  if (pick.tags != kNoVtkArray)
-    tags = vtk_region_tags(values(pick.tags, cells), cells, layout.data_decls[pick.tags].name, where(pick.tags));
+  const auto cell_tags = [&](std::size_t i) {
+    return i == kNoVtkArray ? std::vector<int>{}
+                            : vtk_region_tags(values(i, cells), cells, layout.data_decls[i].name, where(i));
+  };
+  const std::vector<int> tags = cell_tags(pick.tags), entities = cell_tags(pick.entities);
   // offsets[0] is the 0 put in front above, not a value of the file.
   const auto place = [&](VtkCellArray array, std::size_t index, std::size_t) {
     return array == VtkCellArray::Offsets ? decode.place(*layout.offsets, index - 1, "offsets")
                                           : decode.place(*layout.connectivity, index, "connectivity");
   };
-  mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, xml.where(layout.types->tag.begin), place);
+  mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, entities, xml.where(layout.types->tag.begin), place);
   if (pick.fixed != kNoVtkArray)
     fix_vtk_nodes(mesh, values(pick.fixed, points), layout.data_decls[pick.fixed].name, where(pick.fixed));
   validate_mesh(mesh, source);

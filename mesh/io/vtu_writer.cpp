@@ -3,6 +3,7 @@
 #include <functional>
 #include <limits>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "mesh/io/atomic_file.hpp"
@@ -60,9 +61,12 @@ std::vector<Array> arrays_of(const TetMesh& mesh, const VtkCells& cells, const M
     arrays.push_back(make_array<double>(
         "CellData", name, "Float64", 1, cells.size(),
         [&v = values, tets](std::size_t i) { return i < tets ? v[i] : std::numeric_limits<double>::quiet_NaN(); }));
-  if (!cells.tags.empty())
-    arrays.push_back(make_array<std::int32_t>("CellData", kVtkTagArray, "Int32", 1, cells.tags.size(),
-                                              [&t = cells.tags](std::size_t i) { return std::int32_t(t[i]); }));
+  const std::pair<const char*, const std::vector<int>*> tag_arrays[] = {{kVtkTagArray, &cells.tags},
+                                                                        {kVtkEntityArray, &cells.entities}};
+  for (const auto& [name, values] : tag_arrays)
+    if (!values->empty())
+      arrays.push_back(make_array<std::int32_t>("CellData", name, "Int32", 1, values->size(),
+                                                [&t = *values](std::size_t i) { return std::int32_t(t[i]); }));
   arrays.push_back(make_array<double>("Points", "Points", "Float64", 3, mesh.xyz.size(),
                                       [&x = mesh.xyz](std::size_t i) { return x[i]; }));
   arrays.push_back(make_array<std::int32_t>("Cells", "connectivity", "Int32", 1, cells.connectivity.size(),

@@ -74,12 +74,18 @@ bool is_msh(MeshFormat format) {
   return format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary || format == MeshFormat::Msh22;
 }
 
+// MSH, and VTU and VTK (as meshio's gmsh:geometrical cell data), keep the
+// Gmsh entity tags of the elements.
+bool keeps_entity_tags(MeshFormat format) {
+  return is_msh(format) || format == MeshFormat::Vtu || format == MeshFormat::Vtk;
+}
+
 // What `format` keeps of the data that region_interface_nodes reads besides
-// the region tags: Gmsh entity tags (MSH), and the nodes' classification
-// (MSH 4.1, where the writer can declare every node's entity).
+// the region tags: Gmsh entity tags (keeps_entity_tags), and the nodes'
+// classification (MSH 4.1, where the writer can declare every node's entity).
 InterfaceSources kept_sources(const TetMesh& mesh, MeshFormat format) {
   const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
-  return {is_msh(format), msh41 && gmsh::keeps_node_entities(mesh)};
+  return {keeps_entity_tags(format), msh41 && gmsh::keeps_node_entities(mesh)};
 }
 
 // Interface nodes as a run on the output would find them: the regions stay
@@ -123,13 +129,14 @@ std::size_t entity_pins_lost(const TetMesh& mesh, MeshFormat format) {
   const auto pinned_by_file = [&](std::size_t i) { return !mesh.fixed.empty() && mesh.fixed[i]; };
   // Cheap checks first: most meshes lose nothing here, and those spare the
   // topology below.
-  const bool entities_lost = !is_msh(format) && tet_entities_split_regions(mesh);
+  const bool entities_lost = !keeps_entity_tags(format) && tet_entities_split_regions(mesh);
   bool classified = false;
   if (e.node_entity_dims.size() == nodes)
     for (std::size_t i = 0; i < nodes && !classified; ++i)
       classified = e.node_entity_dims[i] < 3 && !pinned_by_file(i);
   const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
-  const InterfaceSources kept_sources{is_msh(format), classified && msh41 && gmsh::keeps_node_entities(mesh)};
+  const InterfaceSources kept_sources{keeps_entity_tags(format),
+                                      classified && msh41 && gmsh::keeps_node_entities(mesh)};
   if (!entities_lost && (!classified || kept_sources.node_entities)) return 0;
   // Neither marks a boundary node: those stay fixed anyway.
   const std::vector<std::uint8_t> all = region_interface_nodes(mesh);
@@ -201,7 +208,8 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back(count_of(lost, "node") + " that Gmsh's entities keep in place (between volumes of one " +
                     "physical group, or on points, curves or surfaces inside the mesh) will not be pinned in the " +
                     name + " output, " +
-                    (is_msh(f) ? "which does not keep the nodes' entities" : "which has no place for Gmsh entities") +
+                    (keeps_entity_tags(f) ? "which does not keep the nodes' entities"
+                                          : "which has no place for Gmsh entities") +
                     ", so a later run may move " + (lost == 1 ? "it" : "them"));
   const bool any_marker = std::any_of(e.node_markers.begin(), e.node_markers.end(), [](int m) { return m != 0; });
   if (f != MeshFormat::TetGen && f != MeshFormat::Medit && any_marker)
@@ -231,7 +239,7 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                     " tags will not be written: " + name + " numbers them by position");
   if (!msh) {
     const bool names = raw_section(e, "$PhysicalNames") != nullptr;
-    const bool entities = entities_split_regions(e);
+    const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);
     if (names || entities)
       notes.push_back(std::string("the Gmsh ") + (names && entities ? "physical names and entity tags" : names ? "physical names" : "entity tags") +
                       " will not be written: " + name + " has no place for them");

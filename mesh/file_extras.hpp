@@ -43,9 +43,10 @@ struct FileExtras {
   // otherwise, tet_tags then holding the region attribute itself.
   int tet_attribute_count = 0;
   std::vector<double> tet_attributes;
-  // Gmsh MSH 4.1: the model entity (dimension, tag) each node is classified
-  // on, one pair per node, or empty. Medit vertex references go to
-  // node_markers, the same per-node label as TetGen's boundary markers.
+  // Gmsh MSH 4.1 (and meshio's gmsh:dim_tags in VTU and VTK): the model
+  // entity (dimension, tag) each node is classified on, one pair per node,
+  // or empty. Medit vertex references go to node_markers, the same per-node
+  // label as TetGen's boundary markers.
   std::vector<int> node_entity_dims;
   std::vector<int> node_entity_tags;
   // Medit RequiredVertices and Corners: 0-based node indices, kept apart

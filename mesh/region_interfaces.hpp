@@ -6,8 +6,9 @@
 // MSH 2.2 elementary tags, MSH 4.1 entity blocks, gmsh:geometrical cell data
 // in VTU and VTK), as one physical group may hold several volumes side by
 // side, and the point, curve or surface entity Gmsh classified a node on
-// (FileExtras::node_entity_dims, MSH 4.1), which shows surfaces, curves and
-// points embedded in a volume even where the file has no elements on them.
+// (FileExtras::node_entity_dims: MSH 4.1, gmsh:dim_tags point data in VTU
+// and VTK), which shows surfaces, curves and points embedded in a volume
+// even where the file has no elements on them.
 #include <cstdint>
 #include <vector>
 

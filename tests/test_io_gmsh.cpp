@@ -1039,14 +1039,17 @@ TEST(GmshIo, OutputLossesCountNodesThatGmshEntitiesPin) {
   EXPECT_EQ(losses_of(point, "out.msh", MeshFormat::Msh22),
             (std::vector<std::string>{"1 node" + feature + "msh22 output, which does not keep the nodes' entities, "
                                       "so a later run may move it"}));
-  // VTU and VTK keep the elements' entity tags (gmsh:geometrical), not the
-  // nodes' classification.
-  for (const char* name : {"out.vtu", "out.vtk"})
-    EXPECT_EQ(losses_of(point, name, MeshFormat::Auto),
-              (std::vector<std::string>{"1 node" + feature + format_name(format_from_path(name)) +
-                                        " output, which does not keep the nodes' entities, so a later run may move "
-                                        "it"}))
-        << name;
+  // VTU and VTK keep the nodes' classification (gmsh:dim_tags), and read
+  // it back.
+  for (const char* name : {"out.vtu", "out.vtk"}) {
+    EXPECT_TRUE(losses_of(point, name, MeshFormat::Auto).empty()) << name;
+    const testing::ScratchDir dir("vtk_dim_tags");
+    const std::string file = (dir.path() / name).string();
+    write_mesh(point, file);
+    const TetMesh read = read_mesh(file);
+    EXPECT_EQ(read.extras.node_entity_dims, point.extras.node_entity_dims) << name;
+    EXPECT_EQ(read.extras.node_entity_tags, point.extras.node_entity_tags) << name;
+  }
   for (const char* name : {"out.mesh", "out.node", "out.tsm"})
     EXPECT_EQ(losses_of(point, name, MeshFormat::Auto),
               (std::vector<std::string>{"1 node" + feature + format_name(format_from_path(name)) +

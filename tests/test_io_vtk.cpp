@@ -754,8 +754,51 @@ TEST(VtkTagArrays, LegacyVtkFromMeshioKeepsGmshPhysicalGroupsFromFieldData) {
   EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
   EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{3}));
   EXPECT_EQ(mesh.extras.blocks[0].entity_tags, (std::vector<int>{6}));
-  EXPECT_EQ(mesh.extras.read_notes,
-            (std::vector<std::string>{"point data array 'gmsh:dim_tags' is ignored and not written back"}));
+  // gmsh:dim_tags, padded to 3 components as meshio writes legacy VTK: the
+  // entity each node is classified on.
+  EXPECT_EQ(mesh.extras.node_entity_dims, (std::vector<int>{0, 0, 0, 0, 3}));
+  EXPECT_EQ(mesh.extras.node_entity_tags, (std::vector<int>{1, 2, 3, 4, 1}));
+  EXPECT_TRUE(mesh.extras.read_notes.empty());
+}
+
+// vtu_ascii.vtu with a gmsh:dim_tags point array of `components` values a
+// point (Int32, or `type`) in place of its temperature.
+std::string vtu_with_dim_tags(const std::string& values, int components = 2, const char* type = "Int32") {
+  const std::string text = file_text("vtu_ascii.vtu");
+  const std::size_t begin = text.find("<PointData");
+  const std::size_t end = text.find("</PointData>") + std::strlen("</PointData>");
+  return text.substr(0, begin) + "<PointData><DataArray type=\"" + type +
+         "\" Name=\"gmsh:dim_tags\" NumberOfComponents=\"" + std::to_string(components) + "\" format=\"ascii\">" +
+         values + "</DataArray></PointData>" + text.substr(end);
+}
+
+// meshio keeps the entity each node of an MSH 4.1 file is classified on as
+// gmsh:dim_tags, (dimension, tag) pairs: 2 components in VTU, padded to 3
+// in legacy VTK. Read as MSH 4.1's classification; values that are no
+// dimension, no whole tag, or a padding other than 0 are refused, naming
+// the point.
+TEST(VtkTagArrays, GmshDimTagsClassifyTheNodes) {
+  const TetMesh mesh = vtu_from_text(vtu_with_dim_tags("0 1 1 4 2 7 3 1 3 1"));
+  EXPECT_EQ(mesh.extras.node_entity_dims, (std::vector<int>{0, 1, 2, 3, 3}));
+  EXPECT_EQ(mesh.extras.node_entity_tags, (std::vector<int>{1, 4, 7, 1, 1}));
+  EXPECT_TRUE(mesh.extras.read_notes.empty());
+  const TetMesh padded = vtu_from_text(vtu_with_dim_tags("0 1 0 1 4 0 2 7 0 3 1 0 3 1 0", 3));
+  EXPECT_EQ(padded.extras.node_entity_dims, mesh.extras.node_entity_dims);
+  EXPECT_EQ(padded.extras.node_entity_tags, mesh.extras.node_entity_tags);
+  const struct {
+    std::string text, message;
+  } bad[] = {
+      {vtu_with_dim_tags("0 1 1 4 4 7 3 1 3 1"), "point 2: gmsh:dim_tags value 4 is no dimension 0 to 3"},
+      {vtu_with_dim_tags("0 1 1 4 2 7.5 3 1 3 1", 2, "Float64"),
+       "point 2: gmsh:dim_tags value 7.5 is no whole entity tag in the range of int"},
+      {vtu_with_dim_tags("0 1 0 1 4 0 2 7 1 3 1 0 3 1 0", 3), "point 2: gmsh:dim_tags value 1 in its third component"},
+  };
+  for (const auto& b : bad) EXPECT_NE(vtu_error(b.text).find(b.message), std::string::npos) << vtu_error(b.text);
+  // With one component it is no classification: an array like any other.
+  const TetMesh other = vtu_from_text(vtu_with_dim_tags("0 1 2 3 3", 1));
+  EXPECT_TRUE(other.extras.node_entity_dims.empty());
+  EXPECT_EQ(other.extras.read_notes,
+            std::vector<std::string>{"point data array 'gmsh:dim_tags' is ignored and not written back"});
 }
 
 TEST(VtkTagArrays, VtuPrefersTheEarlierNameWhereverItStands) {

@@ -24,6 +24,10 @@ bool is_fixed_array(const VtkArrayDecl& a) { return !a.on_cells && a.components 
 
 bool is_entity_array(const VtkArrayDecl& a) { return a.on_cells && a.components == 1 && a.name == kVtkEntityArray; }
 
+bool is_node_entity_array(const VtkArrayDecl& a) {
+  return !a.on_cells && (a.components == 2 || a.components == 3) && a.name == kVtkNodeEntityArray;
+}
+
 // The fields the command line writes with every VTU/VTK file (per-tet
 // "quality", per-node "boundary"; apps/output_fields.cpp) are computed
 // afresh from the mesh on each write, so reading them loses nothing, and a
@@ -69,7 +73,9 @@ void check_count(const std::vector<double>& values, std::size_t expected, const 
 
 }  // namespace
 
-bool vtk_array_wanted(const VtkArrayDecl& a) { return is_tag_array(a) || is_entity_array(a) || is_fixed_array(a); }
+bool vtk_array_wanted(const VtkArrayDecl& a) {
+  return is_tag_array(a) || is_entity_array(a) || is_node_entity_array(a) || is_fixed_array(a);
+}
 
 VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vector<std::string>& notes) {
   VtkArrayPick pick;
@@ -78,11 +84,13 @@ VtkArrayPick pick_vtk_arrays(const std::vector<VtkArrayDecl>& arrays, std::vecto
         (pick.tags == kNoVtkArray || tag_rank(arrays[i].name) < tag_rank(arrays[pick.tags].name)))
       pick.tags = i;
     if (is_entity_array(arrays[i]) && pick.entities == kNoVtkArray) pick.entities = i;
+    if (is_node_entity_array(arrays[i]) && pick.node_entities == kNoVtkArray) pick.node_entities = i;
     if (is_fixed_array(arrays[i]) && pick.fixed == kNoVtkArray) pick.fixed = i;
   }
   std::vector<std::string> dropped[2];  // point data, cell data
   for (std::size_t i = 0; i < arrays.size(); ++i)
-    if (i != pick.tags && i != pick.entities && i != pick.fixed && !is_recomputed_field(arrays[i]))
+    if (i != pick.tags && i != pick.entities && i != pick.node_entities && i != pick.fixed &&
+        !is_recomputed_field(arrays[i]))
       dropped[arrays[i].on_cells].push_back(arrays[i].name);
   if (!dropped[0].empty()) notes.push_back(dropped_note("point data", dropped[0]));
   if (!dropped[1].empty()) notes.push_back(dropped_note("cell data", dropped[1]));
@@ -105,6 +113,27 @@ std::vector<int> vtk_region_tags(const std::vector<double>& values, std::size_t 
     tags[c] = static_cast<int>(v);
   }
   return tags;
+}
+
+void classify_vtk_nodes(TetMesh& mesh, const std::vector<double>& values, std::size_t components,
+                        const std::string& name, const std::string& where) {
+  const std::size_t nodes = mesh.num_nodes();
+  if (values.size() != components * nodes)
+    throw InputError(where, name + " has " + std::to_string(values.size()) + " values for " + std::to_string(nodes) +
+                                " points of " + std::to_string(components) + " values");
+  FileExtras& e = mesh.extras;
+  e.node_entity_dims.resize(nodes);
+  e.node_entity_tags.resize(nodes);
+  for (std::size_t i = 0; i < nodes; ++i) {
+    const double dim = values[components * i], tag = values[components * i + 1];
+    if (!is_integer(dim) || dim < 0 || dim > 3) bad_value(dim, name, "point", i, "is no dimension 0 to 3", where);
+    if (!is_integer(tag) || tag < std::numeric_limits<int>::min() || tag > std::numeric_limits<int>::max())
+      bad_value(tag, name, "point", i, "is no whole entity tag in the range of int", where);
+    if (components == 3 && values[3 * i + 2] != 0)
+      bad_value(values[3 * i + 2], name, "point", i, "in its third component is not 0", where);
+    e.node_entity_dims[i] = static_cast<int>(dim);
+    e.node_entity_tags[i] = static_cast<int>(tag);
+  }
 }
 
 void fix_vtk_nodes(TetMesh& mesh, const std::vector<double>& values, const std::string& name,

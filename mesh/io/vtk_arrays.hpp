@@ -32,16 +32,18 @@ inline constexpr std::size_t kNoVtkArray = SIZE_MAX;
 // The arrays a reader carries over, as indices into the list it gave.
 struct VtkArrayPick {
   std::size_t tags = kNoVtkArray;
-  std::size_t entities = kNoVtkArray;  // the first kVtkEntityArray on cells
+  std::size_t entities = kNoVtkArray;       // the first kVtkEntityArray on cells
+  std::size_t node_entities = kNoVtkArray;  // the first kVtkNodeEntityArray on points
   std::size_t fixed = kNoVtkArray;
 };
 
 // Whether the reader may need the values of `a` (a one-component array of a
-// tag name or kVtkEntityArray on cells, or kVtkFixedArray on points): a
-// streaming reader keeps those until it has seen every array.
+// tag name or kVtkEntityArray on cells, kVtkFixedArray on points, or
+// kVtkNodeEntityArray on points with 2 components, or 3 as meshio pads it in
+// legacy VTK): a streaming reader keeps those until it has seen every array.
 bool vtk_array_wanted(const VtkArrayDecl& a);
 
-// Picks the tag, entity and fixed-node arrays from every point and cell data array
+// Picks the tag, entity, node entity and fixed-node arrays from every point and cell data array
 // of a file, in file order, and adds to `notes` one sentence per kind (point
 // data, cell data) naming the arrays that are not carried over, leaving out
 // the "quality" and "boundary" fields that tetsmooth itself writes (the
@@ -59,6 +61,15 @@ void note_vtk_field_data(const std::vector<std::string>& names, std::vector<std:
 // range of int.
 std::vector<int> vtk_region_tags(const std::vector<double>& values, std::size_t cells, const std::string& name,
                                  const std::string& where);
+
+// Sets the Gmsh entity each node is classified on (FileExtras::
+// node_entity_dims and node_entity_tags) from the kVtkNodeEntityArray
+// `name`, `components` values a node: its dimension and tag, and with 3 a
+// padding 0. InputError at `where` for a count other than components times
+// mesh.num_nodes(), or naming the point whose dimension is not 0 to 3, whose
+// tag is not a whole number in int range, or whose padding is not 0.
+void classify_vtk_nodes(TetMesh& mesh, const std::vector<double>& values, std::size_t components,
+                        const std::string& name, const std::string& where);
 
 // Fixes the nodes whose value in the fixed-node array `name` is not 0, on
 // top of those the reader fixed already. InputError at `where` for a count

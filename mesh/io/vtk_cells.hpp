@@ -3,10 +3,12 @@
 // readers and writers: tets (VTK_TETRA = 10) first, then the pass-through
 // blocks in order, as vertices (1), lines (3), triangles (5) or quads (9).
 // Tags travel in a per-cell integer array named kVtkTagArray, Gmsh entity
-// tags in one named kVtkEntityArray (meshio's name for them, so that a Gmsh
-// mesh that meshio wrote keeps its volumes apart) and fixed nodes in a
-// per-point 0/1 array named kVtkFixedArray; readers also take tags under
-// other names (vtk_arrays.hpp).
+// tags in one named kVtkEntityArray, the Gmsh entity each node is
+// classified on in a per-point array of (dimension, tag) pairs named
+// kVtkNodeEntityArray (meshio's names for both, so that a Gmsh mesh that
+// meshio wrote keeps its volumes apart and its embedded features in place),
+// and fixed nodes in a per-point 0/1 array named kVtkFixedArray; readers
+// also take tags under other names (vtk_arrays.hpp).
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -19,6 +21,7 @@ namespace tetsmooth {
 inline constexpr const char* kVtkTagArray = "tetsmooth:tag";
 inline constexpr const char* kVtkFixedArray = "tetsmooth:fixed";
 inline constexpr const char* kVtkEntityArray = "gmsh:geometrical";
+inline constexpr const char* kVtkNodeEntityArray = "gmsh:dim_tags";
 
 // Name of a VTK cell type for messages ("hexahedron", "quadratic tetra", ...).
 std::string vtk_cell_type_name(long long type);

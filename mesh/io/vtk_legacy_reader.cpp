@@ -61,6 +61,8 @@ class LegacyReader {
                         });
     if (pick.fixed != kNoVtkArray)
       fix_vtk_nodes(mesh_, kept_[pick.fixed].values, arrays_[pick.fixed].name, kept_[pick.fixed].where);
+    if (const std::size_t i = pick.node_entities; i != kNoVtkArray)
+      classify_vtk_nodes(mesh_, kept_[i].values, arrays_[i].components, arrays_[i].name, kept_[i].where);
     validate_mesh(mesh_, lines_.source());
     return std::move(mesh_);
   }
@@ -280,13 +282,13 @@ class LegacyReader {
     arrays_.push_back(VtkArrayDecl{attach_ == Attach::Cells, name, components});
     Kept& kept = kept_.emplace_back(Kept{where, {}});
     if (!vtk_array_wanted(arrays_.back())) return skip_values(components * tuples, type, "value");
-    // vtk_array_wanted takes one-component arrays only: a value a tuple.
+    const std::size_t count = components * tuples;  // vtk_array_wanted bounds components by 3
     if (binary_) {
-      kept.values = binary_values<double>(tuples, type, "value");
+      kept.values = binary_values<double>(count, type, "value");
       return;
     }
-    kept.values.reserve(std::min<std::size_t>(tuples, 1 << 20));
-    for (std::size_t i = 0; i < tuples; ++i) {
+    kept.values.reserve(std::min<std::size_t>(count, 1 << 20));
+    for (std::size_t i = 0; i < count; ++i) {
       const std::string_view token = lines_.next_token("value");
       double v = 0;
       if (!parse_real(token, v)) lines_.fail(name + ": bad value " + quoted_token(token));

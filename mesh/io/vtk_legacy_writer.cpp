@@ -29,9 +29,11 @@ std::string encode_name(const std::string& name) {
   return out.empty() ? "unnamed" : out;
 }
 
+// n tuples of `components` values, get(out, i) writing tuple i.
 template <class Get>
-void write_scalars(std::ostream& out, const std::string& name, const char* type, std::size_t n, Get get) {
-  out << "SCALARS " << encode_name(name) << ' ' << type << " 1\nLOOKUP_TABLE default\n";
+void write_scalars(std::ostream& out, const std::string& name, const char* type, std::size_t n, Get get,
+                   int components = 1) {
+  out << "SCALARS " << encode_name(name) << ' ' << type << ' ' << components << "\nLOOKUP_TABLE default\n";
   for (std::size_t i = 0; i < n; ++i) {
     get(out, i);
     out << '\n';
@@ -80,13 +82,24 @@ void write_vtk(const TetMesh& mesh, std::ostream& out, const MeshFields& fields)
                       [&t = *values](std::ostream& o, std::size_t i) { put_integer(o, t[i]); });
   }
   const bool any_fixed = std::any_of(mesh.fixed.begin(), mesh.fixed.end(), [](std::uint8_t f) { return f != 0; });
-  if (!fields.node_scalars.empty() || any_fixed) {
+  const FileExtras& e = mesh.extras;
+  const bool classified = e.node_entity_dims.size() == n && e.node_entity_tags.size() == n;
+  if (!fields.node_scalars.empty() || any_fixed || classified) {
     out << "POINT_DATA " << n << '\n';
     for (const auto& [name, values] : fields.node_scalars)
       write_scalars(out, name, "double", n, [&v = values](std::ostream& o, std::size_t i) { put_real(o, v[i]); });
     if (any_fixed)
       write_scalars(out, kVtkFixedArray, "int", n,
                     [&f = mesh.fixed](std::ostream& o, std::size_t i) { put_integer(o, f[i] != 0); });
+    if (classified)
+      write_scalars(
+          out, kVtkNodeEntityArray, "int", n,
+          [&e](std::ostream& o, std::size_t i) {
+            put_integer(o, e.node_entity_dims[i]);
+            o << ' ';
+            put_integer(o, e.node_entity_tags[i]);
+          },
+          2);
   }
 }
 

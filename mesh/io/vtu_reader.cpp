@@ -188,8 +188,8 @@ TetMesh read_vtu(std::istream& in, const std::string& source) {
   // Read as reals, so that a tag array of a floating-point type is accepted
   // when its values are whole numbers, and rejected naming the cell if not.
   const auto values = [&](std::size_t i, std::size_t count) {
-    const std::string& name = layout.data_decls[i].name;
-    return decode.reals(*layout.data[i], count, 1, name.c_str());
+    const VtkArrayDecl& a = layout.data_decls[i];
+    return decode.reals(*layout.data[i], count, static_cast<int>(a.components), a.name.c_str());
   };
   const auto where = [&](std::size_t i) { return xml.where(layout.data[i]->tag.begin); };
   const auto cell_tags = [&](std::size_t i) {
@@ -205,6 +205,8 @@ TetMesh read_vtu(std::istream& in, const std::string& source) {
   mesh_from_vtk_cells(mesh, connectivity, offsets, types, tags, entities, xml.where(layout.types->tag.begin), place);
   if (pick.fixed != kNoVtkArray)
     fix_vtk_nodes(mesh, values(pick.fixed, points), layout.data_decls[pick.fixed].name, where(pick.fixed));
+  if (const std::size_t i = pick.node_entities; i != kNoVtkArray)
+    classify_vtk_nodes(mesh, values(i, points), layout.data_decls[i].components, layout.data_decls[i].name, where(i));
   validate_mesh(mesh, source);
   return mesh;
 }

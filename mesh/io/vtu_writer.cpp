@@ -56,6 +56,12 @@ std::vector<Array> arrays_of(const TetMesh& mesh, const VtkCells& cells, const M
   if (std::any_of(mesh.fixed.begin(), mesh.fixed.end(), [](std::uint8_t f) { return f != 0; }))
     arrays.push_back(make_array<std::uint8_t>("PointData", kVtkFixedArray, "UInt8", 1, mesh.fixed.size(),
                                               [&f = mesh.fixed](std::size_t i) { return std::uint8_t(f[i] != 0); }));
+  const FileExtras& e = mesh.extras;
+  const std::size_t n = mesh.num_nodes();
+  if (e.node_entity_dims.size() == n && e.node_entity_tags.size() == n)
+    arrays.push_back(make_array<std::int32_t>("PointData", kVtkNodeEntityArray, "Int32", 2, 2 * n, [&e](std::size_t i) {
+      return std::int32_t(i % 2 == 0 ? e.node_entity_dims[i / 2] : e.node_entity_tags[i / 2]);
+    }));
   const std::size_t tets = mesh.num_tets();
   for (const auto& [name, values] : fields.tet_scalars)
     arrays.push_back(make_array<double>(

@@ -80,12 +80,19 @@ bool keeps_entity_tags(MeshFormat format) {
   return is_msh(format) || format == MeshFormat::Vtu || format == MeshFormat::Vtk;
 }
 
+// Whether `format` keeps the entity each node of `mesh` is classified on:
+// MSH 4.1 where the writer can declare every node's entity, VTU and VTK (as
+// meshio's gmsh:dim_tags point data).
+bool keeps_node_classification(const TetMesh& mesh, MeshFormat format) {
+  const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
+  return msh41 ? gmsh::keeps_node_entities(mesh) : format == MeshFormat::Vtu || format == MeshFormat::Vtk;
+}
+
 // What `format` keeps of the data that region_interface_nodes reads besides
 // the region tags: Gmsh entity tags (keeps_entity_tags), and the nodes'
-// classification (MSH 4.1, where the writer can declare every node's entity).
+// classification (keeps_node_classification).
 InterfaceSources kept_sources(const TetMesh& mesh, MeshFormat format) {
-  const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
-  return {keeps_entity_tags(format), msh41 && gmsh::keeps_node_entities(mesh)};
+  return {keeps_entity_tags(format), keeps_node_classification(mesh, format)};
 }
 
 // Interface nodes as a run on the output would find them: the regions stay
@@ -134,9 +141,7 @@ std::size_t entity_pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (e.node_entity_dims.size() == nodes)
     for (std::size_t i = 0; i < nodes && !classified; ++i)
       classified = e.node_entity_dims[i] < 3 && !pinned_by_file(i);
-  const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
-  const InterfaceSources kept_sources{keeps_entity_tags(format),
-                                      classified && msh41 && gmsh::keeps_node_entities(mesh)};
+  const InterfaceSources kept_sources{keeps_entity_tags(format), classified && keeps_node_classification(mesh, format)};
   if (!entities_lost && (!classified || kept_sources.node_entities)) return 0;
   // Neither marks a boundary node: those stay fixed anyway.
   const std::vector<std::uint8_t> all = region_interface_nodes(mesh);

@@ -37,17 +37,19 @@ std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationRep
   // tangled one: worth saying, since no smoothing can help it.
   const bool all_inverted = report.inverted > 0 && report.inverted == report.tets;
   if (report.inverted > 0)
-    warnings.push_back(source + ": " + with_thousands(report.inverted) + " inverted tets (negative volume)" +
-                       (all_inverted ? ", all of them: the file probably lists each tet's nodes in the opposite "
-                                       "order (tetsmooth expects (b-a).((c-a)x(d-a)) > 0)"
+    warnings.push_back(source + ": " + counted(report.inverted, "inverted tet", "inverted tets") +
+                       " (negative volume)" +
+                       (all_inverted ? std::string(report.tets == 1 ? ", the only one" : ", all of them") +
+                                           ": the file probably lists each tet's nodes in the opposite order "
+                                           "(tetsmooth expects (b-a).((c-a)x(d-a)) > 0)"
                                      : "") +
                        (inverted_note.empty() ? "" : "; " + inverted_note));
   if (report.degenerate > 0)
-    warnings.push_back(source + ": " + with_thousands(report.degenerate) +
-                       " degenerate tets (zero volume or a repeated node)");
+    warnings.push_back(source + ": " + counted(report.degenerate, "degenerate tet", "degenerate tets") +
+                       " (zero volume or a repeated node)");
   if (report.repeated > 0)
-    warnings.push_back(source + ": " + with_thousands(report.repeated) +
-                       " tets repeat the nodes of an earlier tet (Gmsh's MSH 2.2 writer lists a volume in two "
+    warnings.push_back(source + ": " + counted(report.repeated, "tet repeats", "tets repeat") +
+                       " the nodes of an earlier tet (Gmsh's MSH 2.2 writer lists a volume in two "
                        "physical groups twice); each node set counts as one tet for the boundary, and the "
                        "quality statistics count the tets as listed");
   const double span = bounding_box(mesh).largest_side();
@@ -57,8 +59,9 @@ std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationRep
                        "overflows or underflows double for edges beyond 1e35 or below 1e-35, and such tets "
                        "read q = 0 and never improve: scale the mesh (the quality does not depend on its size)");
   if (report.unreferenced > 0)
-    warnings.push_back(source + ": " + with_thousands(report.unreferenced) +
-                       " nodes belong to no tet; they are kept as they are");
+    warnings.push_back(source + ": " + counted(report.unreferenced, "node belongs", "nodes belong") +
+                       " to no tet; " + (report.unreferenced == 1 ? "it is" : "they are") + " kept as " +
+                       (report.unreferenced == 1 ? "it is" : "they are"));
   return warnings;
 }
 

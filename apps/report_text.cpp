@@ -41,6 +41,10 @@ std::string with_thousands(std::size_t n) {
   return digits;
 }
 
+std::string counted(std::size_t n, const std::string& one, const std::string& many) {
+  return with_thousands(n) + " " + (n == 1 ? one : many);
+}
+
 void write_quality_table(std::ostream& os, const std::vector<SummaryColumn>& columns) {
   if (columns.size() > 1 || !columns.front().title.empty()) {
     os << "  " << std::setw(kLabelWidth) << "";

@@ -38,4 +38,7 @@ std::string quality_text(double q);
 // 1234567 -> "1,234,567".
 std::string with_thousands(std::size_t n);
 
+// n, then `one` or `many` as n is 1 or not: "1 node", "1,234 nodes".
+std::string counted(std::size_t n, const std::string& one, const std::string& many);
+
 }  // namespace tetsmooth::cli

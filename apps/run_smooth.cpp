@@ -133,10 +133,11 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   check_writable(mesh, c.output, record.output_format);
   const bool racy = record.device == Device::Cuda && c.options.form == Form::B &&
                     c.options.strategy != Strategy::Coloured;
-  const char* inverted_note = c.options.method == Method::Ordinary
-                                  ? "continuing, but ordinary smoothing may make them worse"
-                              : racy ? "continuing, but this strategy's race in form B may make them worse"
-                                     : "continuing: adaptive smoothing never makes them worse";
+  const std::string them = record.input.inverted == 1 ? "it" : "them";
+  const std::string inverted_note =
+      c.options.method == Method::Ordinary ? "continuing, but ordinary smoothing may make " + them + " worse"
+      : racy ? "continuing, but this strategy's race in form B may make " + them + " worse"
+             : "continuing: adaptive smoothing never makes " + them + " worse";
   record.warnings = input_warnings(mesh, record.input, c.input, inverted_note);
   for (const std::string& loss : output_losses(mesh, c.output, record.output_format))
     record.warnings.push_back(c.output + ": " + loss);
@@ -155,12 +156,12 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   if (style != ProgressLine::Style::Off) options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
   try {
     const RegionInterfacePins pins(mesh, options.threads);
-    if (pins.added_on_interfaces() > 0)
-      console.note(with_thousands(pins.added_on_interfaces()) +
-                   " nodes on interfaces between regions (tets of different tags or Gmsh volumes) stay fixed");
-    if (pins.added_on_features() > 0)
-      console.note(with_thousands(pins.added_on_features()) +
-                   " nodes on Gmsh points, curves or surfaces inside the mesh stay fixed");
+    const auto stay = [](std::size_t n) { return n == 1 ? " stays fixed" : " stay fixed"; };
+    if (const std::size_t n = pins.added_on_interfaces(); n > 0)
+      console.note(counted(n, "node", "nodes") +
+                   " on interfaces between regions (tets of different tags or Gmsh volumes)" + stay(n));
+    if (const std::size_t n = pins.added_on_features(); n > 0)
+      console.note(counted(n, "node", "nodes") + " on Gmsh points, curves or surfaces inside the mesh" + stay(n));
     record.result = on_input_mesh(c.input, [&] { return smooth(mesh, options, record.device); });
   } catch (...) {
     progress.finish();

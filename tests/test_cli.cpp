@@ -1102,13 +1102,13 @@ TEST_F(CliFiles, OneInvertedTetIsWarnedWithWhatTheMethodDoesToIt) {
   write_mesh(mesh, path("one.vtu"));
   const CliRun adaptive = run({"smooth", path("one.vtu"), "-o", path("a.vtu"), "--device", "cpu"});
   EXPECT_EQ(adaptive.code, kExitOk) << adaptive.err;
-  EXPECT_NE(adaptive.err.find("1 inverted tets (negative volume); continuing: adaptive smoothing never makes them "
+  EXPECT_NE(adaptive.err.find("1 inverted tet (negative volume); continuing: adaptive smoothing never makes it "
                               "worse"),
             std::string::npos)
       << adaptive.err;
   const CliRun ordinary =
       run({"smooth", path("one.vtu"), "-o", path("o.vtu"), "--device", "cpu", "--method", "ordinary"});
-  EXPECT_NE(ordinary.err.find("1 inverted tets (negative volume); continuing, but ordinary smoothing may make them "
+  EXPECT_NE(ordinary.err.find("1 inverted tet (negative volume); continuing, but ordinary smoothing may make it "
                               "worse"),
             std::string::npos)
       << ordinary.err;
@@ -1130,9 +1130,9 @@ TEST(CliPieces, SingleRepeatedTetDegenerateTetAndLooseNodeAreWarned) {
   mesh.tets.insert(mesh.tets.end(), {0, 0, 1, 2});  // a repeated node: zero volume
   mesh.xyz.insert(mesh.xyz.end(), {9, 9, 9});
   const std::string all = input_warnings_text(mesh);
-  EXPECT_NE(all.find("m.vtu: 1 tets repeat the nodes of an earlier tet"), std::string::npos) << all;
-  EXPECT_NE(all.find("m.vtu: 1 nodes belong to no tet"), std::string::npos) << all;
-  EXPECT_NE(all.find("m.vtu: 1 degenerate tets"), std::string::npos) << all;
+  EXPECT_NE(all.find("m.vtu: 1 tet repeats the nodes of an earlier tet"), std::string::npos) << all;
+  EXPECT_NE(all.find("m.vtu: 1 node belongs to no tet; it is kept as it is"), std::string::npos) << all;
+  EXPECT_NE(all.find("m.vtu: 1 degenerate tet (zero volume"), std::string::npos) << all;
 }
 
 // The scale warning names the span, so the user knows how far to scale.

@@ -926,8 +926,8 @@ TEST(GmshIo, Msh22ElementsOfOneEntityInDifferentGroupsKeepTheirFirst) {
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{11, 11}));
   EXPECT_EQ(raw_section(mesh, "$Entities"), nullptr);
   EXPECT_EQ(mesh.extras.read_notes,
-            (std::vector<std::string>{"1 elements are listed once per physical group, but not every element of "
-                                      "their elementary entity is in the same groups: they keep only their first "
+            (std::vector<std::string>{"1 element is listed once per physical group, but not every element of "
+                                      "its elementary entity is in the same groups: it keeps only its first "
                                       "group"}));
   // Lines under different numbers are different elements, as Gmsh reads them.
   const TetMesh twice = read_text(replaced(text, "1 4 2 13", "3 4 2 13"));
@@ -1115,11 +1115,14 @@ TEST(GmshIo, Msh22GroupsNotSharedByTheWholeEntityKeepTheFirst) {
     EXPECT_EQ(mesh.num_tets(), 2u) << lines;
     EXPECT_EQ(mesh.extras.tet_tags, c.tags) << lines;
     EXPECT_EQ(raw_section(mesh, "$Entities"), nullptr) << lines;
-    EXPECT_EQ(mesh.extras.read_notes,
-              (std::vector<std::string>{std::string(c.repeated) +
-                                        " elements are listed once per physical group, but not every element of "
-                                        "their elementary entity is in the same groups: they keep only their first "
-                                        "group"}))
+    const std::string note = std::string(c.repeated) == "1"
+                                 ? "1 element is listed once per physical group, but not every element of its "
+                                   "elementary entity is in the same groups: it keeps only its first group"
+                                 : std::string(c.repeated) +
+                                       " elements are listed once per physical group, but not every element of "
+                                       "their elementary entity is in the same groups: they keep only their first "
+                                       "group";
+    EXPECT_EQ(mesh.extras.read_notes, std::vector<std::string>{note})
         << lines;
   }
 }

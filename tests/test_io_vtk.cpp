@@ -25,10 +25,12 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/base64.hpp"
 #include "mesh/io/inflate.hpp"
+#include "mesh/io/mesh_io.hpp"
 #include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
 #include "mesh/io/xml_scan.hpp"
+#include "mesh/region_interfaces.hpp"
 #include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 
@@ -799,6 +801,30 @@ TEST(VtkTagArrays, GmshDimTagsClassifyTheNodes) {
   EXPECT_TRUE(other.extras.node_entity_dims.empty());
   EXPECT_EQ(other.extras.read_notes,
             std::vector<std::string>{"point data array 'gmsh:dim_tags' is ignored and not written back"});
+}
+
+// A Gmsh mesh (tests/data/gmsh_layers_make.py) whose two volumes share one
+// physical group and hold an embedded point, and meshio's VTU and VTK of
+// it: read from any of the three, the same volumes and classification,
+// and so the same 4 interface nodes and 1 point that stay in place.
+TEST(VtkTagArrays, MeshioCopiesOfAGmshMeshKeepItsVolumesAndEmbeddedPoint) {
+  const TetMesh msh = read_mesh(testing::data_path("gmsh_layers41.msh"));
+  const std::vector<std::uint8_t> pinned = region_interface_nodes(msh);
+  ASSERT_EQ(std::count(pinned.begin(), pinned.end(), kOnInterface), 4);
+  ASSERT_EQ(std::count(pinned.begin(), pinned.end(), kOnGmshFeature), 1);
+  for (const char* copy : {"vtu_meshio_gmsh.vtu", "vtk_meshio_gmsh.vtk"}) {
+    SCOPED_TRACE(copy);
+    const TetMesh m = read_mesh(testing::data_path(copy));
+    ASSERT_EQ(m.xyz.size(), msh.xyz.size());
+    for (std::size_t i = 0; i < m.xyz.size(); ++i)  // meshio's ASCII keeps 12 digits
+      EXPECT_NEAR(m.xyz[i], msh.xyz[i], 1e-11) << "coordinate " << i;
+    EXPECT_EQ(m.tets, msh.tets);
+    EXPECT_EQ(m.extras.tet_tags, msh.extras.tet_tags);
+    EXPECT_EQ(m.extras.tet_entity_tags, msh.extras.tet_entity_tags);
+    EXPECT_EQ(m.extras.node_entity_dims, msh.extras.node_entity_dims);
+    EXPECT_EQ(m.extras.node_entity_tags, msh.extras.node_entity_tags);
+    EXPECT_EQ(region_interface_nodes(m), pinned);
+  }
 }
 
 TEST(VtkTagArrays, VtuPrefersTheEarlierNameWhereverItStands) {

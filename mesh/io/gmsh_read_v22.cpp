@@ -185,9 +185,11 @@ void finish_elements_v22(ReadState& state) {
            groups.lines == groups.elements * groups.physicals.size();
   });
   if (!every_group) {
-    extras.read_notes.push_back(std::to_string(lines.repeated) +
-                                " elements are listed once per physical group, but not every element of their "
-                                "elementary entity is in the same groups: they keep only their first group");
+    const bool one = lines.repeated == 1;
+    extras.read_notes.push_back(std::to_string(lines.repeated) + (one ? " element is" : " elements are") +
+                                " listed once per physical group, but not every element of " +
+                                (one ? "its" : "their") + " elementary entity is in the same groups: " +
+                                (one ? "it keeps only its" : "they keep only their") + " first group");
     return;
   }
   EntityBuilder builder;

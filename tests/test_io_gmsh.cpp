@@ -20,6 +20,7 @@
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/writable_check.hpp"
+#include "mesh/region_interfaces.hpp"
 #include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 #include "input_error.hpp"
@@ -1081,6 +1082,45 @@ TEST(GmshIo, OutputLossesCountNodesThatGmshEntitiesPin) {
               (std::vector<std::string>{"9 nodes" + feature +
                                         "medit output, which has no place for Gmsh entities, so a later run may move "
                                         "them"}));
+  }
+}
+
+// Entity tags from another program need not nest in the physical groups
+// (meshio's gmsh:geometrical of a file whose writer gave every element
+// entity 1, say). An MSH 4.1 entity puts all its elements in the same
+// groups, so the writer gives each (entity, group) an entity of its own,
+// with a tag clear of those given: the groups, and the interface between
+// them, come back as they were.
+TEST(GmshIo, EntityTagsThatDoNotNestInTheGroupsAreSplit) {
+  TetMesh layers = testing::cube_grid(4);
+  for (std::size_t t = 0; t < layers.num_tets(); ++t) {
+    double cx = 0;
+    for (int k = 0; k < 4; ++k) cx += layers.xyz[3 * static_cast<std::size_t>(layers.tets[4 * t + k])] / 4;
+    layers.extras.tet_tags.push_back(cx < 2 ? 5 : 6);
+  }
+  const std::vector<std::uint8_t> interface = region_interface_nodes(layers);
+  ASSERT_EQ(std::count(interface.begin(), interface.end(), kOnInterface), 9);
+  struct Case {
+    const char* name;
+    int left, right;  // the entity tags of the tets in groups 5 and 6
+  };
+  for (const Case& c : {Case{"one entity for both groups", 1, 1},
+                        Case{"no entity tag where a given one is the other group's tag", 6, 0}}) {
+    TetMesh m = layers;
+    for (int tag : m.extras.tet_tags) m.extras.tet_entity_tags.push_back(tag == 5 ? c.left : c.right);
+    for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V22Ascii}) {
+      SCOPED_TRACE(std::string(c.name) + (flavour == MshFlavour::V22Ascii ? ", MSH 2.2" : ", MSH 4.1"));
+      const TetMesh back = read_text(write_text(m, flavour));
+      EXPECT_EQ(back.extras.tet_tags, layers.extras.tet_tags);
+      EXPECT_EQ(region_interface_nodes(back), interface);
+      // Group 5 keeps its given entity; group 6 is on another.
+      const auto left = static_cast<std::size_t>(
+          std::find(layers.extras.tet_tags.begin(), layers.extras.tet_tags.end(), 5) - layers.extras.tet_tags.begin());
+      const auto right = static_cast<std::size_t>(
+          std::find(layers.extras.tet_tags.begin(), layers.extras.tet_tags.end(), 6) - layers.extras.tet_tags.begin());
+      EXPECT_EQ(back.extras.tet_entity_tags[left], c.left);
+      EXPECT_NE(back.extras.tet_entity_tags[right], c.left);
+    }
   }
 }
 

@@ -732,6 +732,15 @@ TEST(VtkTagArrays, EntityTagsRoundTripThroughVtuAndVtk) {
     EXPECT_EQ(back.extras.blocks[1].entity_tags, (std::vector<int>{0}));
     EXPECT_TRUE(back.extras.tet_tags.empty());
   }
+  // Entity tags on the blocks alone: the tets' read back as 0.
+  TetMesh blocks_only = mesh;
+  blocks_only.extras.tet_entity_tags.clear();
+  std::ostringstream out;
+  write_vtu(blocks_only, out, {});
+  const TetMesh back = vtu_from_text(out.str());
+  EXPECT_EQ(back.extras.tet_entity_tags, std::vector<int>(mesh.num_tets(), 0));
+  ASSERT_EQ(back.extras.blocks.size(), 2u);
+  EXPECT_EQ(back.extras.blocks[0].entity_tags, (std::vector<int>{7, 8}));
   // A mesh without entity tags gets no such array.
   std::ostringstream plain;
   write_vtu(testing::cube_with_centre(), plain, {});

@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <map>
 #include <numeric>
+#include <set>
+#include <tuple>
 
 #include "mesh/errors.hpp"
 
@@ -81,8 +83,50 @@ bool adopt_file_entities(const FileExtras& extras, std::vector<ElementGroup>& gr
   return true;
 }
 
+// Entities made up for elements without a file's $Entities: one for each
+// (given entity tag, physical tag) of a dimension, as an MSH 4.1 entity puts
+// all of its elements in the same physical groups. A given entity keeps its
+// tag for the first physical tag met on it; its elements under another one
+// (entity tags from another program, which need not nest in the physical
+// groups) go on an entity of a new tag, and so do elements without an
+// entity tag, which take their physical tag (or 1) where no other entity
+// has it.
+class EntityTags {
+ public:
+  explicit EntityTags(const std::vector<ElementGroup>& groups) {
+    for (const ElementGroup& g : groups)
+      for (int tag : g.entity)
+        if (tag > 0) taken_[g.type->dim].insert(tag);
+  }
+  int operator()(int dim, int given, int physical) {
+    const auto [it, fresh] = made_.try_emplace(std::make_tuple(dim, std::max(given, 0), physical), 0);
+    if (!fresh) return it->second;
+    std::set<int>& taken = taken_[dim];
+    int tag = given > 0 ? given : (physical > 0 ? physical : 1);
+    if (given > 0 ? !owned_[dim].insert(given).second : taken.count(tag) > 0) tag = unused(taken);
+    taken.insert(tag);
+    return it->second = tag;
+  }
+
+ private:
+  std::map<int, std::set<int>> taken_;  // by dimension: given tags, and those made
+  std::map<int, std::set<int>> owned_;  // given tags already on an entity
+  std::map<std::tuple<int, int, int>, int> made_;
+
+  // A positive tag not in `taken`: past the largest, or the first gap where
+  // the largest is INT_MAX.
+  static int unused(const std::set<int>& taken) {
+    if (taken.empty()) return 1;
+    if (*taken.rbegin() < INT_MAX) return std::max(*taken.rbegin() + 1, 1);
+    int tag = 1;
+    for (auto it = taken.lower_bound(1); it != taken.end() && *it == tag; ++it) ++tag;
+    return tag;
+  }
+};
+
 void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, WritePlan& plan) {
   EntityBuilder builder;
+  EntityTags entity_tag(groups);
   for (ElementGroup& g : groups) {
     const int dim = g.type->dim;
     const int nodes = g.type->nodes;
@@ -90,7 +134,7 @@ void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, Write
     for (std::size_t e = 0; e < g.count; ++e) {
       const int p = g.physical.empty() ? 0 : std::max(g.physical[e], 0);
       const int given = g.entity.empty() ? 0 : g.entity[e];
-      const int tag = given > 0 ? given : (p > 0 ? p : 1);
+      const int tag = entity_tag(dim, given, p);
       entity[e] = tag;
       physical[e] = p;
       Entity& x = builder.add(dim, tag, mesh.xyz.data(), &g.connectivity[e * static_cast<std::size_t>(nodes)], nodes);

@@ -199,6 +199,16 @@ class GeometryWithinOnePhysicalGroup(GmshScratchCase):
                 proc = self.smooth_keeps(src, self.shared)
                 # The note counts the surface's nodes off the boundary.
                 self.assertIn(f"{len(self.shared_inside)} nodes on interfaces between regions", proc.stderr)
+                if name == "stacked41.msh":
+                    # meshio's VTU and VTK of it keep the volumes apart
+                    # (gmsh:geometrical): the same nodes stay in place.
+                    mesh = meshio.read(src)
+                    for suffix in ("vtu", "vtk"):
+                        copy = os.path.join(self.tmp, f"stacked_meshio.{suffix}")
+                        meshio.write(copy, mesh)
+                        smoothed = run("smooth", copy, "-o", copy + ".out.vtu")
+                        self.assertIn(f"{len(self.shared_inside)} nodes on interfaces between regions",
+                                      smoothed.stderr)
                 self.assertEqual("parametric coordinates of" in proc.stderr, "param" in name, proc.stderr)
                 # quality counts the surface's nodes out of the movable ones.
                 report = json.loads(run("quality", src, "--json").stdout)["input"]

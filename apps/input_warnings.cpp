@@ -58,10 +58,11 @@ std::vector<std::string> input_warnings(const TetMesh& mesh, const ValidationRep
                        " units; the radius ratio, computed from products of up to eight edge lengths, "
                        "overflows or underflows double for edges beyond 1e35 or below 1e-35, and such tets "
                        "read q = 0 and never improve: scale the mesh (the quality does not depend on its size)");
-  if (report.unreferenced > 0)
-    warnings.push_back(source + ": " + counted(report.unreferenced, "node belongs", "nodes belong") +
-                       " to no tet; " + (report.unreferenced == 1 ? "it is" : "they are") + " kept as " +
-                       (report.unreferenced == 1 ? "it is" : "they are"));
+  if (report.unreferenced > 0) {
+    const std::string is = report.unreferenced == 1 ? "it is" : "they are";
+    warnings.push_back(source + ": " + counted(report.unreferenced, "node belongs", "nodes belong") + " to no tet; " +
+                       is + " kept as " + is);
+  }
   return warnings;
 }
 

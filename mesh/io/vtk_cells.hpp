@@ -9,9 +9,11 @@
 // meshio wrote keeps its volumes apart and its embedded features in place),
 // and fixed nodes in a per-point 0/1 array named kVtkFixedArray; readers
 // also take tags under other names (vtk_arrays.hpp).
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
@@ -33,6 +35,11 @@ struct VtkCells {
   std::vector<int> tags;  // one per cell (0 where absent), or empty when the mesh has no tags
   std::vector<int> entities;  // Gmsh entity tags, the same way
   std::size_t size() const { return types.size(); }
+  // The per-cell integer arrays with the names they are written under (a
+  // writer leaves out the empty ones).
+  std::array<std::pair<const char*, const std::vector<int>*>, 2> named_int_arrays() const {
+    return {{{kVtkTagArray, &tags}, {kVtkEntityArray, &entities}}};
+  }
 };
 
 // Throws OutputError "<where>: ..." for a pass-through block of a kind VTK

@@ -74,9 +74,7 @@ void write_vtk(const TetMesh& mesh, std::ostream& out, const MeshFields& fields)
       write_scalars(out, name, "double", cells.size(), [&v = values, tets](std::ostream& o, std::size_t i) {
         put_real(o, i < tets ? v[i] : std::numeric_limits<double>::quiet_NaN());
       });
-    const std::pair<const char*, const std::vector<int>*> tag_arrays[] = {{kVtkTagArray, &cells.tags},
-                                                                          {kVtkEntityArray, &cells.entities}};
-    for (const auto& [name, values] : tag_arrays)
+    for (const auto& [name, values] : cells.named_int_arrays())
       if (!values->empty())
         write_scalars(out, name, "int", cells.size(),
                       [&t = *values](std::ostream& o, std::size_t i) { put_integer(o, t[i]); });

@@ -67,9 +67,7 @@ std::vector<Array> arrays_of(const TetMesh& mesh, const VtkCells& cells, const M
     arrays.push_back(make_array<double>(
         "CellData", name, "Float64", 1, cells.size(),
         [&v = values, tets](std::size_t i) { return i < tets ? v[i] : std::numeric_limits<double>::quiet_NaN(); }));
-  const std::pair<const char*, const std::vector<int>*> tag_arrays[] = {{kVtkTagArray, &cells.tags},
-                                                                        {kVtkEntityArray, &cells.entities}};
-  for (const auto& [name, values] : tag_arrays)
+  for (const auto& [name, values] : cells.named_int_arrays())
     if (!values->empty())
       arrays.push_back(make_array<std::int32_t>("CellData", name, "Int32", 1, values->size(),
                                                 [&t = *values](std::size_t i) { return std::int32_t(t[i]); }));

@@ -20,7 +20,7 @@ MeshFields quality_fields(const TetMesh& mesh) {
   MeshFields fields;
   fields.tet_scalars.emplace_back("quality", tet_qualities(mesh));
   // On all cores, as tet_qualities.
-  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes(), 0);
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes(), 0, mesh.midsides);
   fields.node_scalars.emplace_back("boundary", std::vector<double>(boundary.begin(), boundary.end()));
   return fields;
 }

@@ -5,7 +5,7 @@
 #include "apps/input_warnings.hpp"
 #include "apps/on_input_mesh.hpp"
 #include "apps/option_names.hpp"
-#include "apps/region_pins.hpp"
+#include "apps/smoothing_pins.hpp"
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
 #include "mesh/io/mesh_io.hpp"
@@ -23,10 +23,14 @@ void run_quality(const QualityCommand& c, const Console& console) {
   // The topology tells which tets smoothing could change (min_movable), with
   // material interfaces and Gmsh features pinned as `smooth` pins them.
   const Topology topology = on_input_mesh(c.input, [&] {
-    const RegionInterfacePins pins(mesh, 0);  // all cores, as the quality summary
+    const SmoothingPins pins(mesh, 0);  // all cores, as the quality summary
     return build_topology(mesh, 0);
   });
-  record.boundary_nodes = static_cast<std::size_t>(std::count(topology.boundary.begin(), topology.boundary.end(), 1));
+  // Midside nodes of second-order tets on boundary faces count too, as in
+  // the `boundary` field of written files.
+  const std::vector<std::uint8_t> boundary =
+      mesh.midsides.empty() ? topology.boundary : find_boundary_nodes(mesh.tets, mesh.num_nodes(), 0, mesh.midsides);
+  record.boundary_nodes = static_cast<std::size_t>(std::count(boundary.begin(), boundary.end(), 1));
   record.movable_nodes = static_cast<std::size_t>(std::count(topology.movable.begin(), topology.movable.end(), 1));
   record.summary = summarize_quality(mesh, topology.movable);
   record.worst = worst_tets(mesh, tet_qualities(mesh), static_cast<std::size_t>(c.worst));

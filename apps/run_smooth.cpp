@@ -9,7 +9,7 @@
 #include "apps/output_check.hpp"
 #include "apps/output_fields.hpp"
 #include "apps/progress_line.hpp"
-#include "apps/region_pins.hpp"
+#include "apps/smoothing_pins.hpp"
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
 #include "kernels/smoother.hpp"
@@ -155,13 +155,23 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
                         ProgressLine::interval_for(style));
   if (style != ProgressLine::Style::Off) options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
   try {
-    const RegionInterfacePins pins(mesh, options.threads);
+    const SmoothingPins pins(mesh, options.threads);
     const auto stay = [](std::size_t n) { return n == 1 ? " stays fixed" : " stay fixed"; };
     if (const std::size_t n = pins.added_on_interfaces(); n > 0)
       console.note(counted(n, "node", "nodes") +
                    " on interfaces between regions (tets of different tags or Gmsh volumes)" + stay(n));
     if (const std::size_t n = pins.added_on_features(); n > 0)
       console.note(counted(n, "node", "nodes") + " on Gmsh points, curves or surfaces inside the mesh" + stay(n));
+    const std::size_t curved = pins.curved_tets(), corners = pins.added_at_curved_tets();
+    if (curved > 0)
+      console.note(counted(curved, "second-order tet has", "second-order tets have") + " curved edges and " +
+                   (curved == 1 ? "keeps its" : "keep their") + " shape" +
+                   (corners > 0 ? ": " + counted(corners, "corner node", "corner nodes") + " off the boundary" +
+                                      stay(corners)
+                                : std::string()));
+    else if (corners > 0)
+      console.note(counted(corners, "node", "nodes") + " at the ends of edges whose midside node is pinned" +
+                   stay(corners));
     record.result = on_input_mesh(c.input, [&] { return smooth(mesh, options, record.device); });
   } catch (...) {
     progress.finish();

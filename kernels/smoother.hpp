@@ -22,7 +22,11 @@ SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colo
 // True when a CUDA device can be used; otherwise `why` says why not.
 bool cuda_available(std::string* why = nullptr);
 
-// Picks the backend: Auto means CUDA when available, else CPU.
+// Picks the backend: Auto means CUDA when available, else CPU. Of the entry
+// points, only this one smooths second-order meshes (TetMesh::midsides) as
+// mesh/second_order.hpp describes: it keeps the corners of curved tets in
+// place and moves the midside nodes with their edges. smooth_cpu and
+// smooth_cuda move the corners alone, and leave midside nodes where they are.
 SmoothResult smooth(TetMesh& mesh, const SmoothOptions& options, Device device);
 
 }  // namespace tetsmooth

@@ -10,6 +10,9 @@
 //  * Face f of a tet is the face opposite local vertex f:
 //    f0=(1,2,3) f1=(0,3,2) f2=(0,1,3) f3=(0,2,1), each outward-facing for a
 //    positively oriented tet.
+//  * a second-order (10-node) tet is its four corners in tets and its six
+//    midside nodes in midsides, edge e of a tet joining its local corners
+//    kTetEdges[e] (VTK's quadratic tetra order; mesh/second_order.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -24,6 +27,10 @@ using index_t = std::int32_t;
 struct TetMesh {
   std::vector<double> xyz;    // 3 * num_nodes()
   std::vector<index_t> tets;  // 4 * num_tets()
+  // Second-order meshes: 6 * num_tets() midside nodes, one per tet edge in
+  // kTetEdges order; empty for first-order tets. The smoothers move the
+  // corners alone (tets); smooth() carries the midside nodes along.
+  std::vector<index_t> midsides;
 
   // Optional per-node flag (size num_nodes() or empty): nodes a file pins in
   // place, in addition to the geometric boundary (Medit RequiredVertices,
@@ -40,5 +47,9 @@ struct TetMesh {
 
 // Local vertex triples of the four faces, see the file comment.
 inline constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+// Local corners of a tet's six edges, in the order of the midside nodes
+// (see the file comment).
+inline constexpr int kTetEdges[6][2] = {{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}};
 
 }  // namespace tetsmooth

@@ -15,9 +15,6 @@
 namespace tetsmooth {
 namespace {
 
-// Local vertex pairs of a tet's six edges.
-constexpr int kTetEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
-
 // Calls body(r) for every row r < rows, on `threads` OpenMP threads when
 // threads > 1. Rows differ in length, so they are dealt in small chunks.
 template <class Body>
@@ -167,7 +164,8 @@ RowItems<FaceUse> sorted_face_uses(const std::vector<index_t>& tets, int threads
   return std::move(uses.items);
 }
 
-std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes, int threads) {
+std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes, int threads,
+                                              const std::vector<index_t>& midsides) {
   const RowItems<FaceUse> uses = sorted_face_uses(tets, threads);
   std::vector<std::uint8_t> boundary(num_nodes, 0);
   for (std::size_t first = 0, last; first < uses.size(); first = last) {
@@ -175,8 +173,14 @@ std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, 
     }
     // Sorted by opposite node within the run: all uses agree on it exactly
     // when the first and the last do.
-    if (uses[first].opposite == uses[last - 1].opposite)
-      for (index_t n : uses[first].face) boundary[static_cast<std::size_t>(n)] = 1;
+    if (uses[first].opposite != uses[last - 1].opposite) continue;
+    for (index_t n : uses[first].face) boundary[static_cast<std::size_t>(n)] = 1;
+    if (midsides.empty()) continue;
+    // The face's three edges are the tet's edges without the opposite node.
+    const auto t = static_cast<std::size_t>(uses[first].tet);
+    for (int e = 0; e < 6; ++e)
+      if (tets[4 * t + kTetEdges[e][0]] != uses[first].opposite && tets[4 * t + kTetEdges[e][1]] != uses[first].opposite)
+        boundary[static_cast<std::size_t>(midsides[6 * t + static_cast<std::size_t>(e)])] = 1;
   }
   return boundary;
 }

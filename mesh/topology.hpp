@@ -53,8 +53,10 @@ RowItems<FaceUse> sorted_face_uses(const std::vector<index_t>& tets, int threads
 // tet: the uses of a face count as one when they share the fourth node, so
 // such a file keeps its boundary. Nodes in no tet are not boundary nodes
 // (they have no faces); they never move because they have no neighbours.
+// Given the midside nodes of second-order tets (TetMesh::midsides), those on
+// the edges of boundary faces are boundary nodes too.
 std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, std::size_t num_nodes,
-                                              int threads = 1);
+                                              int threads = 1, const std::vector<index_t>& midsides = {});
 
 // How many tets have the same four nodes as an earlier tet (in any order).
 std::size_t count_repeated_tets(const std::vector<index_t>& tets);

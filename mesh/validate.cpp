@@ -51,6 +51,9 @@ void check_shapes(const TetMesh& mesh, const std::string& source) {
   per_tet(mesh.extras.tet_tags.size(), "the tet tag array");
   per_tet(mesh.extras.tet_entity_tags.size(), "the tet entity tag array");
   per_tet(mesh.extras.tet_element_tags.size(), "the tet element tag array");
+  if (!mesh.midsides.empty() && mesh.midsides.size() != 6 * mesh.num_tets())
+    fail(source, "the midside node array has " + std::to_string(mesh.midsides.size()) + " entries for " +
+                     std::to_string(mesh.num_tets()) + " tets (6 a tet)");
 }
 
 void check_coordinates(const TetMesh& mesh, const std::string& source) {
@@ -84,6 +87,34 @@ void check_blocks(const TetMesh& mesh, const std::string& source) {
   }
 }
 
+// A midside node belongs to one edge and is no corner: smoothing moves it
+// with that edge's corners (mesh/second_order.hpp), which only works when
+// the edge is the same in every tet that lists it.
+void check_midsides(const TetMesh& mesh, const std::string& source) {
+  if (mesh.midsides.empty()) return;
+  check_indices(mesh.midsides, 6, mesh.num_nodes(), source, "the midside nodes of tet");
+  constexpr index_t kNone = -1;
+  std::vector<index_t> corner_of(mesh.num_nodes(), kNone);  // a tet that has the node as a corner
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (int k = 0; k < 4; ++k) corner_of[static_cast<std::size_t>(mesh.tets[4 * t + k])] = static_cast<index_t>(t);
+  std::vector<std::pair<index_t, index_t>> edge_of(mesh.num_nodes(), {kNone, kNone});
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (int e = 0; e < 6; ++e) {
+      const index_t m = mesh.midsides[6 * t + static_cast<std::size_t>(e)];
+      const index_t a = mesh.tets[4 * t + kTetEdges[e][0]], b = mesh.tets[4 * t + kTetEdges[e][1]];
+      const std::pair<index_t, index_t> edge{std::min(a, b), std::max(a, b)};
+      const std::string where = "node " + std::to_string(m) + ", the midside node of edge (" + std::to_string(a) +
+                                ", " + std::to_string(b) + ") of tet " + std::to_string(t);
+      if (corner_of[static_cast<std::size_t>(m)] != kNone)
+        fail(source, where + ", is also a corner of tet " + std::to_string(corner_of[static_cast<std::size_t>(m)]));
+      std::pair<index_t, index_t>& seen = edge_of[static_cast<std::size_t>(m)];
+      if (seen.first == kNone) seen = edge;
+      if (seen != edge)
+        fail(source, where + ", is also the midside node of edge (" + std::to_string(seen.first) + ", " +
+                         std::to_string(seen.second) + ") of another tet");
+    }
+}
+
 bool has_repeated_node(const index_t* t) {
   return t[0] == t[1] || t[0] == t[2] || t[0] == t[3] || t[1] == t[2] || t[1] == t[3] || t[2] == t[3];
 }
@@ -97,6 +128,7 @@ ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source) {
   check_coordinates(mesh, source);
   check_indices(mesh.tets, 4, mesh.num_nodes(), source, "tet");
   check_blocks(mesh, source);
+  check_midsides(mesh, source);
 
   ValidationReport report;
   report.nodes = mesh.num_nodes();
@@ -119,6 +151,7 @@ ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source) {
     else if (v6 == 0)
       ++report.degenerate;
   }
+  for (index_t m : mesh.midsides) referenced[static_cast<std::size_t>(m)] = 1;
   for (std::uint8_t r : referenced) report.unreferenced += r == 0;
   return report;
 }

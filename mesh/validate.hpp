@@ -11,7 +11,7 @@ struct ValidationReport {
   std::size_t nodes = 0, tets = 0;
   std::size_t inverted = 0;      // signed volume < 0
   std::size_t degenerate = 0;    // signed volume == 0 or a repeated node
-  std::size_t unreferenced = 0;  // nodes in no tet
+  std::size_t unreferenced = 0;  // nodes in no tet, neither corners nor midside nodes
   // Tets with the node set of an earlier tet (count_repeated_tets in
   // mesh/topology.hpp). A sort of every tet, which the readers' own
   // validation does not need: validate_mesh leaves it 0 and the command
@@ -21,7 +21,8 @@ struct ValidationReport {
 
 // Throws InputError (naming `source` and the offending tet or node) when a
 // node index is out of range, a coordinate is not finite, the arrays have the
-// wrong shape or there are no tets. Inverted and degenerate tets are counted,
+// wrong shape, there are no tets, or a midside node of a second-order tet
+// is also a corner or the midside node of another edge. Inverted and degenerate tets are counted,
 // not rejected: the caller decides whether to warn.
 ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source = "mesh");
 

@@ -16,7 +16,7 @@
 #include "apps/on_input_mesh.hpp"
 #include "apps/output_check.hpp"
 #include "apps/progress_line.hpp"
-#include "apps/region_pins.hpp"
+#include "apps/smoothing_pins.hpp"
 #include "apps/report_text.hpp"
 #include "apps/worst_tets.hpp"
 #include "kernels/smoother.hpp"
@@ -1225,7 +1225,7 @@ TEST(CliPieces, InterfacePinsCountOnlyNodesTheFileLeftFree) {
   ASSERT_TRUE(pinned_on_boundary);
   const std::vector<std::uint8_t> file_pins = mesh.fixed;
   {
-    const RegionInterfacePins pins(mesh, 2);
+    const SmoothingPins pins(mesh, 2);
     EXPECT_EQ(pins.added_on_interfaces(), 9u - 3u);
     EXPECT_EQ(pins.added_on_features(), 0u);
   }
@@ -1261,6 +1261,51 @@ TEST_F(CliFiles, MaterialInterfacesStayFixed) {
   const CliRun q = run({"quality", path("layers.vtu"), "--json"});
   ASSERT_EQ(q.code, kExitOk) << q.err;
   EXPECT_EQ(nlohmann::json::parse(q.out)["input"]["movable_nodes"], 27 - 9);
+}
+
+// A second-order mesh with one curved interior edge: the run says how many
+// tets keep their shape and how many corners that pins, `quality` counts
+// them out of the movable nodes, the written mesh is second-order again,
+// and Medit output is refused before any work, leaving no file.
+TEST_F(CliFiles, CurvedSecondOrderTetsKeepTheirShape) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(4, 0.2));
+  // The edge between grid nodes (1,1,1) and (2,1,1): node i + 5 j + 25 k.
+  const index_t a = 1 + 5 + 25, b = 2 + 5 + 25;
+  std::set<index_t> corners;
+  std::size_t bent = 0;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (int e = 0; e < 6; ++e) {
+      const index_t u = mesh.tets[4 * t + kTetEdges[e][0]], v = mesh.tets[4 * t + kTetEdges[e][1]];
+      if (std::min(u, v) != a || std::max(u, v) != b) continue;
+      mesh.xyz[3 * static_cast<std::size_t>(mesh.midsides[6 * t + static_cast<std::size_t>(e)]) + 2] += 0.1;
+      corners.insert(&mesh.tets[4 * t], &mesh.tets[4 * t] + 4);
+      ++bent;
+    }
+  ASSERT_GT(bent, 0u);
+  std::size_t interior = 0;  // of the bent tets' corners: the lattice's interior has 1 <= i, j, k <= 3
+  for (index_t n : corners) interior += n % 5 >= 1 && n % 5 <= 3 && n / 5 % 5 >= 1 && n / 5 % 5 <= 3 && n / 25 >= 1 && n / 25 <= 3;
+  write_mesh(mesh, path("curved.msh"));
+  const CliRun r = run({"smooth", path("curved.msh"), "-o", path("out.vtu"), "--device", "cpu"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const std::string note = std::to_string(bent) + " second-order tets have curved edges and keep their shape: " +
+                           std::to_string(interior) + " corner nodes off the boundary stay fixed";
+  EXPECT_NE(r.err.find(note), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("belong to no tet"), std::string::npos) << r.err;  // midside nodes are used
+  const TetMesh out = read_mesh(path("out.vtu"));
+  EXPECT_EQ(out.midsides, mesh.midsides);
+  const CliRun q = run({"quality", path("curved.msh"), "--json"});
+  ASSERT_EQ(q.code, kExitOk) << q.err;
+  const nlohmann::json input = nlohmann::json::parse(q.out)["input"];
+  EXPECT_EQ(input["movable_nodes"], 27 - interior);
+  // The boundary's midside nodes count with its 98 corners, as in the field.
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes(), 1, mesh.midsides);
+  EXPECT_EQ(input["boundary_nodes"], std::count(boundary.begin(), boundary.end(), 1));
+  EXPECT_GT(input["boundary_nodes"], 98);
+
+  const CliRun medit = run({"smooth", path("curved.msh"), "-o", path("out.mesh"), "--device", "cpu"});
+  EXPECT_EQ(medit.code, kExitOutput);
+  EXPECT_NE(medit.err.find("Medit output holds 4-node tets only"), std::string::npos) << medit.err;
+  EXPECT_FALSE(fs::exists(path("out.mesh")));
 }
 
 // Coloured is a Form B scheme: Form A defaults to MultiBlock, and asking for

@@ -712,8 +712,8 @@ void expect_edits_refused(const std::string& base, const Cases& cases) {
 
 TEST(GmshIo, BadAsciiInputNamesFileAndLine) {
   const BadText cases[] = {
-      {"3 1 4 1\n1 1 2 3 4\n", "3 1 11 1\n1 1 2 3 4 1 2 3 4 1 2\n",
-       "t.msh:18:", "unsupported element type 11 (10-node tetrahedron)"},
+      {"3 1 4 1\n1 1 2 3 4\n", "3 1 29 1\n1 1 2 3 4 1 2 3 4 1 2\n",
+       "t.msh:18:", "unsupported element type 29 (20-node tetrahedron)"},
       {"1 1 2 3 4\n", "1 1 2 3 9\n", "t.msh:19:", "node tag 9, which is not in $Nodes"},
       {"1 0 0\n", "nan 0 0\n", "t.msh:12:", "non-finite node coordinate"},
       {"1 4 1 4\n", "1 5 1 5\n", "t.msh:14:", "hold 4 nodes, not the 5 announced"},

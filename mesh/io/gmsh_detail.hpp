@@ -10,14 +10,13 @@
 #include <utility>
 #include <vector>
 
-namespace tetsmooth {
-struct FileExtras;
-}
+#include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::gmsh {
 
-// A first-order element type. `kind` is the PassThroughBlock::kind used for
-// it (meshio's cell type names), `dim` the dimension of the entity it lives on.
+// An element type read and written. `kind` is the PassThroughBlock::kind
+// used for it (meshio's cell type names), `dim` the dimension of the entity
+// it lives on.
 struct ElementType {
   int id;
   const char* kind;
@@ -26,6 +25,16 @@ struct ElementType {
 };
 
 inline constexpr int kTetType = 4;
+inline constexpr int kTet10Type = 11;
+inline bool is_tet_type(int id) { return id == kTetType || id == kTet10Type; }
+
+// Where Gmsh's 10-node tetrahedron puts the midside node of each edge of
+// kTetEdges: its last two midside nodes are VTK's the other way round.
+inline constexpr int kGmshTet10Midsides[6] = {4, 5, 6, 7, 9, 8};
+
+// Appends a tet of `type` (4 or 10 nodes in Gmsh's order) to mesh.tets and,
+// for 10 nodes, mesh.midsides.
+void append_tet(TetMesh& mesh, const ElementType& type, const index_t* nodes);
 
 const ElementType* element_type(int id);                           // nullptr if not handled
 const ElementType* element_type_of_kind(const std::string& kind);  // nullptr if none

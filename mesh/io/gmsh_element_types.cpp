@@ -6,9 +6,13 @@ namespace tetsmooth::gmsh {
 namespace {
 
 // Node ordering within each type is Gmsh's; pass-through blocks keep it.
+// Of the second-order types, the 3-node line and the 6-node triangle order
+// their nodes as VTK does (corners, then the edges' midside nodes in the
+// corners' order), so blocks of them convert as they are.
 constexpr ElementType kTypes[] = {
-    {1, "line", 2, 1},       {2, "triangle", 3, 2}, {3, "quad", 4, 2},    {4, "tetra", 4, 3},
-    {5, "hexahedron", 8, 3}, {6, "wedge", 6, 3},    {7, "pyramid", 5, 3}, {15, "vertex", 1, 0},
+    {1, "line", 2, 1},       {2, "triangle", 3, 2}, {3, "quad", 4, 2},      {4, "tetra", 4, 3},
+    {5, "hexahedron", 8, 3}, {6, "wedge", 6, 3},    {7, "pyramid", 5, 3},   {15, "vertex", 1, 0},
+    {8, "line3", 3, 1},      {9, "triangle6", 6, 2}, {11, "tetra10", 10, 3},
 };
 
 // Names of the higher-order types of the MSH specification, for messages.
@@ -17,8 +21,7 @@ struct TypeName {
   const char* name;
 };
 constexpr TypeName kOtherNames[] = {
-    {8, "3-node line"},          {9, "6-node triangle"},
-    {10, "9-node quadrangle"},   {11, "10-node tetrahedron"},
+    {10, "9-node quadrangle"},
     {12, "27-node hexahedron"},  {13, "18-node prism"},
     {14, "14-node pyramid"},     {16, "8-node quadrangle"},
     {17, "20-node hexahedron"},  {18, "15-node prism"},
@@ -49,8 +52,16 @@ const ElementType* element_type_of_kind(const std::string& kind) {
 std::string unsupported_element_type(int id) {
   std::string what = "unsupported element type " + std::to_string(id);
   for (const TypeName& t : kOtherNames)
-    if (t.id == id) return what + " (" + t.name + "); only first-order elements are read";
+    if (t.id == id)
+      return what + " (" + t.name +
+             "); of the higher-order elements, only 10-node tetrahedra, 6-node triangles and 3-node lines are read";
   return what;
+}
+
+void append_tet(TetMesh& mesh, const ElementType& type, const index_t* nodes) {
+  mesh.tets.insert(mesh.tets.end(), nodes, nodes + 4);
+  if (type.id == kTet10Type)
+    for (int place : kGmshTet10Midsides) mesh.midsides.push_back(nodes[place]);
 }
 
 }  // namespace tetsmooth::gmsh

@@ -15,8 +15,8 @@ namespace {
 void add_element(ReadState& state, const ElementType& type, const std::vector<index_t>& nodes, long long id,
                  int physical, int elementary) {
   FileExtras& extras = state.mesh.extras;
-  if (type.id == kTetType) {
-    state.mesh.tets.insert(state.mesh.tets.end(), nodes.begin(), nodes.end());
+  if (is_tet_type(type.id)) {
+    append_tet(state.mesh, type, nodes.data());
     extras.tet_tags.push_back(physical);
     extras.tet_entity_tags.push_back(elementary);
     extras.tet_element_tags.push_back(id);

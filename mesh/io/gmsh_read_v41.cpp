@@ -135,7 +135,7 @@ void read_elements_v41(Source& src, ReadState& state) {
     const std::size_t reserve = src.reservable(count, 8 * (1 + static_cast<std::size_t>(type->nodes)));
 
     nodes.resize(static_cast<std::size_t>(type->nodes));
-    const bool tet = type->id == kTetType;
+    const bool tet = is_tet_type(type->id);
     // An empty block makes no PassThroughBlock (see MeditReader::elements).
     PassThroughBlock* block = tet || count == 0 ? nullptr : &state.block_for(*type);
     if (tet) {
@@ -147,7 +147,7 @@ void read_elements_v41(Source& src, ReadState& state) {
       const long long id = tag_value(src, "element tag");
       for (index_t& n : nodes) n = node_index(src, state, src.size_value("node tag"));
       if (tet) {
-        mesh.tets.insert(mesh.tets.end(), nodes.begin(), nodes.end());
+        append_tet(mesh, *type, nodes.data());
         mesh.extras.tet_entity_tags.push_back(entity);
         mesh.extras.tet_element_tags.push_back(id);
       } else {

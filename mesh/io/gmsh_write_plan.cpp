@@ -36,14 +36,25 @@ std::vector<ElementGroup> given_groups(const TetMesh& mesh) {
   };
   std::vector<ElementGroup> groups;
   ElementGroup& tets = groups.emplace_back();
-  tets.type = element_type(kTetType);
-  tets.connectivity = mesh.tets.data();
   tets.count = mesh.num_tets();
+  if (mesh.midsides.empty()) {
+    tets.type = element_type(kTetType);
+    tets.connectivity = mesh.tets.data();
+  } else {
+    tets.type = element_type(kTet10Type);
+    tets.owned.resize(10 * tets.count);
+    for (std::size_t t = 0; t < tets.count; ++t) {
+      index_t* out = &tets.owned[10 * t];
+      std::copy(&mesh.tets[4 * t], &mesh.tets[4 * t] + 4, out);
+      for (int e = 0; e < 6; ++e) out[kGmshTet10Midsides[e]] = mesh.midsides[6 * t + static_cast<std::size_t>(e)];
+    }
+    tets.connectivity = tets.owned.data();
+  }
   if (extras.tet_entity_tags.size() == tets.count) tets.entity = extras.tet_entity_tags;
   if (extras.tet_tags.size() == tets.count) tets.physical = physical_of(extras.tet_tags);
   for (const PassThroughBlock& block : extras.blocks) {
     const ElementType* type = element_type_of_kind(block.kind);
-    if (type == nullptr || type->id == kTetType || type->nodes != block.nodes_per_element)
+    if (type == nullptr || is_tet_type(type->id) || type->nodes != block.nodes_per_element)
       throw OutputError("MSH output cannot hold the pass-through '" + block.kind + "' block (" +
                         std::to_string(block.nodes_per_element) + " nodes per element)");
     ElementGroup& g = groups.emplace_back();

@@ -112,7 +112,7 @@ void write_fields(std::ostream& out, Sink& sink, const WritePlan& plan, const Me
     write_data_header(out, "ElementData", name, v22 ? gmsh::v22_lines(plan) : plan.element_count);
     std::size_t written = 0;
     for (const ElementGroup& g : plan.groups) {
-      const bool tets = g.type->id == gmsh::kTetType;
+      const bool tets = gmsh::is_tet_type(g.type->id);
       for (std::size_t e = 0; e < g.count; ++e, ++written) {
         const std::size_t copies = v22 ? gmsh::v22_physicals(plan, g, e).second : 1;
         for (std::size_t c = 0; c < copies; ++c) {

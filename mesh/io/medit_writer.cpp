@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/medit_detail.hpp"
 #include "mesh/io/medit_io.hpp"
@@ -64,6 +65,7 @@ std::vector<std::int32_t> required_nodes(const TetMesh& mesh) {
 
 void check(const TetMesh& mesh) {
   if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
+  check_first_order_output(mesh, "Medit");
   const auto in_range = [&](index_t n) { return n >= 0 && static_cast<std::size_t>(n) < mesh.num_nodes(); };
   const auto check_all = [&](const auto& indices, const std::string& what) {
     for (index_t n : indices)

@@ -15,6 +15,12 @@
 namespace tetsmooth {
 namespace {
 
+// Where TetGen's 10-node tets (its -o2 switch) put the midside node of each
+// edge of kTetEdges: TetGen lists the edges (2,3), (0,3), (0,1), (1,2),
+// (1,3), (0,2), as libtet 1.5 gives them (tests/test_io_tetgen.cpp checks
+// this against libtet).
+constexpr int kTetGenMidsides[6] = {6, 7, 9, 5, 8, 4};
+
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
@@ -144,27 +150,33 @@ void read_tetgen_ele(std::istream& in, const std::string& source, int first_inde
   const std::size_t count = count_field(lines, 0, "tet count");
   if (count == 0) lines.fail("the .ele file declares no tets");
   const long long per_tet = lines.size() > 1 ? lines.integer(1, "nodes per tet") : 4;
-  if (per_tet == 10) lines.fail("second-order tets (10 nodes per tet) are not supported");
-  if (per_tet != 4) lines.fail("nodes per tet must be 4, found " + std::to_string(per_tet));
+  if (per_tet != 4 && per_tet != 10) lines.fail("nodes per tet must be 4 or 10, found " + std::to_string(per_tet));
+  const auto nodes = static_cast<std::size_t>(per_tet);
   const std::size_t attrs = lines.size() > 2 ? count_field(lines, 2, "attribute count") : 0;
 
   const long long num_nodes = static_cast<long long>(mesh.num_nodes());
   mesh.tets.clear();
+  mesh.midsides.clear();
   mesh.tets.reserve(4 * capped(count));
+  if (nodes == 10) mesh.midsides.reserve(6 * capped(count));
   std::vector<double> attributes;
   attributes.reserve(capped(capped(count) * attrs));
+  index_t tet[10];
   for (std::size_t t = 0; t < count; ++t) {
     lines.require_line("tet " + std::to_string(t + 1) + " of " + std::to_string(count));
     lines.integer(0, "tet number");
-    for (std::size_t k = 0; k < 4; ++k) {
+    for (std::size_t k = 0; k < nodes; ++k) {
       const long long node = lines.integer(1 + k, "node number");
       if (node < first_index || node - first_index >= num_nodes)
         lines.fail("node number " + std::to_string(node) + " out of range [" + std::to_string(first_index) + ", " +
                    std::to_string(num_nodes + first_index) + ")");
-      mesh.tets.push_back(static_cast<index_t>(node - first_index));
+      tet[k] = static_cast<index_t>(node - first_index);
     }
+    mesh.tets.insert(mesh.tets.end(), tet, tet + 4);
+    if (nodes == 10)
+      for (int place : kTetGenMidsides) mesh.midsides.push_back(tet[place]);
     for (std::size_t k = 0; k < attrs; ++k)
-      attributes.push_back(lines.real(5 + k, k == 0 ? "region attribute" : "tet attribute"));
+      attributes.push_back(lines.real(1 + nodes + k, k == 0 ? "region attribute" : "tet attribute"));
   }
   expect_end(lines, count, "tets");
   take_tet_attributes(std::move(attributes), attrs, mesh.extras);
@@ -218,12 +230,17 @@ void write_tetgen_ele(const TetMesh& mesh, std::ostream& out) {
   const bool has_attrs = has_tet_attributes(ex, t);
   const std::size_t attrs = has_attrs ? static_cast<std::size_t>(ex.tet_attribute_count) : 0;
   const bool has_tags = !has_attrs && ex.tet_tags.size() == t;
-  out << t << " 4 " << (has_attrs ? attrs : has_tags ? 1 : 0) << '\n';
+  const bool second_order = !mesh.midsides.empty();
+  out << t << (second_order ? " 10 " : " 4 ") << (has_attrs ? attrs : has_tags ? 1 : 0) << '\n';
+  index_t tet[10];
   for (std::size_t e = 0; e < t; ++e) {
     put_integer(out, static_cast<long long>(e) + 1);
-    for (int k = 0; k < 4; ++k) {
+    std::copy(&mesh.tets[4 * e], &mesh.tets[4 * e] + 4, tet);
+    if (second_order)
+      for (int k = 0; k < 6; ++k) tet[kTetGenMidsides[k]] = mesh.midsides[6 * e + static_cast<std::size_t>(k)];
+    for (int k = 0; k < (second_order ? 10 : 4); ++k) {
       out << ' ';
-      put_integer(out, static_cast<long long>(mesh.tets[4 * e + k]) + 1);
+      put_integer(out, static_cast<long long>(tet[k]) + 1);
     }
     for (std::size_t k = 0; k < attrs; ++k) {
       out << ' ';

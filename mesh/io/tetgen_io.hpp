@@ -3,8 +3,8 @@
 //
 //   X.node: "<#nodes> 3 <#attributes> <0|1 boundary marker>", then per node
 //           "<number> <x> <y> <z> [attributes...] [marker]"
-//   X.ele:  "<#tets> 4 <#attributes>", then per tet
-//           "<number> <n1> <n2> <n3> <n4> [attributes...]"
+//   X.ele:  "<#tets> <4|10> <#attributes>", then per tet
+//           "<number> <n1> <n2> <n3> <n4> [6 midside nodes] [attributes...]"
 //
 // Numbering starts at the first node's number, 0 or 1, for both files (as
 // TetGen decides it); nodes must be numbered consecutively. '#' starts a
@@ -15,7 +15,8 @@
 // ascending order of attribute value (with a read note). Attributes that
 // tet_tags cannot give back (non-whole, or more than one a tet) are kept in
 // FileExtras::tet_attributes and written back as they were. Second-order
-// tets (10 nodes) are rejected. Markers do not fix nodes: the boundary is
+// tets (10 nodes, TetGen's -o2) are read and written with their midside
+// nodes in TetGen's order (tetgen_io.cpp). Markers do not fix nodes: the boundary is
 // found from the tets.
 #include <istream>
 #include <ostream>

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/input_file.hpp"
 #include "mesh/io/little_endian.hpp"
@@ -75,6 +76,7 @@ class HashingReader {
 }  // namespace
 
 void write_cache(const TetMesh& mesh, std::ostream& out) {
+  check_first_order_output(mesh, ".tsm");
   HashingWriter w(out);
   unsigned char header[kHeaderBytes];
   std::memcpy(header, kMagic, sizeof kMagic);

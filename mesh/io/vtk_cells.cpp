@@ -8,13 +8,19 @@ namespace tetsmooth {
 namespace {
 
 constexpr std::uint8_t kVtkTetra = 10;
+// VTK_QUADRATIC_TETRA: the corners, then the midside nodes in kTetEdges
+// order, which is VTK's.
+constexpr std::uint8_t kVtkQuadraticTetra = 24;
 
 struct PassThroughType {
   std::uint8_t vtk;
   const char* kind;  // PassThroughBlock::kind, as the other readers name it
   int nodes;
 };
-constexpr PassThroughType kPassThrough[] = {{1, "vertex", 1}, {3, "line", 2}, {5, "triangle", 3}, {9, "quad", 4}};
+// The quadratic edge and triangle order their nodes as Gmsh's 3-node line
+// and 6-node triangle do (gmsh_element_types.cpp), under the same kinds.
+constexpr PassThroughType kPassThrough[] = {{1, "vertex", 1},    {3, "line", 2},  {5, "triangle", 3},
+                                            {9, "quad", 4},      {21, "line3", 3}, {22, "triangle6", 6}};
 
 const PassThroughType* by_vtk(long long type) {
   for (const auto& p : kPassThrough)
@@ -81,7 +87,8 @@ void check_vtk_blocks(const TetMesh& mesh, const std::string& where) {
   for (const PassThroughBlock& b : mesh.extras.blocks)
     if (!by_kind(b.kind, b.nodes_per_element))
       throw OutputError(where + ": pass-through " + b.kind + " elements with " + std::to_string(b.nodes_per_element) +
-                        " nodes have no VTK cell type supported here (vertex, line, triangle, quad)");
+                        " nodes have no VTK cell type supported here (vertex, line, triangle, quad, quadratic edge, "
+                        "quadratic triangle)");
 }
 
 VtkCells vtk_cells_of(const TetMesh& mesh) {
@@ -96,13 +103,20 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
     tagged = tagged || !b.tags.empty();
     with_entities = with_entities || !b.entity_tags.empty();
   }
-  cells.connectivity = mesh.tets;
+  const bool second_order = !mesh.midsides.empty();
+  const std::size_t per_tet = second_order ? 10 : 4;
+  cells.connectivity.reserve(per_tet * mesh.num_tets());
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    cells.connectivity.insert(cells.connectivity.end(), &mesh.tets[4 * t], &mesh.tets[4 * t] + 4);
+    if (second_order)
+      cells.connectivity.insert(cells.connectivity.end(), &mesh.midsides[6 * t], &mesh.midsides[6 * t] + 6);
+  }
   cells.offsets.reserve(total + 1);
   cells.types.reserve(total);
   cells.offsets.push_back(0);
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
-    cells.offsets.push_back(static_cast<std::int64_t>(4 * (t + 1)));
-    cells.types.push_back(kVtkTetra);
+    cells.offsets.push_back(static_cast<std::int64_t>(per_tet * (t + 1)));
+    cells.types.push_back(second_order ? kVtkQuadraticTetra : kVtkTetra);
   }
   if (tagged) {
     cells.tags = ex.tet_tags;
@@ -148,9 +162,11 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
   const long long num_nodes = static_cast<long long>(mesh.num_nodes());
   std::vector<std::size_t> block_of_type(256, SIZE_MAX);
   mesh.tets.clear();
+  mesh.midsides.clear();
   mesh.extras.tet_tags.clear();
   mesh.extras.tet_entity_tags.clear();
   mesh.extras.blocks.clear();
+  long long tet_type = -1;  // the type of the first tet
   for (std::size_t c = 0; c < count; ++c) {
     const long long begin = offsets[c], end = offsets[c + 1];
     if (end < begin || end > static_cast<long long>(connectivity.size()))
@@ -163,16 +179,23 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
                 "node " + std::to_string(connectivity[k]) + " out of range [0, " + std::to_string(num_nodes) + ")");
     const long long type = types[c];
     const PassThroughType* pass = by_vtk(type);
-    const long long expected = type == kVtkTetra ? 4 : pass ? pass->nodes : -1;
+    const bool tet = type == kVtkTetra || type == kVtkQuadraticTetra;
+    const long long expected = type == kVtkTetra ? 4 : type == kVtkQuadraticTetra ? 10 : pass ? pass->nodes : -1;
     if (expected < 0) {
       fail(c, "unsupported VTK cell type " + std::to_string(type) + " (" + vtk_cell_type_name(type) +
-                  "); only tetra, and triangle, quad, line and vertex passed through, are read");
+                  "); only tetra and quadratic tetra, and vertex, line, triangle, quad, quadratic edge and "
+                  "quadratic triangle passed through, are read");
     }
     if (end - begin != expected)
       fail(c, vtk_cell_type_name(type) + " with " + std::to_string(end - begin) + " nodes instead of " +
                   std::to_string(expected));
-    if (type == kVtkTetra) {
-      for (long long k = begin; k < end; ++k) mesh.tets.push_back(static_cast<index_t>(connectivity[k]));
+    if (tet) {
+      if (tet_type < 0) tet_type = type;
+      if (type != tet_type)
+        fail(c, "a " + vtk_cell_type_name(type) + " after a " + vtk_cell_type_name(tet_type) +
+                    ": tetsmooth reads meshes of 4-node or of 10-node tets, not both");
+      for (long long k = begin; k < begin + 4; ++k) mesh.tets.push_back(static_cast<index_t>(connectivity[k]));
+      for (long long k = begin + 4; k < end; ++k) mesh.midsides.push_back(static_cast<index_t>(connectivity[k]));
       if (!tags.empty()) mesh.extras.tet_tags.push_back(tags[c]);
       if (!entities.empty()) mesh.extras.tet_entity_tags.push_back(entities[c]);
       continue;

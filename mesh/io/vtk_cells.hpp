@@ -1,7 +1,9 @@
 #pragma once
 // The VTK view of a TetMesh's cells, shared by the VTU and legacy VTK
-// readers and writers: tets (VTK_TETRA = 10) first, then the pass-through
-// blocks in order, as vertices (1), lines (3), triangles (5) or quads (9).
+// readers and writers: tets (VTK_TETRA = 10, or VTK_QUADRATIC_TETRA = 24
+// for second-order tets) first, then the pass-through blocks in order, as
+// vertices (1), lines (3), triangles (5), quads (9), quadratic edges (21)
+// or quadratic triangles (22).
 // Tags travel in a per-cell integer array named kVtkTagArray, Gmsh entity
 // tags in one named kVtkEntityArray, the Gmsh entity each node is
 // classified on in a per-point array of (dimension, tag) pairs named

@@ -28,12 +28,20 @@ class NullBuf : public std::streambuf {
   std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
 };
 
-// One tet over four nodes, and each of the mesh's blocks with its kind and
-// no elements; tags are kept where the mesh has them, one per element.
+// One tet over four nodes (ten for a second-order mesh), and each of the
+// mesh's blocks with its kind and no elements; tags are kept where the mesh
+// has them, one per element.
 TetMesh probe_of(const TetMesh& mesh) {
   TetMesh probe;
   probe.xyz = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
   probe.tets = {0, 1, 2, 3};
+  if (!mesh.midsides.empty())
+    for (const auto& edge : kTetEdges) {
+      probe.midsides.push_back(static_cast<index_t>(probe.num_nodes()));
+      for (int c = 0; c < 3; ++c)
+        probe.xyz.push_back(0.5 * (probe.xyz[3 * static_cast<std::size_t>(edge[0]) + static_cast<std::size_t>(c)] +
+                                   probe.xyz[3 * static_cast<std::size_t>(edge[1]) + static_cast<std::size_t>(c)]));
+    }
   const FileExtras& e = mesh.extras;
   if (!e.tet_tags.empty()) probe.extras.tet_tags = {e.tet_tags.front()};
   if (!e.tet_entity_tags.empty()) probe.extras.tet_entity_tags = {e.tet_entity_tags.front()};

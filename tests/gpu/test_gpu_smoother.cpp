@@ -251,6 +251,23 @@ TEST(GpuSmoother, ColouredIsBitIdenticalAcrossRuns) {
   }
 }
 
+// smooth() on CUDA with second-order tets: the midside nodes ride along on
+// the device as nodes of no tet, so the corners end exactly where the same
+// mesh's first-order run puts them, and each midside node at its edge's
+// midpoint (mesh/second_order.hpp; the carrying itself is host code).
+TEST(GpuSmoother, SecondOrderCornersMatchTheFirstOrderRun) {
+  SKIP_WITHOUT_GPU();
+  for (Precision p : {Precision::Double, Precision::Float}) {
+    TetMesh first = model_5k();
+    TetMesh second = testing::with_midsides(first);
+    const SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::Coloured, Method::Adaptive, p);
+    smooth(first, o, Device::Cuda);
+    smooth(second, o, Device::Cuda);
+    EXPECT_TRUE(std::equal(first.xyz.begin(), first.xyz.end(), second.xyz.begin())) << to_string(p);
+    EXPECT_LT(testing::largest_midside_offset(second), 1e-9) << to_string(p);
+  }
+}
+
 // Skipping settled nodes changes no decision: the coloured loop with and
 // without it gives the same coordinates and per-sweep counts, bit for bit,
 // while evaluating fewer nodes once the mesh settles.

@@ -1,6 +1,10 @@
 #include "test_meshes.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <string>
+#include <utility>
 
 #include "generators/models.hpp"
 #include "mesh/topology.hpp"
@@ -16,6 +20,36 @@ TetMesh regular_tet() {
 }
 
 TetMesh cube_grid(int n, double jitter, std::uint64_t seed) { return generate_lattice(n, jitter, seed); }
+
+TetMesh with_midsides(TetMesh mesh) {
+  std::map<std::pair<index_t, index_t>, index_t> node_of_edge;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (const auto& edge : kTetEdges) {
+      const index_t a = mesh.tets[4 * t + edge[0]], b = mesh.tets[4 * t + edge[1]];
+      const auto [it, added] =
+          node_of_edge.try_emplace({std::min(a, b), std::max(a, b)}, static_cast<index_t>(mesh.num_nodes()));
+      if (added)
+        for (int c = 0; c < 3; ++c)
+          mesh.xyz.push_back(0.5 * (mesh.xyz[3 * static_cast<std::size_t>(a) + c] +
+                                    mesh.xyz[3 * static_cast<std::size_t>(b) + c]));
+      mesh.midsides.push_back(it->second);
+    }
+  if (!mesh.fixed.empty()) mesh.fixed.resize(mesh.num_nodes(), 0);
+  return mesh;
+}
+
+double largest_midside_offset(const TetMesh& mesh) {
+  double worst = 0;
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t)
+    for (int e = 0; e < 6; ++e) {
+      const auto m = static_cast<std::size_t>(mesh.midsides[6 * t + static_cast<std::size_t>(e)]);
+      const auto a = static_cast<std::size_t>(mesh.tets[4 * t + kTetEdges[e][0]]);
+      const auto b = static_cast<std::size_t>(mesh.tets[4 * t + kTetEdges[e][1]]);
+      for (std::size_t c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(mesh.xyz[3 * m + c] - 0.5 * (mesh.xyz[3 * a + c] + mesh.xyz[3 * b + c])));
+    }
+  return worst;
+}
 
 TetMesh pushed_cube_grid(int n, double jitter, std::uint64_t seed, int every, double push) {
   TetMesh m = cube_grid(n, jitter, seed);

@@ -25,6 +25,15 @@ TetMesh cube_with_centre(double cx = 0.5, double cy = 0.5, double cz = 0.5);
 // Random points in a box, Delaunay-tetrahedralised by TetGen.
 TetMesh random_delaunay(int points, std::uint64_t seed);
 
+// The same mesh as second-order tets: a new node at the midpoint of each
+// edge (appended after the mesh's nodes, in order of first use), listed in
+// TetMesh::midsides.
+TetMesh with_midsides(TetMesh mesh);
+
+// How far the midside nodes of a second-order mesh lie off their edges'
+// midpoints, at most (the largest coordinate difference).
+double largest_midside_offset(const TetMesh& mesh);
+
 // Path to tests/data/<name>.
 const char* data_path(const char* name);
 

@@ -9,6 +9,7 @@ namespace {
 nlohmann::ordered_json mesh_counts_json(const ValidationReport& v) {
   return {{"nodes", v.nodes},
           {"tets", v.tets},
+          {"nodes_per_tet", v.nodes_per_tet},
           {"inverted_tets", v.inverted},
           {"degenerate_tets", v.degenerate},
           {"unreferenced_nodes", v.unreferenced},
@@ -48,6 +49,7 @@ nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const Sm
   nlohmann::ordered_json input = mesh_counts_json(record.input);
   input["path"] = command.input;
   input["format"] = input_format_name(record.input_format);
+  input["curved_tets"] = record.curved_tets;
   return {{"tool", "tetsmooth"},
           {"version", TETSMOOTH_VERSION},
           {"command", "smooth"},
@@ -84,6 +86,7 @@ nlohmann::ordered_json quality_report_json(const QualityCommand& command, const 
   input["format"] = input_format_name(record.format);
   input["boundary_nodes"] = record.boundary_nodes;
   input["movable_nodes"] = record.movable_nodes;
+  input["curved_tets"] = record.curved_tets;
   return {{"tool", "tetsmooth"},  {"version", TETSMOOTH_VERSION},
           {"command", "quality"}, {"input", input},
           {"index_base", 0},      {"quality", summary_json(record.summary)},

@@ -19,6 +19,7 @@ namespace tetsmooth::cli {
 struct SmoothRecord {
   MeshFormat input_format = MeshFormat::Auto, output_format = MeshFormat::Auto;
   ValidationReport input;       // counts of the mesh as read
+  std::size_t curved_tets = 0;  // second-order tets that keep their shape (SmoothingPins)
   Device device = Device::Cpu;  // the device that ran (never Auto)
   SmoothResult result;
   double read_ms = 0, write_ms = 0, total_ms = 0;
@@ -29,6 +30,7 @@ struct QualityRecord {
   MeshFormat format = MeshFormat::Auto;
   ValidationReport mesh;
   std::size_t boundary_nodes = 0, movable_nodes = 0;
+  std::size_t curved_tets = 0;  // second-order tets that smoothing keeps as they are
   QualitySummary summary;
   std::vector<RankedTet> worst;
 };

@@ -24,6 +24,7 @@ void run_quality(const QualityCommand& c, const Console& console) {
   // material interfaces and Gmsh features pinned as `smooth` pins them.
   const Topology topology = on_input_mesh(c.input, [&] {
     const SmoothingPins pins(mesh, 0);  // all cores, as the quality summary
+    record.curved_tets = pins.curved_tets();
     return build_topology(mesh, 0);
   });
   // Midside nodes of second-order tets on boundary faces count too, as in

@@ -162,13 +162,18 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
                    " on interfaces between regions (tets of different tags or Gmsh volumes)" + stay(n));
     if (const std::size_t n = pins.added_on_features(); n > 0)
       console.note(counted(n, "node", "nodes") + " on Gmsh points, curves or surfaces inside the mesh" + stay(n));
-    const std::size_t curved = pins.curved_tets(), corners = pins.added_at_curved_tets();
+    const std::size_t curved = record.curved_tets = pins.curved_tets(), corners = pins.added_at_curved_tets();
+    // Most tets curved is more likely coordinates rounded coarser than
+    // coordinate_resolution can tell than a mesh bent throughout.
     if (curved > 0)
       console.note(counted(curved, "second-order tet has", "second-order tets have") + " curved edges and " +
                    (curved == 1 ? "keeps its" : "keep their") + " shape" +
                    (corners > 0 ? ": " + counted(corners, "corner node", "corner nodes") + " off the boundary" +
                                       stay(corners)
-                                : std::string()));
+                                : std::string()) +
+                   (2 * curved > mesh.num_tets() ? " (most tets: if the file rounds its coordinates to a few "
+                                                   "digits, the midside nodes may be off their edges by that rounding)"
+                                                 : ""));
     else if (corners > 0)
       console.note(counted(corners, "node", "nodes") + " at the ends of edges whose midside node is pinned" +
                    stay(corners));

@@ -1,5 +1,7 @@
 #include "kernels/smoother.hpp"
 
+#include <algorithm>
+
 #include "mesh/second_order.hpp"
 
 namespace tetsmooth {
@@ -14,7 +16,8 @@ SmoothResult smooth(TetMesh& mesh, const SmoothOptions& options, Device device) 
   // run only, and the midside nodes follow the corners that moved.
   const CurvedTetPins pins = curved_tet_pins(mesh);
   std::vector<std::uint8_t> file_pins = mesh.fixed;
-  if (pins.tets > 0) {
+  // Corners of curved tets, and of edges whose midside node is pinned.
+  if (std::find(pins.corners.begin(), pins.corners.end(), 1) != pins.corners.end()) {
     mesh.fixed.resize(mesh.num_nodes(), 0);
     for (std::size_t i = 0; i < pins.corners.size(); ++i) mesh.fixed[i] |= pins.corners[i];
   }

@@ -1,28 +1,72 @@
 #include "mesh/second_order.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
 #include "mesh/errors.hpp"
 #include "mesh/vec3.hpp"
 
 namespace tetsmooth {
 namespace {
 
+constexpr double kLargestRounding = 1e-2;  // of an edge's length, see straight()
+
 Vec3<double> point(const std::vector<double>& xyz, index_t n) {
   const double* p = &xyz[3 * static_cast<std::size_t>(n)];
   return {p[0], p[1], p[2]};
 }
 
-bool straight(const TetMesh& mesh, index_t a, index_t b, index_t m) {
-  const Vec3<double> pa = point(mesh.xyz, a), pb = point(mesh.xyz, b);
-  const Vec3<double> off = point(mesh.xyz, m) - 0.5 * (pa + pb);
-  return norm2(off) <= kStraightEdgeTolerance * kStraightEdgeTolerance * norm2(pb - pa);
+double largest_magnitude(Vec3<double> p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
+
+// Each coordinate is off by at most half a step or 2^-24 of itself, so a
+// midside node's offset from the midpoint by at most twice that in each
+// component; the bound is doubled again for margin. At most a hundredth of
+// the edge is put down to rounding, so that a coarse mesh of exact values
+// (a unit lattice's midside nodes are multiples of 0.1) still shows its
+// curved edges.
+bool straight(const TetMesh& mesh, CoordinateResolution res, index_t a, index_t b, index_t m) {
+  const Vec3<double> pa = point(mesh.xyz, a), pb = point(mesh.xyz, b), pm = point(mesh.xyz, m);
+  const double offset = std::sqrt(norm2(pm - 0.5 * (pa + pb))), length = std::sqrt(norm2(pb - pa));
+  const double size = std::max({largest_magnitude(pa), largest_magnitude(pb), largest_magnitude(pm)});
+  const double rounding = 2 * std::sqrt(3.0) * (res.step + 2 * res.relative * size);
+  return offset <= kStraightEdgeTolerance * length + std::min(rounding, kLargestRounding * length);
+}
+
+// Whether every value is a whole multiple of `step` (to a thousandth of a
+// step, past double's own rounding of the product).
+bool multiples_of(const std::vector<double>& values, double step) {
+  for (double v : values) {
+    const double q = v / step;
+    if (std::abs(q - std::nearbyint(q)) > 1e-3) return false;
+  }
+  return true;
 }
 
 }  // namespace
+
+CoordinateResolution coordinate_resolution(const std::vector<double>& xyz) {
+  CoordinateResolution res;
+  const auto in_float = [](double v) {
+    return std::abs(v) <= std::numeric_limits<float>::max() && static_cast<double>(static_cast<float>(v)) == v;
+  };
+  if (std::all_of(xyz.begin(), xyz.end(), in_float))
+    res.relative = 0x1p-24;
+  // Coarsest first, so that the step found is the largest that fits; a
+  // file of full double precision fails each within its first few values.
+  for (double step = 1; step >= 0.99e-9; step /= 10)
+    if (multiples_of(xyz, step)) {
+      res.step = step;
+      break;
+    }
+  return res;
+}
 
 CurvedTetPins curved_tet_pins(const TetMesh& mesh) {
   CurvedTetPins pins;
   if (mesh.midsides.empty()) return pins;
   pins.corners.assign(mesh.num_nodes(), 0);
+  const CoordinateResolution res = coordinate_resolution(mesh.xyz);
   const auto pinned = [&](index_t n) { return !mesh.fixed.empty() && mesh.fixed[static_cast<std::size_t>(n)]; };
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
     const index_t* v = &mesh.tets[4 * t];
@@ -30,7 +74,7 @@ CurvedTetPins curved_tet_pins(const TetMesh& mesh) {
     bool curved = false;
     for (int e = 0; e < 6; ++e) {
       const index_t a = v[kTetEdges[e][0]], b = v[kTetEdges[e][1]];
-      curved = curved || !straight(mesh, a, b, m[e]);
+      curved = curved || !straight(mesh, res, a, b, m[e]);
       if (pinned(m[e])) pins.corners[static_cast<std::size_t>(a)] = pins.corners[static_cast<std::size_t>(b)] = 1;
     }
     if (!curved) continue;
@@ -59,9 +103,17 @@ void carry_midside_nodes(TetMesh& mesh, const std::vector<double>& before) {
   }
 }
 
+void mark_midsides_of_marked_edges(const TetMesh& mesh, std::vector<std::uint8_t>& flags) {
+  for (std::size_t t = 0; t < mesh.num_tets() && !mesh.midsides.empty(); ++t)
+    for (int e = 0; e < 6; ++e)
+      if (flags[static_cast<std::size_t>(mesh.tets[4 * t + kTetEdges[e][0]])] &&
+          flags[static_cast<std::size_t>(mesh.tets[4 * t + kTetEdges[e][1]])])
+        flags[static_cast<std::size_t>(mesh.midsides[6 * t + static_cast<std::size_t>(e)])] = 1;
+}
+
 void check_first_order_output(const TetMesh& mesh, const std::string& format) {
   if (!mesh.midsides.empty())
-    throw OutputError(format + " output holds 4-node tets only; write MSH, VTU or VTK to keep the 10-node tets");
+    throw OutputError(format + " output holds 4-node tets only; write MSH, VTU, VTK or TetGen to keep the 10-node tets");
 }
 
 }  // namespace tetsmooth

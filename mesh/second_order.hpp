@@ -22,11 +22,24 @@
 namespace tetsmooth {
 
 // An edge is straight when its midside node lies within this fraction of
-// the edge's length of the edge's midpoint. Loose enough for coordinates
-// stored in single precision (about 1e-7 of their size), so that a file
-// written in float32 still has straight edges; a midside node that far off
-// changes the tet's Jacobian by well under 1% of the corner tet's.
+// the edge's length of the edge's midpoint, beyond what the rounding of the
+// file's coordinates explains (coordinate_resolution; up to 1% of the edge).
+// A midside node 1e-4 off changes the tet's Jacobian by well under 1% of
+// the corner tet's.
 inline constexpr double kStraightEdgeTolerance = 1e-4;
+
+// How finely a file stored its coordinates, told from their values: `step`
+// when every value is a whole multiple of one power of ten from 1 down to
+// 1e-9 (an export rounded to millimetres, say: 1e-3), else 0; `relative`
+// 2^-24 when every value is a float32 number (a binary VTU or VTK of
+// Float32 points), else 0. Files that keep full double precision have
+// neither. A midside node of a straight edge then lies off its edge's
+// midpoint by at most about a step, or 2^-24 of its coordinates' size.
+struct CoordinateResolution {
+  double step = 0;
+  double relative = 0;
+};
+CoordinateResolution coordinate_resolution(const std::vector<double>& xyz);
 
 // The corners that must stay: all four of each tet with a curved edge, and
 // both corners of each edge whose midside node the mesh pins (mesh.fixed),
@@ -44,6 +57,11 @@ CurvedTetPins curved_tet_pins(const TetMesh& mesh);
 // midside node whose corners did not move keeps its coordinates bit for
 // bit.
 void carry_midside_nodes(TetMesh& mesh, const std::vector<double>& before);
+
+// Sets flags[m] for each midside node m whose edge's corners both have
+// theirs set: with its corners in place, smoothing leaves it in place too.
+// `flags` holds one per node; nothing changes for a first-order mesh.
+void mark_midsides_of_marked_edges(const TetMesh& mesh, std::vector<std::uint8_t>& flags);
 
 // For writers of formats without second-order tets (Medit, TetGen, .tsm):
 // throws OutputError naming `format` when the mesh has midside nodes.

@@ -123,16 +123,18 @@ bool has_repeated_node(const index_t* t) {
 
 std::size_t max_tets() { return static_cast<std::size_t>(std::numeric_limits<index_t>::max()) / 4; }
 
-ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source) {
+ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source, const std::string& element_source) {
+  const std::string& elements = element_source.empty() ? source : element_source;
   check_shapes(mesh, source);
   check_coordinates(mesh, source);
-  check_indices(mesh.tets, 4, mesh.num_nodes(), source, "tet");
-  check_blocks(mesh, source);
-  check_midsides(mesh, source);
+  check_indices(mesh.tets, 4, mesh.num_nodes(), elements, "tet");
+  check_blocks(mesh, elements);
+  check_midsides(mesh, elements);
 
   ValidationReport report;
   report.nodes = mesh.num_nodes();
   report.tets = mesh.num_tets();
+  report.nodes_per_tet = mesh.midsides.empty() ? 4 : 10;
   std::vector<std::uint8_t> referenced(mesh.num_nodes(), 0);
   const auto point = [&](index_t n) {
     const double* p = &mesh.xyz[3 * static_cast<std::size_t>(n)];

@@ -9,6 +9,7 @@ namespace tetsmooth {
 
 struct ValidationReport {
   std::size_t nodes = 0, tets = 0;
+  int nodes_per_tet = 4;         // 10 for second-order tets (TetMesh::midsides)
   std::size_t inverted = 0;      // signed volume < 0
   std::size_t degenerate = 0;    // signed volume == 0 or a repeated node
   std::size_t unreferenced = 0;  // nodes in no tet, neither corners nor midside nodes
@@ -23,8 +24,11 @@ struct ValidationReport {
 // node index is out of range, a coordinate is not finite, the arrays have the
 // wrong shape, there are no tets, or a midside node of a second-order tet
 // is also a corner or the midside node of another edge. Inverted and degenerate tets are counted,
-// not rejected: the caller decides whether to warn.
-ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source = "mesh");
+// not rejected: the caller decides whether to warn. Errors in the tets,
+// midside nodes and other elements name `element_source` instead where it
+// is given (TetGen keeps them in the .ele file, the nodes in the .node).
+ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source = "mesh",
+                               const std::string& element_source = "");
 
 // The most tets a mesh may have: the node-to-tet table holds 4 entries a tet
 // under 32-bit offsets (536,870,911). validate_mesh refuses more, and the

@@ -1285,8 +1285,13 @@ TEST_F(CliFiles, CurvedSecondOrderTetsKeepTheirShape) {
   std::size_t interior = 0;  // of the bent tets' corners: the lattice's interior has 1 <= i, j, k <= 3
   for (index_t n : corners) interior += n % 5 >= 1 && n % 5 <= 3 && n / 5 % 5 >= 1 && n / 5 % 5 <= 3 && n / 25 >= 1 && n / 25 <= 3;
   write_mesh(mesh, path("curved.msh"));
-  const CliRun r = run({"smooth", path("curved.msh"), "-o", path("out.vtu"), "--device", "cpu"});
+  const CliRun r =
+      run({"smooth", path("curved.msh"), "-o", path("out.vtu"), "--device", "cpu", "--report", path("r.json")});
   ASSERT_EQ(r.code, kExitOk) << r.err;
+  std::ifstream report(path("r.json"));
+  const nlohmann::json smoothed = nlohmann::json::parse(report)["input"];
+  EXPECT_EQ(smoothed["nodes_per_tet"], 10);
+  EXPECT_EQ(smoothed["curved_tets"], bent);
   const std::string note = std::to_string(bent) + " second-order tets have curved edges and keep their shape: " +
                            std::to_string(interior) + " corner nodes off the boundary stay fixed";
   EXPECT_NE(r.err.find(note), std::string::npos) << r.err;
@@ -1297,6 +1302,8 @@ TEST_F(CliFiles, CurvedSecondOrderTetsKeepTheirShape) {
   ASSERT_EQ(q.code, kExitOk) << q.err;
   const nlohmann::json input = nlohmann::json::parse(q.out)["input"];
   EXPECT_EQ(input["movable_nodes"], 27 - interior);
+  EXPECT_EQ(input["nodes_per_tet"], 10);
+  EXPECT_EQ(input["curved_tets"], bent);
   // The boundary's midside nodes count with its 98 corners, as in the field.
   const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes(), 1, mesh.midsides);
   EXPECT_EQ(input["boundary_nodes"], std::count(boundary.begin(), boundary.end(), 1));

@@ -20,11 +20,13 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
+#include "mesh/io/mesh_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
 #include "mesh/io/tsm_cache.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
 #include "mesh/io/writable_check.hpp"
+#include "mesh/topology.hpp"
 #include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 
@@ -180,7 +182,8 @@ TEST(SecondOrderIo, FilesMixingFourAndTenNodeTetsAreRefused) {
                           "2 4 2 1 1 2 3 4 11\n$EndElements\n";
   std::istringstream in_msh(msh);
   const std::string msh_error = testing::input_error_message([&] { read_gmsh(in_msh, "mixed.msh"); }, "mixed msh");
-  EXPECT_NE(msh_error.find("mixes 4-node and 10-node tetrahedra"), std::string::npos) << msh_error;
+  // Named at the line of the first tet of the other kind.
+  EXPECT_NE(msh_error.find("mixed.msh:21: a 4-node tetrahedron after 10-node ones"), std::string::npos) << msh_error;
 
   const std::string vtk = "# vtk DataFile Version 4.2\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 11 double\n" +
                           nodes_at(kVtkEdges, false) + "1 1 1\nCELLS 2 16\n4 1 2 3 10\n10 0 1 2 3 4 5 6 7 8 9\n" +
@@ -190,6 +193,30 @@ TEST(SecondOrderIo, FilesMixingFourAndTenNodeTetsAreRefused) {
   EXPECT_NE(vtk_error.find("cell 1: a quadratic tetra after a tetra"), std::string::npos) << vtk_error;
 }
 
+// A hand-written -o2 pair (tests/data/tetgen_order2.*), also a fuzzing seed.
+TEST(SecondOrderIo, TetGenFixtureReadsWithItsMidsides) {
+  const TetMesh mesh = read_tetgen(testing::data_path("tetgen_order2.ele"));
+  ASSERT_EQ(mesh.num_tets(), 1u);
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
+  // kTetEdges order: (0,1) node 7, (1,2) node 8, (0,2) node 10, (0,3) node 6,
+  // (1,3) node 9, (2,3) node 5 (1-based in the file).
+  EXPECT_EQ(mesh.midsides, (std::vector<index_t>{6, 7, 9, 5, 8, 4}));
+  EXPECT_EQ(testing::largest_midside_offset(mesh), 0);
+}
+
+// TetGen keeps the tets in the .ele file: a bad midside node is named there.
+TEST(SecondOrderIo, TetGenMidsideErrorsNameTheEleFile) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(2, 0.2));
+  mesh.midsides[0] = mesh.tets[5];
+  std::stringstream node, ele;
+  write_tetgen_node(mesh, node);
+  write_tetgen_ele(mesh, ele);
+  const std::string msg =
+      testing::input_error_message([&] { read_tetgen(node, "m.node", ele, "m.ele"); }, "a midside corner");
+  EXPECT_EQ(msg.rfind("m.ele: node ", 0), 0u) << msg;
+  EXPECT_NE(msg.find("is also a corner of tet"), std::string::npos) << msg;
+}
+
 TEST(SecondOrderIo, OtherHigherOrderTypesAreStillRefusedByName) {
   const std::string msh = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n10\n" + nodes_at(kGmshEdges, true) +
                           "$EndNodes\n$Elements\n1\n1 16 2 1 1 1 2 3 4 5 6 7 8\n$EndElements\n";
@@ -197,6 +224,28 @@ TEST(SecondOrderIo, OtherHigherOrderTypesAreStillRefusedByName) {
   const std::string msg = testing::input_error_message([&] { read_gmsh(in, "q.msh"); }, "an 8-node quad");
   EXPECT_NE(msg.find("8-node quadrangle"), std::string::npos) << msg;
   EXPECT_NE(msg.find("10-node tetrahedra, 6-node triangles and 3-node lines are read"), std::string::npos) << msg;
+}
+
+// The fixture's 6-node triangles lie on its boundary: their midside nodes
+// stay with their corners whatever the format keeps of the pins, so TetGen
+// output, which keeps none, loses no pin that matters.
+TEST(SecondOrderIo, BoundaryMidsideNodesAreNoLostPins) {
+  const TetMesh mesh = read_mesh(testing::data_path("gmsh_order2_41.msh"));
+  ASSERT_FALSE(mesh.fixed.empty());
+  for (const std::string& note : output_losses(mesh, "out.node"))
+    EXPECT_EQ(note.find("pinned node"), std::string::npos) << note;
+  // A pinned midside node inside the mesh would be lost.
+  TetMesh inner = mesh;
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(inner.tets, inner.num_nodes(), 1, inner.midsides);
+  const auto free_midside = std::find_if(inner.midsides.begin(), inner.midsides.end(), [&](index_t m) {
+    return !boundary[static_cast<std::size_t>(m)];
+  });
+  ASSERT_NE(free_midside, inner.midsides.end());
+  inner.fixed[static_cast<std::size_t>(*free_midside)] = 1;
+  const std::vector<std::string> notes = output_losses(inner, "out.node");
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) {
+    return n.find("1 pinned node will not be pinned") != std::string::npos;
+  })) << (notes.empty() ? "" : notes.front());
 }
 
 TEST(SecondOrderIo, FormatsWithoutSecondOrderTetsRefuseToWriteThem) {

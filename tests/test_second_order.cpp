@@ -95,6 +95,43 @@ TEST(CurvedTetPins, TheToleranceIsRelativeToTheEdge) {
   }
 }
 
+TEST(CoordinateResolution, TellsRoundedAndFloatCoordinatesFromFullDoubles) {
+  const TetMesh mesh = testing::cube_grid(3, 0.2);
+  const CoordinateResolution full = coordinate_resolution(mesh.xyz);
+  EXPECT_EQ(full.step, 0);
+  EXPECT_EQ(full.relative, 0);
+  std::vector<double> mm = mesh.xyz, singles = mesh.xyz;
+  for (double& v : mm) v = std::round((v + 5400123) * 1000) / 1000;
+  for (double& v : singles) v = static_cast<float>(v + 4321);
+  EXPECT_DOUBLE_EQ(coordinate_resolution(mm).step, 1e-3);
+  EXPECT_EQ(coordinate_resolution(mm).relative, 0);
+  EXPECT_EQ(coordinate_resolution(singles).relative, 0x1p-24);
+  EXPECT_EQ(coordinate_resolution(testing::cube_grid(3).xyz).step, 1);  // a lattice of whole numbers
+}
+
+// Midside nodes that are off their midpoints by the rounding of the file's
+// coordinates alone (stored to the millimetre far from the origin, or as
+// float32) are straight; a real bend is still curved.
+TEST(CurvedTetPins, RoundedCoordinatesAreNotCurves) {
+  const TetMesh exact = testing::with_midsides(testing::cube_grid(3, 0.2));
+  const auto rounded = [&](auto round) {
+    TetMesh mesh = exact;
+    for (double& v : mesh.xyz) v = round(v);
+    return mesh;
+  };
+  const TetMesh mm = rounded([](double v) { return std::round((v + 5400123) * 1000) / 1000; });
+  const TetMesh singles = rounded([](double v) { return static_cast<double>(static_cast<float>(v + 4321)); });
+  for (const TetMesh* mesh : {&mm, &singles}) {
+    // The rounding does move the midside nodes off the midpoints.
+    ASSERT_GT(testing::largest_midside_offset(*mesh), 1e-4);
+    EXPECT_EQ(curved_tet_pins(*mesh).tets, 0u);
+    TetMesh bent = *mesh;
+    const auto at = interior_edge(bent);
+    shift_x(bent, midside_of(bent, at), 0.05 * edge_length(bent, at));
+    EXPECT_GT(curved_tet_pins(bent).tets, 0u);
+  }
+}
+
 TEST(CurvedTetPins, APinnedMidsideNodePinsItsEdgeOnly) {
   TetMesh mesh = testing::with_midsides(testing::cube_grid(3, 0.2));
   const auto at = interior_edge(mesh);
@@ -222,6 +259,29 @@ TEST(SmoothSecondOrder, CornersMoveAsTheFirstOrderMeshAndMidsidesFollow) {
   EXPECT_TRUE(std::equal(first.xyz.begin(), first.xyz.end(), second.xyz.begin()));  // the corners, bit for bit
   EXPECT_TRUE(second.fixed.empty());  // the run's pins are gone again
   EXPECT_LT(testing::largest_midside_offset(second), 1e-12);
+}
+
+// A midside node the mesh pins stays, with its edge's corners, even where
+// no tet is curved.
+TEST(SmoothSecondOrder, APinnedMidsideNodeStays) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(4, 0.3, 11));
+  const auto at = interior_edge(mesh);
+  const auto m = static_cast<std::size_t>(midside_of(mesh, at));
+  const auto a = static_cast<std::size_t>(mesh.tets[4 * at.first + kTetEdges[at.second][0]]);
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  mesh.fixed[m] = 1;
+  ASSERT_EQ(curved_tet_pins(mesh).tets, 0u);
+  // Unpinned, the edge's first corner moves in this run.
+  TetMesh free_run = mesh;
+  free_run.fixed.assign(mesh.num_nodes(), 0);
+  smooth(free_run, serial(), Device::Cpu);
+  ASSERT_NE(free_run.xyz[3 * a], mesh.xyz[3 * a]);
+  const TetMesh before = mesh;
+  const SmoothResult r = smooth(mesh, serial(), Device::Cpu);
+  ASSERT_GT(r.accepted_per_sweep.at(0), 0);
+  for (const std::size_t n : {m, a})
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(mesh.xyz[3 * n + c], before.xyz[3 * n + c]) << "node " << n;
+  EXPECT_EQ(mesh.fixed, before.fixed);
 }
 
 TEST(SmoothSecondOrder, CurvedTetsComeBackUnchanged) {

@@ -62,9 +62,10 @@ void take_line(ReadState& state, const ElementType& type, const std::vector<inde
 }
 
 template <class Source>
-const ElementType& checked_type(Source& src, int type_id) {
+const ElementType& checked_type(Source& src, ReadState& state, int type_id) {
   const ElementType* type = element_type(type_id);
   if (type == nullptr) src.fail(unsupported_element_type(type_id));
+  check_tet_kind(src, state, *type);
   return *type;
 }
 
@@ -121,7 +122,7 @@ void read_elements_v22(AsciiSource& src, ReadState& state) {
   std::vector<index_t> nodes;
   for (std::uint64_t e = 0; e < total; ++e) {
     const long long id = tag_value(src, "element tag");
-    const ElementType& type = checked_type(src, src.int_value("element type"));
+    const ElementType& type = checked_type(src, state, src.int_value("element type"));
     const std::uint64_t tags = src.size_value("number of element tags");
     int physical = 0, elementary = 0, partitions = 0;
     for (std::uint64_t k = 0; k < tags; ++k) {
@@ -141,7 +142,7 @@ void read_elements_v22(BinarySource& src, ReadState& state) {
   src.reservable(total, 8);  // at least an element number and one node
   std::vector<index_t> nodes;
   for (std::uint64_t seen = 0; seen < total;) {
-    const ElementType& type = checked_type(src, src.int_value("element type"));
+    const ElementType& type = checked_type(src, state, src.int_value("element type"));
     const int count = src.int_value("number of elements following");
     const int tags = src.int_value("number of element tags");
     if (count <= 0 || static_cast<std::uint64_t>(count) > total - seen)

@@ -126,6 +126,7 @@ void read_elements_v41(Source& src, ReadState& state) {
     const std::uint64_t count = src.size_value("number of elements in the block");
     const ElementType* type = element_type(type_id);
     if (type == nullptr) src.fail(unsupported_element_type(type_id));
+    if (count > 0) check_tet_kind(src, state, *type);
     if (type->dim != dim)
       src.fail("element type " + std::to_string(type_id) + " (" + type->kind + ") in a block of dimension " +
                std::to_string(dim));

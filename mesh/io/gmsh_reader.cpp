@@ -299,8 +299,6 @@ TetMesh finish(Source& src, ReadState& state, const std::string& source) {
   if (!state.has_nodes) src.fail(state.major == 2 ? "no $Nodes or $ParametricNodes section" : "no $Nodes section");
   if (!state.has_elements) src.fail("no $Elements section");
   if (state.mesh.tets.empty()) src.fail("no tetrahedra (element type 4 or 11): a volume mesh is needed");
-  if (!state.mesh.midsides.empty() && state.mesh.midsides.size() != 6 * state.mesh.num_tets())
-    src.fail("the file mixes 4-node and 10-node tetrahedra; tetsmooth reads meshes of one or the other");
   if (state.major == 4 && (state.has_entities || state.has_partitions)) map_physicals(state);
   if (state.has_partitions) merge_partitions(state);
   if (state.major == 2) gmsh::finish_elements_v22(state);

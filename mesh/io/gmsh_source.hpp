@@ -173,9 +173,22 @@ struct ReadState {
   Entities partitions;  // of $PartitionedEntities: tags distinct from those of `entities`
   std::vector<std::pair<int, std::size_t>> block_of_type;  // element type id -> index in mesh.extras.blocks
   V22Lines v22;
+  int tet_type = 0;  // the type of the first tet read (kTetType or kTet10Type), 0 before it
 
   PassThroughBlock& block_for(const ElementType& type);
 };
+
+// A mesh has 4-node or 10-node tets, not both: fails where the first tet of
+// the other kind is read.
+template <class Source>
+void check_tet_kind(Source& src, ReadState& state, const ElementType& type) {
+  if (!is_tet_type(type.id)) return;
+  if (state.tet_type == 0) state.tet_type = type.id;
+  if (type.id != state.tet_type)
+    src.fail(std::string(type.id == kTetType ? "a 4-node" : "a 10-node") + " tetrahedron after " +
+             (type.id == kTetType ? "10-node" : "4-node") +
+             " ones: tetsmooth reads meshes of 4-node or of 10-node tetrahedra, not both");
+}
 
 // A node or element tag, a size_t in the format, as the long long it is
 // kept in; fails naming `what` when it does not fit.

@@ -187,7 +187,7 @@ TetMesh read_tetgen(std::istream& node, const std::string& node_source, std::ist
   TetMesh mesh;
   const int first = read_tetgen_node(node, node_source, mesh);
   read_tetgen_ele(ele, ele_source, first, mesh);
-  validate_mesh(mesh, node_source);
+  validate_mesh(mesh, node_source, ele_source);
   return mesh;
 }
 

@@ -7,6 +7,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/region_interfaces.hpp"
+#include "mesh/second_order.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
@@ -123,11 +124,15 @@ std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   std::size_t candidates = 0;
   for (std::size_t i = 0; i < mesh.fixed.size(); ++i) candidates += mesh.fixed[i] && !kept[i];
   if (candidates == 0) return 0;  // spares the topology below
-  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes());
+  // What stays in the output: the boundary, kept interfaces and kept pins,
+  // and the midside nodes of edges between such nodes (those of a 6-node
+  // boundary triangle, say).
+  std::vector<std::uint8_t> stays = find_boundary_nodes(mesh.tets, mesh.num_nodes());
   const std::vector<std::uint8_t> interface = kept_interface_nodes(mesh, format);
+  for (std::size_t i = 0; i < stays.size(); ++i) stays[i] = stays[i] || interface[i] != kNotPinned || kept[i];
+  mark_midsides_of_marked_edges(mesh, stays);
   std::size_t lost = 0;
-  for (std::size_t i = 0; i < mesh.fixed.size(); ++i)
-    lost += mesh.fixed[i] && !kept[i] && !boundary[i] && interface[i] == kNotPinned;
+  for (std::size_t i = 0; i < mesh.fixed.size(); ++i) lost += mesh.fixed[i] && !stays[i];
   return lost;
 }
 

@@ -15,7 +15,8 @@ const char* const kExitCodes = R"(Exit status:
   2  usage error: unknown command or option, bad value, unknown file extension
      or model name
   3  bad input: unreadable or malformed mesh file, invalid mesh
-     (node index out of range, non-finite coordinate, no tets)
+     (node index out of range, non-finite coordinate, no tets, 4- and
+     10-node tets mixed, a midside node that is a corner or on two edges)
   4  output error: an output file or report cannot be written
      (no partial file is ever left behind)
   5  device error: --device cuda without a usable GPU, CUDA support not built,
@@ -84,6 +85,10 @@ B, the paper's racy variants, which read neighbours while they move and can
 invert a few tets); the ordinary method always moves and can invert tets in
 concave regions. Prints the quality before and after on stderr.
 
+Second-order (10-node) tets: the corners move, and each midside node moves
+with its edge's corners, keeping its offset from the edge's midpoint; a tet
+with a curved edge keeps its shape (its corners stay put).
+
 Options:
   -o, --output OUT          where to write the smoothed mesh (required); it may be IN,
                             which is replaced only once the whole result is written
@@ -128,6 +133,7 @@ Prints the radius ratio q (min/mean/max, a 10-bin histogram), the number of
 tets with q < 0.1, inverted and degenerate tets, the smallest dihedral angle,
 the mean of the mean-ratio metric, and the K worst tets with their nodes.
 Tet and node indices are 0-based, in file order, whatever the file numbers.
+Second-order (10-node) tets are measured by their corner tets.
 
 Options:
   --json            print JSON instead of text (to stdout)

@@ -66,6 +66,8 @@ nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const Sm
           {"node_evaluations", r.evaluations},
           {"colours", r.num_colours},
           {"movable_nodes", r.movable_nodes},
+          {"second_order_restarts", r.second_order_restarts},
+          {"folded_tets", r.folded_tets},
           {"mean_edge_length", r.mean_edge_length},
           {"timings_ms",
            {{"read", record.read_ms},

@@ -185,6 +185,11 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   progress.finish();
 
   const SmoothResult& r = record.result;
+  if (r.second_order_restarts > 0)
+    console.note(counted(r.folded_tets, "second-order tet", "second-order tets") +
+                 " with midside nodes off their edges' midpoints would have folded (a Jacobian turning "
+                 "non-positive): " + (r.folded_tets == 1 ? "its" : "their") + " corners stay, and smoothing started "
+                 "again " + counted(static_cast<std::size_t>(r.second_order_restarts), "time", "times"));
   if (r.after.inverted > r.before.inverted) {
     record.warnings.push_back(inversion_warning(c, record.device, r.after.inverted - r.before.inverted));
     console.warn(record.warnings.back());

@@ -104,6 +104,11 @@ struct SmoothResult {
   std::vector<std::pair<std::string, double>> phase_ms;
   QualitySummary before, after;
   std::string backend;  // "cpu-serial", "cpu-threads", "cuda"
+  // Second-order meshes (smooth_second_order): how many times the run
+  // started again, and the tets whose folding made it (their corners then
+  // stayed). The rest of the result is the last run's.
+  int second_order_restarts = 0;
+  std::size_t folded_tets = 0;
 };
 
 const char* to_string(Method m);

@@ -43,6 +43,16 @@ bool multiples_of(const std::vector<double>& values, double step) {
   return true;
 }
 
+// Whether every value has at most `digits` significant decimal digits.
+bool significant_digits(const std::vector<double>& values, int digits) {
+  for (double v : values) {
+    if (v == 0) continue;
+    const double q = v / std::pow(10.0, std::floor(std::log10(std::abs(v))) - digits + 1);
+    if (std::abs(q - std::nearbyint(q)) > 1e-3) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 CoordinateResolution coordinate_resolution(const std::vector<double>& xyz) {
@@ -50,8 +60,15 @@ CoordinateResolution coordinate_resolution(const std::vector<double>& xyz) {
   const auto in_float = [](double v) {
     return std::abs(v) <= std::numeric_limits<float>::max() && static_cast<double>(static_cast<float>(v)) == v;
   };
-  if (std::all_of(xyz.begin(), xyz.end(), in_float))
-    res.relative = 0x1p-24;
+  if (std::all_of(xyz.begin(), xyz.end(), in_float)) res.relative = 0x1p-24;
+  // Fewest digits first; a file of full double precision fails each count
+  // within its first few values. Past 12 digits the rounding is too small
+  // to matter.
+  for (int digits = 1; digits <= 12; ++digits)
+    if (significant_digits(xyz, digits)) {
+      res.relative = std::max(res.relative, 0.5 * std::pow(10.0, 1 - digits));
+      break;
+    }
   // Coarsest first, so that the step found is the largest that fits; a
   // file of full double precision fails each within its first few values.
   for (double step = 1; step >= 0.99e-9; step /= 10)
@@ -84,6 +101,66 @@ CurvedTetPins curved_tet_pins(const TetMesh& mesh) {
   return pins;
 }
 
+namespace {
+
+// A tet's corners and its midside nodes' offsets from their edges'
+// midpoints: x(λ) = Σ λ_i x_i + Σ_e 4 λ_a λ_b offset_e, the quadratic map
+// in barycentric coordinates λ.
+struct QuadraticTet {
+  Vec3<double> corner[4];
+  Vec3<double> offset[6];
+  bool straight = true;  // every offset exactly zero
+};
+
+QuadraticTet quadratic_tet(const TetMesh& mesh, const std::vector<double>& xyz, std::size_t t) {
+  QuadraticTet q;
+  for (int k = 0; k < 4; ++k) q.corner[k] = point(xyz, mesh.tets[4 * t + static_cast<std::size_t>(k)]);
+  for (int e = 0; e < 6; ++e) {
+    const Vec3<double> m = point(xyz, mesh.midsides[6 * t + static_cast<std::size_t>(e)]);
+    q.offset[e] = m - 0.5 * (q.corner[kTetEdges[e][0]] + q.corner[kTetEdges[e][1]]);
+    q.straight = q.straight && q.offset[e].x == 0 && q.offset[e].y == 0 && q.offset[e].z == 0;
+  }
+  return q;
+}
+
+// det(dx/d(r,s,t)) at barycentric coordinates l, with λ1..λ3 = r, s, t and
+// λ0 = 1 - r - s - t.
+double jacobian_at(const QuadraticTet& q, const double (&l)[4]) {
+  static constexpr double kGrad[4][3] = {{-1, -1, -1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Vec3<double> column[3];
+  for (int j = 0; j < 3; ++j) {
+    column[j] = q.corner[j + 1] - q.corner[0];
+    for (int e = 0; e < 6; ++e) {
+      const int a = kTetEdges[e][0], b = kTetEdges[e][1];
+      column[j] = column[j] + 4 * (kGrad[a][j] * l[b] + l[a] * kGrad[b][j]) * q.offset[e];
+    }
+  }
+  return dot(column[0], cross(column[1], column[2]));
+}
+
+}  // namespace
+
+double smallest_jacobian(const TetMesh& mesh, const std::vector<double>& xyz, std::size_t t) {
+  const QuadraticTet q = quadratic_tet(mesh, xyz, t);
+  constexpr double kA = 0.5854101966249685, kB = 0.1381966011250105;  // the 4-point Gauss rule
+  static constexpr double kPoints[15][4] = {
+      {1, 0, 0, 0},     {0, 1, 0, 0},     {0, 0, 1, 0},     {0, 0, 0, 1},     {.5, .5, 0, 0},
+      {0, .5, .5, 0},   {.5, 0, .5, 0},   {.5, 0, 0, .5},   {0, .5, 0, .5},   {0, 0, .5, .5},
+      {.25, .25, .25, .25}, {kA, kB, kB, kB}, {kB, kA, kB, kB}, {kB, kB, kA, kB}, {kB, kB, kB, kA}};
+  double smallest = jacobian_at(q, kPoints[0]);
+  for (const auto& l : kPoints) smallest = std::min(smallest, jacobian_at(q, l));
+  return smallest;
+}
+
+std::vector<std::size_t> folded_tets(const TetMesh& mesh, const std::vector<double>& before) {
+  std::vector<std::size_t> folded;
+  for (std::size_t t = 0; t < mesh.num_tets() && !mesh.midsides.empty(); ++t) {
+    if (quadratic_tet(mesh, before, t).straight) continue;
+    if (smallest_jacobian(mesh, before, t) > 0 && !(smallest_jacobian(mesh, mesh.xyz, t) > 0)) folded.push_back(t);
+  }
+  return folded;
+}
+
 void carry_midside_nodes(TetMesh& mesh, const std::vector<double>& before) {
   std::vector<std::uint8_t> done(mesh.num_nodes(), 0);
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
@@ -103,6 +180,22 @@ void carry_midside_nodes(TetMesh& mesh, const std::vector<double>& before) {
   }
 }
 
+void append_file_tet(TetMesh& mesh, const index_t* nodes, bool ten, const MidsidePlaces& places) {
+  mesh.tets.insert(mesh.tets.end(), nodes, nodes + 4);
+  if (ten)
+    for (int place : places) mesh.midsides.push_back(nodes[place]);
+}
+
+void file_tet10(const TetMesh& mesh, std::size_t t, const MidsidePlaces& places, index_t* out) {
+  std::copy(&mesh.tets[4 * t], &mesh.tets[4 * t] + 4, out);
+  for (int e = 0; e < 6; ++e) out[places[e]] = mesh.midsides[6 * t + static_cast<std::size_t>(e)];
+}
+
+std::string mixed_tet_kinds(int nodes) {
+  return std::string(nodes == 4 ? "a 4-node tet after 10-node ones" : "a 10-node tet after 4-node ones") +
+         ": tetsmooth reads meshes of 4-node or of 10-node tets, not both";
+}
+
 void mark_midsides_of_marked_edges(const TetMesh& mesh, std::vector<std::uint8_t>& flags) {
   for (std::size_t t = 0; t < mesh.num_tets() && !mesh.midsides.empty(); ++t)
     for (int e = 0; e < 6; ++e)
@@ -113,7 +206,8 @@ void mark_midsides_of_marked_edges(const TetMesh& mesh, std::vector<std::uint8_t
 
 void check_first_order_output(const TetMesh& mesh, const std::string& format) {
   if (!mesh.midsides.empty())
-    throw OutputError(format + " output holds 4-node tets only; write MSH, VTU, VTK or TetGen to keep the 10-node tets");
+    throw OutputError(format +
+                      " output holds 4-node tets only; write MSH, VTU, VTK or TetGen to keep the 10-node tets");
 }
 
 }  // namespace tetsmooth

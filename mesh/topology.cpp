@@ -178,8 +178,9 @@ std::vector<std::uint8_t> find_boundary_nodes(const std::vector<index_t>& tets, 
     if (midsides.empty()) continue;
     // The face's three edges are the tet's edges without the opposite node.
     const auto t = static_cast<std::size_t>(uses[first].tet);
+    const index_t opposite = uses[first].opposite;
     for (int e = 0; e < 6; ++e)
-      if (tets[4 * t + kTetEdges[e][0]] != uses[first].opposite && tets[4 * t + kTetEdges[e][1]] != uses[first].opposite)
+      if (tets[4 * t + kTetEdges[e][0]] != opposite && tets[4 * t + kTetEdges[e][1]] != opposite)
         boundary[static_cast<std::size_t>(midsides[6 * t + static_cast<std::size_t>(e)])] = 1;
   }
   return boundary;

@@ -21,12 +21,13 @@ struct ValidationReport {
 };
 
 // Throws InputError (naming `source` and the offending tet or node) when a
-// node index is out of range, a coordinate is not finite, the arrays have the
-// wrong shape, there are no tets, or a midside node of a second-order tet
-// is also a corner or the midside node of another edge. Inverted and degenerate tets are counted,
-// not rejected: the caller decides whether to warn. Errors in the tets,
-// midside nodes and other elements name `element_source` instead where it
-// is given (TetGen keeps them in the .ele file, the nodes in the .node).
+// node index is out of range, a coordinate is not finite, the arrays have
+// the wrong shape, there are no tets, or a midside node of a second-order
+// tet is also a corner or the midside node of another edge. Inverted and
+// degenerate tets are counted, not rejected: the caller decides whether to
+// warn. Errors in the tets, midside nodes and other elements name
+// `element_source` instead where it is given (TetGen keeps them in the .ele
+// file, the nodes in the .node).
 ValidationReport validate_mesh(const TetMesh& mesh, const std::string& source = "mesh",
                                const std::string& element_source = "");
 

@@ -1282,8 +1282,10 @@ TEST_F(CliFiles, CurvedSecondOrderTetsKeepTheirShape) {
       ++bent;
     }
   ASSERT_GT(bent, 0u);
-  std::size_t interior = 0;  // of the bent tets' corners: the lattice's interior has 1 <= i, j, k <= 3
-  for (index_t n : corners) interior += n % 5 >= 1 && n % 5 <= 3 && n / 5 % 5 >= 1 && n / 5 % 5 <= 3 && n / 25 >= 1 && n / 25 <= 3;
+  // Of the bent tets' corners, those inside the lattice: 1 <= i, j, k <= 3.
+  const auto inside = [](index_t i) { return i >= 1 && i <= 3; };
+  std::size_t interior = 0;
+  for (index_t n : corners) interior += inside(n % 5) && inside(n / 5 % 5) && inside(n / 25);
   write_mesh(mesh, path("curved.msh"));
   const CliRun r =
       run({"smooth", path("curved.msh"), "-o", path("out.vtu"), "--device", "cpu", "--report", path("r.json")});

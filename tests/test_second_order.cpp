@@ -6,14 +6,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "input_error.hpp"
+#include "kernels/second_order_smoothing.hpp"
 #include "kernels/smoother.hpp"
 #include "mesh/second_order.hpp"
+#include "mesh/tet_quality.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/validate.hpp"
 #include "support/test_meshes.hpp"
@@ -100,12 +105,18 @@ TEST(CoordinateResolution, TellsRoundedAndFloatCoordinatesFromFullDoubles) {
   const CoordinateResolution full = coordinate_resolution(mesh.xyz);
   EXPECT_EQ(full.step, 0);
   EXPECT_EQ(full.relative, 0);
-  std::vector<double> mm = mesh.xyz, singles = mesh.xyz;
+  std::vector<double> mm = mesh.xyz, singles = mesh.xyz, six_digits = mesh.xyz;
   for (double& v : mm) v = std::round((v + 5400123) * 1000) / 1000;
   for (double& v : singles) v = static_cast<float>(v + 4321);
+  for (double& v : six_digits) {  // as C's %g prints them
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", (v + 0.37) * 1000);
+    v = std::strtod(text, nullptr);
+  }
   EXPECT_DOUBLE_EQ(coordinate_resolution(mm).step, 1e-3);
-  EXPECT_EQ(coordinate_resolution(mm).relative, 0);
+  EXPECT_DOUBLE_EQ(coordinate_resolution(mm).relative, 0.5e-9);  // 10 significant digits
   EXPECT_EQ(coordinate_resolution(singles).relative, 0x1p-24);
+  EXPECT_DOUBLE_EQ(coordinate_resolution(six_digits).relative, 0.5e-5);
   EXPECT_EQ(coordinate_resolution(testing::cube_grid(3).xyz).step, 1);  // a lattice of whole numbers
 }
 
@@ -121,7 +132,12 @@ TEST(CurvedTetPins, RoundedCoordinatesAreNotCurves) {
   };
   const TetMesh mm = rounded([](double v) { return std::round((v + 5400123) * 1000) / 1000; });
   const TetMesh singles = rounded([](double v) { return static_cast<double>(static_cast<float>(v + 4321)); });
-  for (const TetMesh* mesh : {&mm, &singles}) {
+  const TetMesh six_digits = rounded([](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", (v + 0.37) * 1000);
+    return std::strtod(text, nullptr);
+  });
+  for (const TetMesh* mesh : {&mm, &singles, &six_digits}) {
     // The rounding does move the midside nodes off the midpoints.
     ASSERT_GT(testing::largest_midside_offset(*mesh), 1e-4);
     EXPECT_EQ(curved_tet_pins(*mesh).tets, 0u);
@@ -129,6 +145,19 @@ TEST(CurvedTetPins, RoundedCoordinatesAreNotCurves) {
     const auto at = interior_edge(bent);
     shift_x(bent, midside_of(bent, at), 0.05 * edge_length(bent, at));
     EXPECT_GT(curved_tet_pins(bent).tets, 0u);
+  }
+}
+
+// A lattice of whole numbers has midside nodes on multiples of 0.1, which
+// coordinate_resolution cannot tell from rounding; at most 1% of an edge is
+// put down to it, so a 2% bend still counts and a 0.5% one does not.
+TEST(CurvedTetPins, RoundingExplainsAtMostAHundredthOfAnEdge) {
+  for (const double bend : {0.02, 0.005}) {
+    TetMesh mesh = testing::with_midsides(testing::cube_grid(3));
+    ASSERT_GT(coordinate_resolution(mesh.xyz).step, 0.01);
+    const auto at = interior_edge(mesh);
+    shift_x(mesh, midside_of(mesh, at), bend * edge_length(mesh, at));
+    EXPECT_EQ(curved_tet_pins(mesh).tets > 0, bend > 0.01) << bend;
   }
 }
 
@@ -303,6 +332,114 @@ TEST(SmoothSecondOrder, CurvedTetsComeBackUnchanged) {
     for (int k = 0; k < 4; ++k) EXPECT_TRUE(same_node(mesh.tets[4 * t + k])) << "tet " << t;
     for (int e = 0; e < 6; ++e) EXPECT_TRUE(same_node(mesh.midsides[6 * t + static_cast<std::size_t>(e)])) << t;
   }
+}
+
+// --- the Jacobian guard -----------------------------------------------------
+
+TEST(SmallestJacobian, IsSixTimesTheVolumeForAStraightTet) {
+  const TetMesh mesh = testing::with_midsides(testing::cube_grid(2, 0.2));
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    const auto p = [&](int k) {
+      const double* x = &mesh.xyz[3 * static_cast<std::size_t>(mesh.tets[4 * t + static_cast<std::size_t>(k)])];
+      return Vec3<double>{x[0], x[1], x[2]};
+    };
+    const double v6 = signed_volume6(p(0), p(1), p(2), p(3));
+    EXPECT_NEAR(smallest_jacobian(mesh, mesh.xyz, t), v6, 1e-12 * std::abs(v6)) << t;
+  }
+}
+
+TEST(SmallestJacobian, TurnsNegativeWhenAMidsideNodeFoldsTheTet) {
+  TetMesh mesh = testing::with_midsides(testing::regular_tet());
+  const double before = smallest_jacobian(mesh, mesh.xyz, 0);
+  ASSERT_GT(before, 0);
+  // Edge (0,1)'s midside node pushed past the opposite edge's midpoint.
+  const auto m = static_cast<std::size_t>(mesh.midsides[0]), c = static_cast<std::size_t>(mesh.midsides[5]);
+  for (std::size_t k = 0; k < 3; ++k) mesh.xyz[3 * m + k] += 1.2 * (mesh.xyz[3 * c + k] - mesh.xyz[3 * m + k]);
+  EXPECT_LT(smallest_jacobian(mesh, mesh.xyz, 0), 0);
+}
+
+// A second-order grid whose interior edge (a, b) has its midside node off
+// the midpoint by half the straight-edge tolerance: straight for the pins,
+// but no longer exactly.
+struct SlightlyBent {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(3, 0.2));
+  std::pair<std::size_t, int> at = interior_edge(mesh);
+  index_t a = mesh.tets[4 * at.first + kTetEdges[at.second][0]];
+  index_t b = mesh.tets[4 * at.first + kTetEdges[at.second][1]];
+  SlightlyBent() { shift_x(mesh, midside_of(mesh, at), 0.5 * kStraightEdgeTolerance * edge_length(mesh, at)); }
+};
+
+// A stand-in smoother that moves node n, unless it is pinned, twice its
+// distance to node `to` along that line (past `to`): the tets on edge
+// (n, to) fold. Counts its runs.
+struct FoldingRun {
+  TetMesh& mesh;
+  index_t n, to;
+  int runs = 0;
+  SmoothResult operator()() {
+    ++runs;
+    const auto i = static_cast<std::size_t>(n), j = static_cast<std::size_t>(to);
+    if (mesh.fixed.empty() || !mesh.fixed[i])
+      for (std::size_t c = 0; c < 3; ++c) mesh.xyz[3 * i + c] += 2 * (mesh.xyz[3 * j + c] - mesh.xyz[3 * i + c]);
+    return {};
+  }
+};
+
+TEST(SmoothSecondOrderGuard, AFoldedTetKeepsItsCornersAndTheRunStartsAgain) {
+  SlightlyBent bent;
+  TetMesh& mesh = bent.mesh;
+  ASSERT_EQ(curved_tet_pins(mesh).tets, 0u);
+  const std::vector<double> input = mesh.xyz;
+  FoldingRun run{mesh, bent.a, bent.b};
+  const SmoothResult r = smooth_second_order(mesh, std::ref(run));
+  EXPECT_EQ(run.runs, 2);
+  EXPECT_EQ(r.second_order_restarts, 1);
+  EXPECT_GT(r.folded_tets, 0u);
+  EXPECT_EQ(mesh.xyz, input);  // node a was pinned, and nothing else moves
+  EXPECT_TRUE(mesh.fixed.empty());
+  EXPECT_TRUE(folded_tets(mesh, input).empty());
+}
+
+TEST(SmoothSecondOrderGuard, ExactlyStraightTetsAreLeftToTheSmoother) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(3, 0.2));
+  const auto at = interior_edge(mesh);
+  FoldingRun run{mesh, mesh.tets[4 * at.first + kTetEdges[at.second][0]],
+                 mesh.tets[4 * at.first + kTetEdges[at.second][1]]};
+  const SmoothResult r = smooth_second_order(mesh, std::ref(run));
+  EXPECT_EQ(run.runs, 1);  // the corner tets fold, which is the smoother's to judge
+  EXPECT_EQ(r.second_order_restarts, 0);
+}
+
+TEST(SmoothSecondOrderGuard, TheCallersPinsComeBackWhenTheRunThrows) {
+  SlightlyBent bent;
+  bent.mesh.fixed.assign(bent.mesh.num_nodes(), 0);
+  bent.mesh.fixed[0] = 1;
+  const std::vector<std::uint8_t> pins = bent.mesh.fixed;
+  bent.mesh.xyz[3 * static_cast<std::size_t>(midside_of(bent.mesh, bent.at))] += 1;  // a curved tet: more pins
+  EXPECT_THROW(smooth_second_order(bent.mesh, []() -> SmoothResult { throw std::runtime_error("device lost"); }),
+               std::runtime_error);
+  EXPECT_EQ(bent.mesh.fixed, pins);
+}
+
+// Every midside node a little off: a run that folds whatever it may move
+// still ends, within kMaxRestarts restarts, with nothing folded.
+TEST(SmoothSecondOrderGuard, EndsWhenEveryTetCouldFold) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(3, 0.2));
+  for (index_t m : mesh.midsides) mesh.xyz[3 * static_cast<std::size_t>(m)] += 1e-6;
+  const std::vector<double> input = mesh.xyz;
+  // Moves every corner that may move past its neighbours.
+  const auto fold_all = [&]() {
+    const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes());
+    for (index_t corner : std::set<index_t>(mesh.tets.begin(), mesh.tets.end())) {
+      const auto i = static_cast<std::size_t>(corner);
+      if (!boundary[i] && !mesh.fixed[i]) mesh.xyz[3 * i] += 3.0;
+    }
+    return SmoothResult{};
+  };
+  const SmoothResult r = smooth_second_order(mesh, fold_all);
+  EXPECT_LE(r.second_order_restarts, kMaxRestarts);
+  EXPECT_GT(r.second_order_restarts, 0);
+  EXPECT_TRUE(folded_tets(mesh, input).empty());
 }
 
 }  // namespace

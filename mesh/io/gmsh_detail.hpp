@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/second_order.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::gmsh {
@@ -30,15 +31,11 @@ inline bool is_tet_type(int id) { return id == kTetType || id == kTet10Type; }
 
 // Where Gmsh's 10-node tetrahedron puts the midside node of each edge of
 // kTetEdges: its last two midside nodes are VTK's the other way round.
-inline constexpr int kGmshTet10Midsides[6] = {4, 5, 6, 7, 9, 8};
-
-// Appends a tet of `type` (4 or 10 nodes in Gmsh's order) to mesh.tets and,
-// for 10 nodes, mesh.midsides.
-void append_tet(TetMesh& mesh, const ElementType& type, const index_t* nodes);
+inline constexpr MidsidePlaces kGmshMidsidePlaces = {4, 5, 6, 7, 9, 8};
 
 const ElementType* element_type(int id);                           // nullptr if not handled
 const ElementType* element_type_of_kind(const std::string& kind);  // nullptr if none
-// "unsupported element type 11 (10-node tetrahedron)"; the name is left out
+// "unsupported element type 17 (20-node hexahedron)"; the name is left out
 // for ids Gmsh does not define either.
 std::string unsupported_element_type(int id);
 

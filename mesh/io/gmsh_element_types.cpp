@@ -58,10 +58,4 @@ std::string unsupported_element_type(int id) {
   return what;
 }
 
-void append_tet(TetMesh& mesh, const ElementType& type, const index_t* nodes) {
-  mesh.tets.insert(mesh.tets.end(), nodes, nodes + 4);
-  if (type.id == kTet10Type)
-    for (int place : kGmshTet10Midsides) mesh.midsides.push_back(nodes[place]);
-}
-
 }  // namespace tetsmooth::gmsh

@@ -16,7 +16,7 @@ void add_element(ReadState& state, const ElementType& type, const std::vector<in
                  int physical, int elementary) {
   FileExtras& extras = state.mesh.extras;
   if (is_tet_type(type.id)) {
-    append_tet(state.mesh, type, nodes.data());
+    append_file_tet(state.mesh, nodes.data(), type.id == kTet10Type, kGmshMidsidePlaces);
     extras.tet_tags.push_back(physical);
     extras.tet_entity_tags.push_back(elementary);
     extras.tet_element_tags.push_back(id);
@@ -200,7 +200,16 @@ void finish_elements_v22(ReadState& state) {
       builder.add(dim, entities[e], state.mesh.xyz.data(), &connectivity[e * static_cast<std::size_t>(nodes)], nodes)
           .physicals = lines.entities.at({dim, entities[e]}).physicals;
   };
-  add(3, extras.tet_entity_tags, state.mesh.tets, 4);
+  // A volume's box takes in its midside nodes, which a curved boundary
+  // puts outside its corners'.
+  const TetMesh& mesh = state.mesh;
+  if (mesh.midsides.empty()) {
+    add(3, extras.tet_entity_tags, mesh.tets, 4);
+  } else {
+    std::vector<index_t> tet10(10 * mesh.num_tets());
+    for (std::size_t t = 0; t < mesh.num_tets(); ++t) file_tet10(mesh, t, kGmshMidsidePlaces, &tet10[10 * t]);
+    add(3, extras.tet_entity_tags, tet10, 10);
+  }
   for (const PassThroughBlock& block : extras.blocks) {
     const ElementType* type = element_type_of_kind(block.kind);
     add(type->dim, block.entity_tags, block.connectivity, type->nodes);

@@ -148,7 +148,7 @@ void read_elements_v41(Source& src, ReadState& state) {
       const long long id = tag_value(src, "element tag");
       for (index_t& n : nodes) n = node_index(src, state, src.size_value("node tag"));
       if (tet) {
-        append_tet(mesh, *type, nodes.data());
+        append_file_tet(mesh, nodes.data(), type->id == kTet10Type, kGmshMidsidePlaces);
         mesh.extras.tet_entity_tags.push_back(entity);
         mesh.extras.tet_element_tags.push_back(id);
       } else {

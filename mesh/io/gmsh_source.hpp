@@ -184,10 +184,7 @@ template <class Source>
 void check_tet_kind(Source& src, ReadState& state, const ElementType& type) {
   if (!is_tet_type(type.id)) return;
   if (state.tet_type == 0) state.tet_type = type.id;
-  if (type.id != state.tet_type)
-    src.fail(std::string(type.id == kTetType ? "a 4-node" : "a 10-node") + " tetrahedron after " +
-             (type.id == kTetType ? "10-node" : "4-node") +
-             " ones: tetsmooth reads meshes of 4-node or of 10-node tetrahedra, not both");
+  if (type.id != state.tet_type) src.fail(mixed_tet_kinds(type.nodes));
 }
 
 // A node or element tag, a size_t in the format, as the long long it is

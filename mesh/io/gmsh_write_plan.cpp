@@ -43,12 +43,7 @@ std::vector<ElementGroup> given_groups(const TetMesh& mesh) {
   } else {
     tets.type = element_type(kTet10Type);
     tets.owned.resize(10 * tets.count);
-    for (std::size_t t = 0; t < tets.count; ++t) {
-      index_t* out = &tets.owned[10 * t];
-      std::copy(&mesh.tets[4 * t], &mesh.tets[4 * t] + 4, out);
-      for (int e = 0; e < 6; ++e) out[kGmshTet10Midsides[e]] = mesh.midsides[6 * t + static_cast<std::size_t>(e)];
-    }
-    tets.connectivity = tets.owned.data();
+    for (std::size_t t = 0; t < tets.count; ++t) file_tet10(mesh, t, kGmshMidsidePlaces, &tets.owned[10 * t]);
   }
   if (extras.tet_entity_tags.size() == tets.count) tets.entity = extras.tet_entity_tags;
   if (extras.tet_tags.size() == tets.count) tets.physical = physical_of(extras.tet_tags);
@@ -148,7 +143,7 @@ void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, Write
       const int tag = entity_tag(dim, given, p);
       entity[e] = tag;
       physical[e] = p;
-      Entity& x = builder.add(dim, tag, mesh.xyz.data(), &g.connectivity[e * static_cast<std::size_t>(nodes)], nodes);
+      Entity& x = builder.add(dim, tag, mesh.xyz.data(), &g.nodes()[e * static_cast<std::size_t>(nodes)], nodes);
       if (p > 0 && std::find(x.physicals.begin(), x.physicals.end(), p) == x.physicals.end()) x.physicals.push_back(p);
     }
     g.entity = std::move(entity);
@@ -178,7 +173,7 @@ void classify_nodes(const TetMesh& mesh, const std::vector<ElementGroup>& groups
   for (const ElementGroup& g : groups) {
     const std::size_t entries = g.count * static_cast<std::size_t>(g.type->nodes);
     for (std::size_t k = 0; k < entries; ++k) {
-      const auto node = static_cast<std::size_t>(g.connectivity[k]);
+      const auto node = static_cast<std::size_t>(g.nodes()[k]);
       if (g.type->dim < best[node]) {
         best[node] = g.type->dim;
         plan.node_dims[node] = g.type->dim;
@@ -192,9 +187,9 @@ void check_indices(const TetMesh& mesh, const std::vector<ElementGroup>& groups)
   for (const ElementGroup& g : groups) {
     const std::size_t entries = g.count * static_cast<std::size_t>(g.type->nodes);
     for (std::size_t k = 0; k < entries; ++k)
-      if (g.connectivity[k] < 0 || static_cast<std::size_t>(g.connectivity[k]) >= mesh.num_nodes())
+      if (g.nodes()[k] < 0 || static_cast<std::size_t>(g.nodes()[k]) >= mesh.num_nodes())
         throw OutputError(std::string("a ") + g.type->kind + " element refers to node " +
-                          std::to_string(g.connectivity[k]) + ", outside the " + std::to_string(mesh.num_nodes()) +
+                          std::to_string(g.nodes()[k]) + ", outside the " + std::to_string(mesh.num_nodes()) +
                           " nodes");
   }
 }

@@ -27,9 +27,9 @@
 namespace tetsmooth::gmsh {
 
 // The tets, or one pass-through block: `count` elements of `type` with
-// `type->nodes` 0-based indices each from `connectivity`, which points into
-// the mesh or, for second-order tets (whose corners and midside nodes the
-// mesh keeps apart), into `owned` (a moved vector keeps its buffer).
+// `type->nodes` 0-based indices each from nodes(): `connectivity` in the
+// mesh, or `owned` where the group builds its own (second-order tets, whose
+// corners and midside nodes the mesh keeps apart).
 struct ElementGroup {
   const ElementType* type = nullptr;
   const index_t* connectivity = nullptr;
@@ -38,12 +38,7 @@ struct ElementGroup {
   std::vector<int> entity;    // per element
   std::vector<int> physical;  // per element, 0 for none
 
-  // Moves only: a copy's `connectivity` would point into the original.
-  ElementGroup() = default;
-  ElementGroup(ElementGroup&&) = default;
-  ElementGroup& operator=(ElementGroup&&) = default;
-  ElementGroup(const ElementGroup&) = delete;
-  ElementGroup& operator=(const ElementGroup&) = delete;
+  const index_t* nodes() const { return owned.empty() ? connectivity : owned.data(); }
 };
 
 struct WritePlan {

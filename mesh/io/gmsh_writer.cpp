@@ -214,7 +214,7 @@ void write_elements_v41(std::ostream& out, Sink& sink, const WritePlan& plan) {
         sink.size(static_cast<std::uint64_t>(plan.element_tags[written++]));
         for (std::size_t k = 0; k < nodes; ++k)
           sink.size(
-              static_cast<std::uint64_t>(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]));
+              static_cast<std::uint64_t>(plan.node_tags[static_cast<std::size_t>(g.nodes()[e * nodes + k])]));
         sink.end_record();
       }
       first = last;
@@ -271,7 +271,7 @@ void write_v22(std::ostream& out, const TetMesh& mesh, const WritePlan& plan, co
         sink.integer(physicals[p]);
         sink.integer(g.entity[e]);
         for (std::size_t k = 0; k < nodes; ++k)
-          sink.integer(plan.node_tags[static_cast<std::size_t>(g.connectivity[e * nodes + k])]);
+          sink.integer(plan.node_tags[static_cast<std::size_t>(g.nodes()[e * nodes + k])]);
         sink.end_record();
       }
     }

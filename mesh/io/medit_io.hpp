@@ -1,7 +1,8 @@
 #pragma once
 // Medit .mesh (ASCII) reading and writing. The reader validates the mesh and
 // throws InputError naming the source and line; the file writer writes
-// atomically (mesh/io/atomic_file.hpp) and throws OutputError.
+// atomically (mesh/io/atomic_file.hpp) and throws OutputError; it refuses
+// second-order tets (Medit's P2 sections are neither read nor written).
 #include <iosfwd>
 #include <string>
 

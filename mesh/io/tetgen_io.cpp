@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/input_file.hpp"
 #include "mesh/io/number_text.hpp"
@@ -17,9 +18,9 @@ namespace {
 
 // Where TetGen's 10-node tets (its -o2 switch) put the midside node of each
 // edge of kTetEdges: TetGen lists the edges (2,3), (0,3), (0,1), (1,2),
-// (1,3), (0,2), as libtet 1.5 gives them (tests/test_io_tetgen.cpp checks
-// this against libtet).
-constexpr int kTetGenMidsides[6] = {6, 7, 9, 5, 8, 4};
+// (1,3), (0,2), as libtet 1.5 gives them (TetGenOrderIsLibtets in
+// tests/test_io_second_order.cpp checks this against libtet).
+constexpr MidsidePlaces kTetGenMidsidePlaces = {6, 7, 9, 5, 8, 4};
 
 bool ends_with(const std::string& s, const std::string& suffix) {
   return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -146,7 +147,7 @@ int read_tetgen_node(std::istream& in, const std::string& source, TetMesh& mesh)
 
 void read_tetgen_ele(std::istream& in, const std::string& source, int first_index, TetMesh& mesh) {
   TextLines lines(in, source);
-  lines.require_line("the .ele header \"<#tets> 4 <#attributes>\"");
+  lines.require_line("the .ele header \"<#tets> <4|10> <#attributes>\"");
   const std::size_t count = count_field(lines, 0, "tet count");
   if (count == 0) lines.fail("the .ele file declares no tets");
   const long long per_tet = lines.size() > 1 ? lines.integer(1, "nodes per tet") : 4;
@@ -172,9 +173,7 @@ void read_tetgen_ele(std::istream& in, const std::string& source, int first_inde
                    std::to_string(num_nodes + first_index) + ")");
       tet[k] = static_cast<index_t>(node - first_index);
     }
-    mesh.tets.insert(mesh.tets.end(), tet, tet + 4);
-    if (nodes == 10)
-      for (int place : kTetGenMidsides) mesh.midsides.push_back(tet[place]);
+    append_file_tet(mesh, tet, nodes == 10, kTetGenMidsidePlaces);
     for (std::size_t k = 0; k < attrs; ++k)
       attributes.push_back(lines.real(1 + nodes + k, k == 0 ? "region attribute" : "tet attribute"));
   }
@@ -235,9 +234,10 @@ void write_tetgen_ele(const TetMesh& mesh, std::ostream& out) {
   index_t tet[10];
   for (std::size_t e = 0; e < t; ++e) {
     put_integer(out, static_cast<long long>(e) + 1);
-    std::copy(&mesh.tets[4 * e], &mesh.tets[4 * e] + 4, tet);
     if (second_order)
-      for (int k = 0; k < 6; ++k) tet[kTetGenMidsides[k]] = mesh.midsides[6 * e + static_cast<std::size_t>(k)];
+      file_tet10(mesh, e, kTetGenMidsidePlaces, tet);
+    else
+      std::copy(&mesh.tets[4 * e], &mesh.tets[4 * e] + 4, tet);
     for (int k = 0; k < (second_order ? 10 : 4); ++k) {
       out << ' ';
       put_integer(out, static_cast<long long>(tet[k]) + 1);

@@ -1,7 +1,8 @@
 #pragma once
 // The tetsmooth binary cache (.tsm): node coordinates and tets only, for
 // reloading generated meshes fast (bench_smooth). Not an exchange format:
-// extras, fixed flags and fields are not stored.
+// extras, fixed flags and fields are not stored, and second-order tets are
+// refused on writing.
 //
 // Layout, all little-endian, no padding:
 //   offset 0    8 bytes   magic 89 'T' 'S' 'M' 0D 0A 1A 0A (catches text-mode

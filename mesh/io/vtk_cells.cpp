@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -107,9 +108,12 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
   const std::size_t per_tet = second_order ? 10 : 4;
   cells.connectivity.reserve(per_tet * mesh.num_tets());
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
-    cells.connectivity.insert(cells.connectivity.end(), &mesh.tets[4 * t], &mesh.tets[4 * t] + 4);
-    if (second_order)
-      cells.connectivity.insert(cells.connectivity.end(), &mesh.midsides[6 * t], &mesh.midsides[6 * t] + 6);
+    if (second_order) {
+      cells.connectivity.resize(cells.connectivity.size() + 10);
+      file_tet10(mesh, t, kVtkMidsidePlaces, &cells.connectivity[cells.connectivity.size() - 10]);
+    } else {
+      cells.connectivity.insert(cells.connectivity.end(), &mesh.tets[4 * t], &mesh.tets[4 * t] + 4);
+    }
   }
   cells.offsets.reserve(total + 1);
   cells.types.reserve(total);
@@ -191,11 +195,10 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
                   std::to_string(expected));
     if (tet) {
       if (tet_type < 0) tet_type = type;
-      if (type != tet_type)
-        fail(c, "a " + vtk_cell_type_name(type) + " after a " + vtk_cell_type_name(tet_type) +
-                    ": tetsmooth reads meshes of 4-node or of 10-node tets, not both");
-      for (long long k = begin; k < begin + 4; ++k) mesh.tets.push_back(static_cast<index_t>(connectivity[k]));
-      for (long long k = begin + 4; k < end; ++k) mesh.midsides.push_back(static_cast<index_t>(connectivity[k]));
+      if (type != tet_type) fail(c, mixed_tet_kinds(static_cast<int>(expected)));
+      index_t nodes[10];
+      for (long long k = begin; k < end; ++k) nodes[k - begin] = static_cast<index_t>(connectivity[k]);
+      append_file_tet(mesh, nodes, expected == 10, kVtkMidsidePlaces);
       if (!tags.empty()) mesh.extras.tet_tags.push_back(tags[c]);
       if (!entities.empty()) mesh.extras.tet_entity_tags.push_back(entities[c]);
       continue;

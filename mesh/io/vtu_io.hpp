@@ -3,8 +3,9 @@
 //
 // Writing: version 1.0, header_type UInt64, little-endian, every array in one
 // raw appended block. Points Float64; connectivity Int32, offsets Int64,
-// types UInt8 (tetra 10, then pass-through blocks as vertex 1, line 3,
-// triangle 5, quad 9; see vtk_cells.hpp). MeshFields::node_scalars become
+// types UInt8 (tetra 10, or quadratic tetra 24 for second-order tets, then
+// pass-through blocks as vertex 1, line 3, triangle 5, quad 9, quadratic
+// edge 21 or quadratic triangle 22; see vtk_cells.hpp). MeshFields::node_scalars become
 // Float64 PointData, tet_scalars Float64 CellData holding NaN on the
 // pass-through cells (NaN, not 0, so a viewer shows "no value" rather than a
 // plausible one). Tags are written as Int32 CellData "tetsmooth:tag" and
@@ -15,7 +16,8 @@
 // any numeric type; binary data uncompressed or compressed with
 // vtkZLibDataCompressor or vtkLZMADataCompressor (vtu_blocks.hpp), other
 // compressors (vtkLZ4DataCompressor) rejected with a message naming them.
-// Cells must be tetra, or vertex/line/triangle/quad, which are passed
+// Cells must be tetra or quadratic tetra (not both), or vertex, line,
+// triangle, quad, quadratic edge or quadratic triangle, which are passed
 // through with their nodes fixed. Region tags come from one cell-data array
 // (tetsmooth:tag, or another tool's name for them: vtk_arrays.hpp) and fixed
 // nodes from tetsmooth:fixed; every other PointData and CellData array is

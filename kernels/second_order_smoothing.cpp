@@ -29,17 +29,7 @@ void pin_corners(const TetMesh& mesh, std::size_t t, std::vector<std::uint8_t>& 
 // The corners of every tet with a midside node off its edge's midpoint.
 void pin_every_offset_tet(const TetMesh& mesh, const std::vector<double>& input, std::vector<std::uint8_t>& pins) {
   for (std::size_t t = 0; t < mesh.num_tets(); ++t)
-    for (int e = 0; e < 6; ++e) {
-      const auto m = 3 * static_cast<std::size_t>(mesh.midsides[6 * t + static_cast<std::size_t>(e)]);
-      const auto a = 3 * static_cast<std::size_t>(mesh.tets[4 * t + kTetEdges[e][0]]);
-      const auto b = 3 * static_cast<std::size_t>(mesh.tets[4 * t + kTetEdges[e][1]]);
-      bool off = false;
-      for (std::size_t c = 0; c < 3; ++c) off = off || input[m + c] != 0.5 * (input[a + c] + input[b + c]);
-      if (off) {
-        pin_corners(mesh, t, pins);
-        break;
-      }
-    }
+    if (!exactly_straight(mesh, input, t)) pin_corners(mesh, t, pins);
 }
 
 }  // namespace

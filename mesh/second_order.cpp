@@ -19,9 +19,9 @@ Vec3<double> point(const std::vector<double>& xyz, index_t n) {
 
 double largest_magnitude(Vec3<double> p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
 
-// Each coordinate is off by at most half a step or 2^-24 of itself, so a
-// midside node's offset from the midpoint by at most twice that in each
-// component; the bound is doubled again for margin. At most a hundredth of
+// Each coordinate is off by at most half a step or `relative` of itself,
+// so a midside node's offset from the midpoint by at most twice that in
+// each component; the bound is doubled again for margin. At most a hundredth of
 // the edge is put down to rounding, so that a coarse mesh of exact values
 // (a unit lattice's midside nodes are multiples of 0.1) still shows its
 // curved edges.
@@ -152,10 +152,14 @@ double smallest_jacobian(const TetMesh& mesh, const std::vector<double>& xyz, st
   return smallest;
 }
 
+bool exactly_straight(const TetMesh& mesh, const std::vector<double>& xyz, std::size_t t) {
+  return quadratic_tet(mesh, xyz, t).straight;
+}
+
 std::vector<std::size_t> folded_tets(const TetMesh& mesh, const std::vector<double>& before) {
   std::vector<std::size_t> folded;
   for (std::size_t t = 0; t < mesh.num_tets() && !mesh.midsides.empty(); ++t) {
-    if (quadratic_tet(mesh, before, t).straight) continue;
+    if (exactly_straight(mesh, before, t)) continue;
     if (smallest_jacobian(mesh, before, t) > 0 && !(smallest_jacobian(mesh, mesh.xyz, t) > 0)) folded.push_back(t);
   }
   return folded;

@@ -63,6 +63,11 @@ CurvedTetPins curved_tet_pins(const TetMesh& mesh);
 // not a bound: it catches a tet folding near its nodes or its middle.
 double smallest_jacobian(const TetMesh& mesh, const std::vector<double>& xyz, std::size_t t);
 
+// Whether every midside node of tet t lies exactly on its edge's midpoint,
+// with the coordinates `xyz`: the tet is then its corner tet, mapped
+// affinely.
+bool exactly_straight(const TetMesh& mesh, const std::vector<double>& xyz, std::size_t t);
+
 // The tets with a midside node off its edge's midpoint (exactly straight
 // tets fold only with their corner tets, which the smoothers judge) whose
 // smallest_jacobian was positive with the coordinates `before` and is not

@@ -442,5 +442,27 @@ TEST(SmoothSecondOrderGuard, EndsWhenEveryTetCouldFold) {
   EXPECT_TRUE(folded_tets(mesh, input).empty());
 }
 
+// A run that folds one more place each time reaches kMaxRestarts; then
+// every tet with an offset keeps its corners, and the last run moves none.
+TEST(SmoothSecondOrderGuard, AfterTheLastRestartEveryOffsetTetStays) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(6, 0.2));
+  for (index_t m : mesh.midsides) mesh.xyz[3 * static_cast<std::size_t>(m)] += 1e-6;
+  const std::vector<double> input = mesh.xyz;
+  const std::vector<std::uint8_t> boundary = find_boundary_nodes(mesh.tets, mesh.num_nodes());
+  const std::set<index_t> corners(mesh.tets.begin(), mesh.tets.end());
+  const auto fold_one = [&]() {
+    for (index_t corner : corners) {
+      const auto i = static_cast<std::size_t>(corner);
+      if (boundary[i] || mesh.fixed[i]) continue;
+      mesh.xyz[3 * i] += 3.0;
+      break;
+    }
+    return SmoothResult{};
+  };
+  const SmoothResult r = smooth_second_order(mesh, fold_one);
+  EXPECT_EQ(r.second_order_restarts, kMaxRestarts);
+  EXPECT_EQ(mesh.xyz, input);
+}
+
 }  // namespace
 }  // namespace tetsmooth

@@ -23,10 +23,11 @@ SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colo
 bool cuda_available(std::string* why = nullptr);
 
 // Picks the backend: Auto means CUDA when available, else CPU. Of the entry
-// points, only this one smooths second-order meshes (TetMesh::midsides) as
-// mesh/second_order.hpp describes: it keeps the corners of curved tets in
-// place and moves the midside nodes with their edges. smooth_cpu and
-// smooth_cuda move the corners alone, and leave midside nodes where they are.
+// points, only this one smooths second-order meshes (TetMesh::midsides), through
+// smooth_second_order (kernels/second_order_smoothing.hpp): curved tets keep
+// their corners, midside nodes move with their edges, and no tet may fold.
+// smooth_cpu and smooth_cuda move the corners alone, and leave midside nodes
+// where they are.
 SmoothResult smooth(TetMesh& mesh, const SmoothOptions& options, Device device);
 
 }  // namespace tetsmooth

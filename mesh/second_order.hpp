@@ -81,9 +81,9 @@ std::vector<std::size_t> folded_tets(const TetMesh& mesh, const std::vector<doub
 void carry_midside_nodes(TetMesh& mesh, const std::vector<double>& before);
 
 // Where a file format lists the midside node of each kTetEdges edge among
-// a 10-node tet's nodes (its corners are nodes 0-3 in every format here).
+// a 10-node tet's nodes (its corners are nodes 0-3 in every format here);
+// each format's reader and writer keep their own table.
 using MidsidePlaces = int[6];
-inline constexpr MidsidePlaces kVtkMidsidePlaces = {4, 5, 6, 7, 8, 9};  // kTetEdges is VTK's order
 
 // Appends a tet listed as a file lists it (`nodes`: 4 corners, then the
 // midside nodes at `places` when `ten`) to mesh.tets and mesh.midsides.

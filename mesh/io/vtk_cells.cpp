@@ -12,6 +12,7 @@ constexpr std::uint8_t kVtkTetra = 10;
 // VTK_QUADRATIC_TETRA: the corners, then the midside nodes in kTetEdges
 // order, which is VTK's.
 constexpr std::uint8_t kVtkQuadraticTetra = 24;
+constexpr MidsidePlaces kVtkMidsidePlaces = {4, 5, 6, 7, 8, 9};
 
 struct PassThroughType {
   std::uint8_t vtk;

@@ -31,6 +31,8 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
               msh41-binary  Gmsh 4.1 binary
               msh22         Gmsh 2.2 ASCII
   .mesh       medit         Medit ASCII
+  .inp        abaqus        Abaqus/CalculiX input deck (a deck read is written back
+                            whole, with the new coordinates)
   .tsm        tsm           tetsmooth binary cache
 )";
 

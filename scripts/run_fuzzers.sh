@@ -5,7 +5,7 @@
 # exception other than InputError, a timeout or an out-of-memory input.
 #
 #   scripts/run_fuzzers.sh [target ...]      targets: gmsh medit vtu vtk
-#                                            tetgen_node tetgen_ele tsm (default: all)
+#                                            tetgen_node tetgen_ele tsm abaqus (default: all)
 # Environment:
 #   FUZZ_SECONDS    time per target (default 20)
 #   FUZZ_BUILD_DIR  build folder (default build-fuzz); the growing corpus is
@@ -18,7 +18,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-20}
 jobs=${FUZZ_JOBS:-2}
-all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm)
+all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus)
 targets=("$@")
 [[ ${#targets[@]} -eq 0 ]] && targets=("${all_targets[@]}")
 
@@ -49,6 +49,7 @@ seed vtu "$data"/*.vtu
 seed vtk "$data"/*.vtk
 seed tetgen_node "$data"/*.node
 seed tetgen_ele "$data"/*.ele
+seed abaqus "$data"/*.inp
 # No .tsm fixture is kept (the cache is binary and hashed): write one tet in
 # the layout of mesh/io/tsm_cache.hpp.
 mkdir -p "$seeds/tsm"

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+#include "mesh/errors.hpp"
+
 namespace tetsmooth {
 
 using StreamBody = std::function<void(std::ostream&)>;
@@ -57,5 +59,17 @@ struct AtomicPart {
 // a rename itself fails after an earlier one succeeded, the earlier target
 // is already replaced.
 void write_atomically(const std::vector<AtomicPart>& parts, bool binary = false);
+
+// Returns what `check` returns; an OutputError it throws (a mesh the format
+// cannot hold) is thrown again as "cannot write 'path': <its message>". For
+// the checks a writer makes before it creates any file.
+template <class Check>
+auto checked_for(const std::string& path, Check&& check) -> decltype(check()) {
+  try {
+    return check();
+  } catch (const OutputError& e) {
+    throw OutputError("cannot write '" + path + "': " + e.what());
+  }
+}
 
 }  // namespace tetsmooth

@@ -306,12 +306,7 @@ void write_gmsh(const TetMesh& mesh, std::ostream& out, MshFlavour flavour, cons
 
 void write_gmsh_file(const TetMesh& mesh, const std::string& path, MshFlavour flavour, const MeshFields& fields) {
   check_fields(mesh, fields);
-  WritePlan plan;
-  try {
-    plan = gmsh::plan_gmsh_output(mesh, flavour);
-  } catch (const OutputError& e) {
-    throw OutputError("cannot write '" + path + "': " + e.what());
-  }
+  const WritePlan plan = checked_for(path, [&] { return gmsh::plan_gmsh_output(mesh, flavour); });
   write_atomically(
       path, [&](std::ostream& out) { write_planned(mesh, out, flavour, plan, fields); },
       flavour == MshFlavour::V41Binary);

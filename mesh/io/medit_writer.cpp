@@ -133,11 +133,7 @@ void write_medit(const TetMesh& mesh, std::ostream& out) {
 }
 
 void write_medit_file(const TetMesh& mesh, const std::string& path) {
-  try {
-    check(mesh);
-  } catch (const OutputError& e) {
-    throw OutputError("cannot write '" + path + "': " + e.what());
-  }
+  checked_for(path, [&] { check(mesh); });
   write_atomically(path, [&](std::ostream& out) { write_body(mesh, out); });
 }
 

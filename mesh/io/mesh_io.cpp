@@ -6,6 +6,7 @@
 #include <cctype>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/abaqus_io.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
@@ -32,6 +33,8 @@ constexpr FormatName kNames[] = {
     {"msh22", MeshFormat::Msh22},
     {"medit", MeshFormat::Medit},
     {"tsm", MeshFormat::Cache},
+    {"abaqus", MeshFormat::Abaqus},
+    {"inp", MeshFormat::Abaqus},
 };
 
 struct Extension {
@@ -41,6 +44,7 @@ struct Extension {
 constexpr Extension kExtensions[] = {
     {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},   {".vtk", MeshFormat::Vtk},
     {".msh", MeshFormat::Msh41},   {".mesh", MeshFormat::Medit}, {".tsm", MeshFormat::Cache},
+    {".inp", MeshFormat::Abaqus},
 };
 
 std::string lower(std::string s) {
@@ -67,7 +71,7 @@ MeshFormat parse_format(const std::string& name) {
   for (const FormatName& f : kNames)
     if (key == f.name) return f.format;
   throw UsageError("unknown mesh format '" + name +
-                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit or tsm)");
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm or abaqus)");
 }
 
 const char* format_name(MeshFormat f) {
@@ -82,7 +86,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 
@@ -108,6 +112,8 @@ TetMesh read_mesh(const std::string& path, MeshFormat format) {
       return read_medit_file(path);
     case MeshFormat::Cache:
       return read_cache_file(path);
+    case MeshFormat::Abaqus:
+      return read_abaqus_file(path);
     case MeshFormat::Auto:
       break;
   }
@@ -132,6 +138,8 @@ void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format,
       return write_medit_file(mesh, path);
     case MeshFormat::Cache:
       return write_cache_file(mesh, path);
+    case MeshFormat::Abaqus:
+      return write_abaqus_file(mesh, path);
     case MeshFormat::Auto:
       break;
   }

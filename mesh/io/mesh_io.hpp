@@ -22,10 +22,11 @@ enum class MeshFormat {
   Msh22,        // Gmsh MSH 2.2 ASCII
   Medit,        // Medit .mesh ASCII
   Cache,        // tetsmooth binary cache .tsm
+  Abaqus,       // Abaqus/CalculiX input deck .inp
 };
 
 // Parses a --format value ("tetgen", "vtu", "vtk", "msh", "msh41", "msh41-binary",
-// "msh22", "medit", "tsm"); throws UsageError for anything else.
+// "msh22", "medit", "tsm", "abaqus" or "inp"); throws UsageError for anything else.
 MeshFormat parse_format(const std::string& name);
 const char* format_name(MeshFormat f);
 

@@ -9,6 +9,8 @@
 #include "mesh/region_interfaces.hpp"
 #include "mesh/second_order.hpp"
 #include "mesh/topology.hpp"
+#include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/atomic_file.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/gmsh_write_plan.hpp"
@@ -70,6 +72,8 @@ void write_probe(const TetMesh& probe, MeshFormat format, std::ostream& out) {
       return write_medit(probe, out);
     case MeshFormat::Cache:
       return write_cache(probe, out);
+    case MeshFormat::Abaqus:
+      return write_abaqus(probe, out);
     case MeshFormat::Auto:
       break;
   }
@@ -113,11 +117,13 @@ std::vector<std::uint8_t> kept_interface_nodes(const TetMesh& mesh, MeshFormat f
 }
 
 // Pinned nodes that the format loses and that a later run would move: VTU,
-// VTK and Medit (RequiredVertices) write every pin, MSH only element nodes,
+// VTK, Medit (RequiredVertices) and Abaqus (the deck, or a node set) write
+// every pin, MSH only element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
 // an interface where the format keeps what tells of it.
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
-  if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit)
+  if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit ||
+      format == MeshFormat::Abaqus)
     return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
   if (format != MeshFormat::TetGen && format != MeshFormat::Cache) mark_element_nodes(mesh.extras.blocks, kept);
@@ -251,10 +257,16 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                                             : " keeps only the region tags (the first attribute's values where "
                                               "whole, else their ranks)"));
   const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
+  // MSH and Abaqus keep the file's node and element numbers.
   const bool node_ids = !positional(e.node_tags), element_ids = !positional(e.tet_element_tags);
-  if (!msh && (node_ids || element_ids))
-    notes.push_back(std::string("the Gmsh ") + (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
-                    " tags will not be written: " + name + " numbers them by position");
+  const bool abaqus = raw_section(e, "abaqus:deck") != nullptr;
+  if (!msh && f != MeshFormat::Abaqus && (node_ids || element_ids))
+    notes.push_back(std::string(abaqus ? "the Abaqus " : "the Gmsh ") +
+                    (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
+                    (abaqus ? " numbers" : " tags") + " will not be written: " + name + " numbers them by position");
+  if (const std::string* keywords = raw_section(e, "abaqus:keywords"); keywords != nullptr && f != MeshFormat::Abaqus)
+    notes.push_back("the rest of the Abaqus deck (" + *keywords + ") will not be written: " + name +
+                    " holds the mesh alone");
   if (!msh) {
     const bool names = raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);
@@ -291,11 +303,7 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
 void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat format) {
   NullBuf nowhere;
   std::ostream out(&nowhere);
-  try {
-    write_probe(probe_of(mesh), format_from_path(path, format), out);
-  } catch (const OutputError& e) {
-    throw OutputError("cannot write '" + path + "': " + e.what());
-  }
+  checked_for(path, [&] { write_probe(probe_of(mesh), format_from_path(path, format), out); });
 }
 
 }  // namespace tetsmooth

@@ -13,7 +13,7 @@ import meshio
 import numpy as np
 
 from test_cli import run
-from test_independent_readers import GmshScratchCase, gmsh_session, physical_groups
+from test_independent_readers import GmshScratchCase, boundary_nodes, gmsh_session, physical_groups
 
 INPUTS = [("part-ascii.msh", 0), ("part-binary.msh", 1)]
 
@@ -27,10 +27,7 @@ def boundary_node_tags(gmsh):
     """Tags of the nodes on faces that belong to one tet only."""
     types, _, node_tags = gmsh.model.mesh.getElements(dim=3)
     tets = np.concatenate([np.asarray(n).reshape(-1, 4) for t, n in zip(types, node_tags) if t == 4])
-    faces = np.sort(np.concatenate([tets[:, [1, 2, 3]], tets[:, [0, 2, 3]], tets[:, [0, 1, 3]], tets[:, [0, 1, 2]]]),
-                    axis=1)
-    unique, counts = np.unique(faces, axis=0, return_counts=True)
-    return set(unique[counts == 1].ravel().tolist())
+    return boundary_nodes(tets)
 
 
 class PartitionedGmshMeshes(GmshScratchCase):

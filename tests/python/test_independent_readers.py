@@ -56,6 +56,15 @@ class GmshScratchCase(unittest.TestCase):
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
 
+def boundary_nodes(tets):
+    """The nodes (as the rows of `tets` name them) of faces that belong to
+    one tet only."""
+    faces = np.sort(np.concatenate([tets[:, [1, 2, 3]], tets[:, [0, 2, 3]], tets[:, [0, 1, 3]], tets[:, [0, 1, 2]]]),
+                    axis=1)
+    unique, counts = np.unique(faces, axis=0, return_counts=True)
+    return set(unique[counts == 1].ravel().tolist())
+
+
 @contextlib.contextmanager
 def gmsh_session(gmsh):
     """An initialised, quiet Gmsh for the `with` block, finalised after it."""

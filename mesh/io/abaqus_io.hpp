@@ -1,0 +1,58 @@
+#pragma once
+// Abaqus and CalculiX input decks (.inp): the mesh of a flat deck (one
+// without *PART/*ASSEMBLY), read with the rest of the deck kept so that a
+// smoothed deck is the input with only its node coordinates changed.
+//
+// Reading:
+//  * *NODE lines "id, x, y, z" (ids any positive whole numbers, kept as
+//    FileExtras::node_tags; omitted coordinates are 0, as Abaqus reads
+//    them); *ELEMENT blocks of tets (C3D4..., C3D10..., one kind a deck;
+//    ids kept as tet_element_tags) and of other elements, which pass through
+//    with their nodes pinned (element_types: shells, membranes, surface
+//    elements, trusses, beams, first-order solids, one-node elements).
+//  * Regions (FileExtras::tet_tags): the ordinal of the *SOLID SECTION whose
+//    element set holds a tet, where the deck has sections; otherwise from
+//    the ELSET= of the tet's *ELEMENT line, each name's trailing number
+//    where every name has a different one (Gmsh's Volume1, Volume2, ...;
+//    negative after "_M", as the writer names negative tags: REGION_M2 is
+//    -2), else the names numbered 1, 2, ... in the order met. Other
+//    elements get their tags from their ELSET= names the same way.
+//  * Pinned nodes, besides those of non-tet elements: nodes that *BOUNDARY
+//    or *CLOAD name (by number or node set), and the node set
+//    TETSMOOTH_PINNED that the writer leaves for pins nothing else keeps.
+//  * *INCLUDE files are read in place. Parts and assemblies, node and element
+//    generation (*NGEN, *ELGEN, ...), and nodes in other coordinate systems
+//    (*SYSTEM, SYSTEM=C|S) are refused with a message.
+//  * The deck is kept in FileExtras::raw_sections, in order: "abaqus:text"
+//    bodies as read (lines end in '\n'; included files inline) and
+//    "abaqus:nodes" counts of the *NODE lines between them, then
+//    "abaqus:deck" ("<nodes> <tets>", what the deck describes) and
+//    "abaqus:keywords" (the deck's keywords other than *HEADING, *NODE and
+//    *ELEMENT, as written, for a note when another format drops them).
+//
+// Writing: a mesh read from a deck is written as that deck, each *NODE line
+// "id, x, y, z" with the new coordinates in shortest round-trip form and
+// every other line as read; the mesh must still have the deck's node and tet
+// counts. Any other mesh is written as a new deck: *HEADING, *NODE, then
+// *ELEMENT blocks in file order (C3D4 or C3D10; other elements under the
+// type_name_of() types), one block per run of one region tag, with
+// ELSET=REGION_<tag> (negative tags as REGION_M<|tag|>) and, for other
+// elements, ELSET=<KIND>_<tag>; then *NSET, NSET=TETSMOOTH_PINNED for pinned
+// nodes that no element pins. Node and element ids are the file's where
+// they are positive and distinct, else 1, 2, ... in order.
+#include <iosfwd>
+#include <string>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+// `source` names the deck in messages and is the place *INCLUDE paths are
+// relative to.
+TetMesh read_abaqus(std::istream& in, const std::string& source);
+TetMesh read_abaqus_file(const std::string& path);
+
+void write_abaqus(const TetMesh& mesh, std::ostream& out);
+void write_abaqus_file(const TetMesh& mesh, const std::string& path);
+
+}  // namespace tetsmooth

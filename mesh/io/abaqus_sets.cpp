@@ -1,0 +1,82 @@
+#include "mesh/io/abaqus_sets.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace tetsmooth::abaqus {
+
+IdIndex::IdIndex(const std::vector<long long>& ids) {
+  sorted_.reserve(ids.size());
+  for (std::size_t i = 0; i < ids.size(); ++i) sorted_.emplace_back(ids[i], i);
+  std::sort(sorted_.begin(), sorted_.end());
+  const auto twice = std::adjacent_find(sorted_.begin(), sorted_.end(),
+                                        [](const auto& a, const auto& b) { return a.first == b.first; });
+  if (twice != sorted_.end()) throw std::invalid_argument(std::to_string(twice->first));
+}
+
+long long IdIndex::find(long long id) const {
+  const auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(id, std::size_t{0}));
+  return it != sorted_.end() && it->first == id ? static_cast<long long>(it->second) : -1;
+}
+
+void IdIndex::append_range(long long first, long long last, long long step, std::vector<std::size_t>& out) const {
+  auto it = std::lower_bound(sorted_.begin(), sorted_.end(), std::make_pair(first, std::size_t{0}));
+  for (; it != sorted_.end() && it->first <= last; ++it)
+    if ((it->first - first) % step == 0) out.push_back(it->second);
+}
+
+void DeckSets::collect(const std::map<std::string, Set>& sets, const std::string& name, const std::string& where,
+                       const IdIndex& ids, const char* kind, std::vector<std::uint8_t>& flags,
+                       std::vector<std::string>& path, std::vector<std::string>& done,
+                       std::vector<const SetPart*>& parts_with_elsets) const {
+  if (std::find(done.begin(), done.end(), name) != done.end()) return;
+  if (std::find(path.begin(), path.end(), name) != path.end())
+    throw std::invalid_argument(where + ": " + kind + " set " + name + " contains itself, through other sets");
+  const auto it = sets.find(name);
+  if (it == sets.end()) throw std::invalid_argument(where + ": no " + kind + " set " + name + " is defined");
+  path.push_back(name);
+  for (const auto& [first, count] : it->second.runs)
+    std::fill(flags.begin() + static_cast<std::ptrdiff_t>(first),
+              flags.begin() + static_cast<std::ptrdiff_t>(first + count), std::uint8_t{1});
+  std::vector<std::size_t> items;
+  for (const SetPart& part : it->second.parts) {
+    for (long long id : part.ids) {
+      const long long item = ids.find(id);
+      if (item < 0)
+        throw std::invalid_argument(part.where + ": " + kind + " set " + name + " lists " + kind + " " +
+                                    std::to_string(id) + ", which the deck does not define");
+      flags[static_cast<std::size_t>(item)] = 1;
+    }
+    items.clear();
+    for (const auto& [first, last, step] : part.ranges) ids.append_range(first, last, step, items);
+    for (std::size_t item : items) flags[item] = 1;
+    for (const std::string& other : part.names)
+      collect(sets, other, part.where, ids, kind, flags, path, done, parts_with_elsets);
+    if (!part.elsets.empty()) parts_with_elsets.push_back(&part);
+  }
+  path.pop_back();
+  done.push_back(name);
+}
+
+void DeckSets::mark_elements(const std::string& name, const std::string& where, const IdIndex& element_ids,
+                             std::vector<std::uint8_t>& flags) const {
+  std::vector<std::string> path, done;
+  std::vector<const SetPart*> unused;  // element sets name no element sets of other kinds
+  collect(elsets_, name, where, element_ids, "element", flags, path, done, unused);
+}
+
+void DeckSets::mark_nodes(const std::string& name, const std::string& where, const IdIndex& node_ids,
+                          const IdIndex& element_ids, std::size_t element_count,
+                          const MarkElementNodes& mark_element_nodes, std::vector<std::uint8_t>& flags) const {
+  std::vector<std::string> path, done;
+  std::vector<const SetPart*> with_elsets;
+  collect(nsets_, name, where, node_ids, "node", flags, path, done, with_elsets);
+  for (const SetPart* part : with_elsets) {
+    std::vector<std::uint8_t> elements(element_count, 0);
+    for (const std::string& elset : part->elsets) mark_elements(elset, part->where, element_ids, elements);
+    for (std::size_t e = 0; e < element_count; ++e)
+      if (elements[e]) mark_element_nodes(e, flags);
+  }
+}
+
+}  // namespace tetsmooth::abaqus

@@ -1,0 +1,83 @@
+#pragma once
+// The named node and element sets of an Abaqus deck (*NSET, *ELSET, and the
+// NSET=/ELSET= of *NODE and *ELEMENT), resolved once every line is read, so
+// that a set may be used before the lines that define it (not a public API).
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace tetsmooth::abaqus {
+
+// The file's ids of a kind of item (nodes, elements) in read order, found
+// by id.
+class IdIndex {
+ public:
+  // Throws std::invalid_argument naming the first id given twice.
+  explicit IdIndex(const std::vector<long long>& ids);
+  // The item with this id, or -1.
+  long long find(long long id) const;
+  // Every item whose id is first, first + step, ... up to last (*NSET and
+  // *ELSET's GENERATE), in id order; ids that no item has are skipped.
+  void append_range(long long first, long long last, long long step, std::vector<std::size_t>& out) const;
+
+ private:
+  std::vector<std::pair<long long, std::size_t>> sorted_;
+};
+
+// What one *NSET or *ELSET keyword (and its data lines) adds to a set.
+struct SetPart {
+  std::vector<long long> ids;
+  std::vector<std::string> names;                // other sets of the same kind, normalized
+  std::vector<std::array<long long, 3>> ranges;  // GENERATE: first, last, step
+  std::vector<std::string> elsets;               // *NSET, ELSET=: the nodes of these element sets
+  std::string where;                             // "file:line" of the keyword
+};
+
+class DeckSets {
+ public:
+  // Names are normalized (abaqus_deck_lines.hpp).
+  void add_nset(const std::string& name, SetPart part) { nsets_[name].parts.push_back(std::move(part)); }
+  void add_elset(const std::string& name, SetPart part) { elsets_[name].parts.push_back(std::move(part)); }
+  // Items a *NODE, NSET= or *ELEMENT, ELSET= line adds: `count` items from
+  // index `first` in read order (elements counted over every kind).
+  void add_node_run(const std::string& name, std::size_t first, std::size_t count) {
+    nsets_[name].runs.emplace_back(first, count);
+  }
+  void add_element_run(const std::string& name, std::size_t first, std::size_t count) {
+    elsets_[name].runs.emplace_back(first, count);
+  }
+  bool has_nset(const std::string& name) const { return nsets_.count(name) != 0; }
+
+  // Marks the items of a set in `flags` (one per item): nodes by read index,
+  // elements by read index over every kind. `mark_element_nodes` marks an
+  // element's nodes, for *NSET, ELSET=. Throws std::invalid_argument, with
+  // "where: what", for a set that is not defined (`where` names the line
+  // that uses it), an id that no item has, or sets that contain each other.
+  using MarkElementNodes = std::function<void(std::size_t element, std::vector<std::uint8_t>& node_flags)>;
+  void mark_elements(const std::string& name, const std::string& where, const IdIndex& element_ids,
+                     std::vector<std::uint8_t>& flags) const;
+  void mark_nodes(const std::string& name, const std::string& where, const IdIndex& node_ids,
+                  const IdIndex& element_ids, std::size_t element_count, const MarkElementNodes& mark_element_nodes,
+                  std::vector<std::uint8_t>& flags) const;
+
+ private:
+  struct Set {
+    std::vector<SetPart> parts;
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+  };
+  // Marks the items of set `name` of `sets` (and of the sets it names) in
+  // `flags`, and gathers the parts that name element sets.
+  void collect(const std::map<std::string, Set>& sets, const std::string& name, const std::string& where,
+               const IdIndex& ids, const char* kind, std::vector<std::uint8_t>& flags,
+               std::vector<std::string>& path, std::vector<std::string>& done,
+               std::vector<const SetPart*>& parts_with_elsets) const;
+
+  std::map<std::string, Set> nsets_, elsets_;
+};
+
+}  // namespace tetsmooth::abaqus

@@ -1,0 +1,192 @@
+// Abaqus/CalculiX .inp writing (abaqus_io.hpp): a deck read with the mesh
+// comes back as it was read with the new coordinates; any other mesh gets a
+// new deck of its nodes, elements and pins.
+#include <algorithm>
+#include <cctype>
+#include <ostream>
+
+#include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
+#include "mesh/io/abaqus_element_types.hpp"
+#include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/atomic_file.hpp"
+#include "mesh/io/number_text.hpp"
+
+namespace tetsmooth {
+namespace {
+
+// Abaqus reads at most 16 entries from a data line of a set.
+constexpr std::size_t kSetEntriesPerLine = 16;
+
+void write_node(std::ostream& out, long long id, const double* xyz) {
+  put_integer(out, id);
+  for (int c = 0; c < 3; ++c) {
+    out << ", ";
+    put_real(out, xyz[c]);
+  }
+  out << '\n';
+}
+
+// --- A deck read with the mesh --------------------------------------------
+
+bool has_deck(const TetMesh& mesh) { return raw_section(mesh.extras, "abaqus:deck") != nullptr; }
+
+// The deck must still describe the mesh: only coordinates change on the way
+// through tetsmooth, and the deck's element lines are written as read.
+void check_deck(const TetMesh& mesh) {
+  const std::string expected = std::to_string(mesh.num_nodes()) + " " + std::to_string(mesh.num_tets());
+  const std::string& stamp = *raw_section(mesh.extras, "abaqus:deck");
+  std::size_t listed = 0;
+  for (const auto& [name, body] : mesh.extras.raw_sections)
+    if (name == "abaqus:nodes") listed += std::stoull(body);
+  if (stamp != expected || listed != mesh.num_nodes() || mesh.extras.node_tags.size() != mesh.num_nodes())
+    throw OutputError("the Abaqus deck read with this mesh lists (nodes, tets) " + stamp + ", and the mesh has " +
+                      expected + ": a deck is written back only for the mesh it was read with");
+}
+
+void write_deck(const TetMesh& mesh, std::ostream& out) {
+  std::size_t next = 0;
+  for (const auto& [name, body] : mesh.extras.raw_sections) {
+    if (name == "abaqus:text") out << body;
+    if (name != "abaqus:nodes") continue;
+    const std::size_t end = next + std::stoull(body);
+    for (; next < end; ++next) write_node(out, mesh.extras.node_tags[next], &mesh.xyz[3 * next]);
+  }
+}
+
+// --- A new deck -------------------------------------------------------------
+
+// The file's ids where each item has one and they are positive and
+// distinct, else 1, 2, ... in order.
+std::vector<long long> ids_or_positions(const std::vector<long long>& ids, std::size_t count) {
+  std::vector<long long> sorted = ids;
+  std::sort(sorted.begin(), sorted.end());
+  const bool usable = ids.size() == count && (sorted.empty() || sorted.front() > 0) &&
+                      std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+  if (usable) return ids;
+  std::vector<long long> positions(count);
+  for (std::size_t i = 0; i < count; ++i) positions[i] = static_cast<long long>(i) + 1;
+  return positions;
+}
+
+std::size_t elements_in(const PassThroughBlock& b) {
+  return b.nodes_per_element > 0 ? b.connectivity.size() / static_cast<std::size_t>(b.nodes_per_element) : 0;
+}
+
+// Element ids over the tets, then each block's elements.
+std::vector<long long> element_ids(const TetMesh& mesh) {
+  std::vector<long long> ids = mesh.extras.tet_element_tags;
+  std::size_t count = mesh.num_tets();
+  bool complete = ids.size() == count;
+  for (const PassThroughBlock& b : mesh.extras.blocks) {
+    count += elements_in(b);
+    complete = complete && b.element_tags.size() == elements_in(b);
+    ids.insert(ids.end(), b.element_tags.begin(), b.element_tags.end());
+  }
+  return ids_or_positions(complete ? ids : std::vector<long long>{}, count);
+}
+
+std::string set_name(std::string prefix, int tag) {
+  for (char& c : prefix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return prefix + (tag < 0 ? "_M" + std::to_string(-static_cast<long long>(tag)) : "_" + std::to_string(tag));
+}
+
+void check_new_deck(const TetMesh& mesh) {
+  if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (abaqus::type_name_of(b.kind, b.nodes_per_element) == nullptr)
+      throw OutputError("Abaqus output cannot hold the pass-through '" + b.kind + "' block (" +
+                        std::to_string(b.nodes_per_element) + " nodes per element)");
+}
+
+// Writes `count` elements of `type` whose nodes `nodes(e, out)` gives, one
+// *ELEMENT block per run of one tag (tags: one per element, or empty).
+template <typename Nodes>
+void write_elements(std::ostream& out, const char* type, int nodes_each, std::size_t count, const std::vector<int>& tags,
+                    const std::string& prefix, const long long* ids, const std::vector<long long>& node_ids,
+                    Nodes nodes) {
+  const bool tagged = tags.size() == count;
+  std::vector<index_t> element(static_cast<std::size_t>(nodes_each));
+  for (std::size_t e = 0; e < count; ++e) {
+    if (e == 0 || (tagged && tags[e] != tags[e - 1])) {
+      out << "*ELEMENT, TYPE=" << type;
+      if (tagged) out << ", ELSET=" << set_name(prefix, tags[e]);
+      out << '\n';
+    }
+    put_integer(out, ids[e]);
+    nodes(e, element.data());
+    for (index_t n : element) {
+      out << ", ";
+      put_integer(out, node_ids[static_cast<std::size_t>(n)]);
+    }
+    out << '\n';
+  }
+}
+
+// Pinned nodes that no element of a block pins: the reader pins the set.
+void write_pinned_set(std::ostream& out, const TetMesh& mesh, const std::vector<long long>& node_ids) {
+  std::vector<std::uint8_t> by_element(mesh.num_nodes(), 0);
+  mark_element_nodes(mesh.extras.blocks, by_element);
+  std::size_t written = 0;
+  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i) {
+    if (!mesh.fixed[i] || by_element[i]) continue;
+    if (written == 0) out << "*NSET, NSET=TETSMOOTH_PINNED\n";
+    if (written > 0) out << (written % kSetEntriesPerLine == 0 ? ",\n" : ", ");
+    put_integer(out, node_ids[i]);
+    ++written;
+  }
+  if (written > 0) out << '\n';
+}
+
+void write_new_deck(const TetMesh& mesh, std::ostream& out) {
+  const std::vector<long long> node_ids = ids_or_positions(mesh.extras.node_tags, mesh.num_nodes());
+  const std::vector<long long> ids = element_ids(mesh);
+  out << "*HEADING\nwritten by tetsmooth\n*NODE\n";
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) write_node(out, node_ids[i], &mesh.xyz[3 * i]);
+  const bool ten = !mesh.midsides.empty();
+  write_elements(out, ten ? "C3D10" : "C3D4", ten ? 10 : 4, mesh.num_tets(), mesh.extras.tet_tags, "REGION",
+                 ids.data(), node_ids, [&](std::size_t t, index_t* nodes) {
+                   if (ten) return file_tet10(mesh, t, abaqus::kMidsidePlaces, nodes);
+                   std::copy_n(&mesh.tets[4 * t], 4, nodes);
+                 });
+  std::size_t first = mesh.num_tets();
+  for (const PassThroughBlock& b : mesh.extras.blocks) {
+    const auto n = static_cast<std::size_t>(b.nodes_per_element);
+    write_elements(out, abaqus::type_name_of(b.kind, b.nodes_per_element), b.nodes_per_element, elements_in(b), b.tags,
+                   b.kind, ids.data() + first, node_ids, [&](std::size_t e, index_t* nodes) {
+                     for (std::size_t k = 0; k < n; ++k)
+                       nodes[abaqus::file_place(b.kind, static_cast<int>(k))] = b.connectivity[e * n + k];
+                   });
+    first += elements_in(b);
+  }
+  write_pinned_set(out, mesh, node_ids);
+}
+
+void check(const TetMesh& mesh) {
+  if (has_deck(mesh))
+    check_deck(mesh);
+  else
+    check_new_deck(mesh);
+}
+
+void write_body(const TetMesh& mesh, std::ostream& out) {
+  if (has_deck(mesh))
+    write_deck(mesh, out);
+  else
+    write_new_deck(mesh, out);
+}
+
+}  // namespace
+
+void write_abaqus(const TetMesh& mesh, std::ostream& out) {
+  check(mesh);
+  write_body(mesh, out);
+  if (!out) throw OutputError("the Abaqus output stream failed");
+}
+
+void write_abaqus_file(const TetMesh& mesh, const std::string& path) {
+  checked_for(path, [&] { check(mesh); });
+  write_atomically(path, [&](std::ostream& out) { write_body(mesh, out); });
+}
+
+}  // namespace tetsmooth

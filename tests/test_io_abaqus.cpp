@@ -1,0 +1,343 @@
+// Abaqus/CalculiX .inp: nodes, tets and other elements, regions from
+// sections or element sets, pins from *BOUNDARY/*CLOAD, the deck written back
+// with only its coordinates changed, new decks that read back as written,
+// *INCLUDE, and errors naming file:line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/abaqus_element_types.hpp"
+#include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/io/writable_check.hpp"
+#include "support/scratch_dir.hpp"
+#include "support/test_meshes.hpp"
+#include "input_error.hpp"
+
+namespace tetsmooth {
+namespace {
+
+TetMesh read_text(const std::string& text, const std::string& source = "t.inp") {
+  std::istringstream in(text);
+  return read_abaqus(in, source);
+}
+
+std::string write_text(const TetMesh& mesh) {
+  std::ostringstream out;
+  write_abaqus(mesh, out);
+  return out.str();
+}
+
+std::string read_error(const std::string& text) {
+  return testing::input_error_message([&] { read_text(text); }, "read_abaqus:\n" + text);
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// Two tets of two materials, a surface element, a pinned node (6) and
+// Abaqus's spellings: mixed case, spaces in keywords, a keyword and an
+// element that go on on the next line, a D exponent, an omitted coordinate.
+const std::string kDeck =
+    "*Heading\n"
+    " two tets\n"
+    "** a comment\n"
+    "*Node, nset=All\n"
+    "1, 0, 0, 0\n"
+    "2, 1, 0, 0\n"
+    "3, 0, 1, 0\n"
+    "4, 0, 0, 1\n"
+    "5, 1.0D0, 1., 1\n"
+    "6, 0.3, 0.3\n"
+    "*Element, type=C3D4, elset=Lower\n"
+    "10, 1, 2, 3,\n"
+    " 4\n"
+    "*ELEMENT, TYPE=C3D4H\n"
+    "11, 2, 3, 4, 5\n"
+    "*Element, type=S3R, elset=Skin\n"
+    "20, 1, 2, 3\n"
+    "*Elset, elset=Upper, generate\n"
+    "11, 11, 1\n"
+    "*Solid Section, elset=Upper, material=Rock\n"
+    "*Solid Section,\n"
+    "  elset=LOWER, material=Soil\n"
+    "*Material, name=Rock\n"
+    "*Elastic\n"
+    "1e9, 0.3\n"
+    "*Boundary\n"
+    "6, 1, 3\n"
+    "*Step\n"
+    "*Static\n"
+    "*End Step\n";
+
+TEST(AbaqusIo, ReadsNodesElementsSectionsAndPins) {
+  const TetMesh mesh = read_text(kDeck);
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1, 0.3, 0.3, 0}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 1, 2, 3, 4}));
+  EXPECT_TRUE(mesh.midsides.empty());
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{10, 11}));
+  // Regions are the sections' ordinals: Upper first.
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2, 1}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  const PassThroughBlock& skin = mesh.extras.blocks[0];
+  EXPECT_EQ(skin.kind, "triangle");
+  EXPECT_EQ(skin.connectivity, (std::vector<index_t>{0, 1, 2}));
+  EXPECT_EQ(skin.element_tags, (std::vector<long long>{20}));
+  // The triangle's nodes, and node 6 that *BOUNDARY names.
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 1}));
+  EXPECT_EQ(*raw_section(mesh.extras, "abaqus:keywords"),
+            "*Elset, *Solid Section, *Material, *Elastic, *Boundary, *Step, *Static, *End Step");
+  EXPECT_EQ(*raw_section(mesh.extras, "abaqus:deck"), "6 2");
+}
+
+TEST(AbaqusIo, ReadsADeckGmshWrote) {
+  // tests/data/gmsh_layers_make.py: two volumes, the bottom face's
+  // triangles, and Gmsh's lists of its physical groups' elements and nodes.
+  const TetMesh mesh = read_abaqus_file(testing::data_path("abaqus_gmsh_layers.inp"));
+  EXPECT_EQ(mesh.num_nodes(), 157u);
+  ASSERT_EQ(mesh.num_tets(), 470u);
+  EXPECT_EQ(mesh.extras.tet_element_tags.front(), 45);
+  // The tets of ELSET=Volume1, then Volume2: entity tags as regions.
+  EXPECT_EQ(std::count(mesh.extras.tet_tags.begin(), mesh.extras.tet_tags.end(), 1), 234);
+  EXPECT_EQ(std::count(mesh.extras.tet_tags.begin(), mesh.extras.tet_tags.end(), 2), 236);
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
+  EXPECT_EQ(mesh.extras.blocks[0].tags, std::vector<int>(44, 5));
+  std::vector<std::uint8_t> pinned(mesh.num_nodes(), 0);
+  mark_element_nodes(mesh.extras.blocks, pinned);
+  EXPECT_EQ(mesh.fixed, pinned);
+  EXPECT_EQ(*raw_section(mesh.extras, "abaqus:keywords"), "*ELSET, *NSET");
+}
+
+TEST(AbaqusIo, WritesTheDeckBackWithOnlyItsCoordinatesChanged) {
+  TetMesh mesh = read_text(kDeck);
+  mesh.xyz[3 * 3 + 2] = 0.875;  // node 4
+  std::string expected = replaced(kDeck, "4, 0, 0, 1\n", "4, 0, 0, 0.875\n");
+  expected = replaced(expected, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n");
+  expected = replaced(expected, "6, 0.3, 0.3\n", "6, 0.3, 0.3, 0\n");
+  EXPECT_EQ(write_text(mesh), expected);
+}
+
+TEST(AbaqusIo, CommentsAmongNodeLinesStayInPlace) {
+  const std::string deck = replaced(kDeck, "3, 0, 1, 0\n", "3, 0, 1, 0\n** the top\n\n");
+  EXPECT_EQ(write_text(read_text(deck)), replaced(replaced(deck, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n"),
+                                                  "6, 0.3, 0.3\n", "6, 0.3, 0.3, 0\n"));
+}
+
+TEST(AbaqusIo, ADeckIsWrittenOnlyForTheMeshItWasReadWith) {
+  TetMesh mesh = read_text(kDeck);
+  mesh.tets.resize(4);
+  mesh.extras.tet_tags.resize(1);
+  mesh.extras.tet_element_tags.resize(1);
+  try {
+    write_text(mesh);
+    FAIL() << "a deck of two tets written for one";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lists (nodes, tets) 6 2, and the mesh has 6 1"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(AbaqusIo, RegionsWithoutSectionsComeFromTheElementLinesSets) {
+  const std::string two_sets =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n"
+      "*ELEMENT, TYPE=C3D4, ELSET=Volume7\n1, 1, 2, 3, 4\n"
+      "*ELEMENT, TYPE=C3D4, ELSET=Volume3\n2, 2, 3, 4, 5\n";
+  EXPECT_EQ(read_text(two_sets).extras.tet_tags, (std::vector<int>{7, 3}));
+  // Names without distinct trailing numbers are numbered in the order met.
+  EXPECT_EQ(read_text(replaced(two_sets, "Volume3", "Set-7")).extras.tet_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(read_text(replaced(two_sets, "Volume3", "Soil")).extras.tet_tags, (std::vector<int>{1, 2}));
+  // No set at all: no regions.
+  EXPECT_TRUE(read_text(replaced(replaced(two_sets, ", ELSET=Volume7", ""), ", ELSET=Volume3", ""))
+                  .extras.tet_tags.empty());
+}
+
+TEST(AbaqusIo, NodeSetsAndElementSetsPinThroughBoundaryAndLoads) {
+  const std::string deck =
+      "*NODE, NSET=Corner\n1,0,0,0\n*NODE\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,0.4,0.4,0.4\n7,0.3,0.3,0.3\n"
+      "*ELEMENT, TYPE=C3D4, ELSET=A\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n"
+      "*NSET, NSET=Loaded\nInner,\n"
+      "*NSET, NSET=Inner, GENERATE\n6, 7\n"
+      "*NSET, NSET=FromElements, ELSET=Second\n"
+      "*ELSET, ELSET=Second\n2\n"
+      "*STEP\n*STATIC\n*CLOAD\nLoaded, 1, 10.\n*END STEP\n";
+  EXPECT_EQ(read_text(deck).fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
+  EXPECT_EQ(read_text(replaced(deck, "Loaded, 1", "FromElements, 1")).fixed,
+            (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0, 0}));
+  EXPECT_EQ(read_text(replaced(deck, "Loaded, 1", "corner, 1")).fixed,
+            (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0, 0}));
+  // The set the writer leaves for pins.
+  EXPECT_EQ(read_text(replaced(deck, "NSET=Inner", "NSET=tetsmooth_pinned") + "*NSET, NSET=Inner\n7\n").fixed,
+            (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
+  EXPECT_TRUE(read_text(replaced(deck, "*CLOAD\nLoaded, 1, 10.\n", "")).fixed.empty());
+}
+
+TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
+  TetMesh mesh = testing::cube_grid(3, 0.2);
+  mesh.extras.tet_tags.assign(mesh.num_tets(), 4);
+  for (std::size_t t = 0; t < mesh.num_tets() / 3; ++t) mesh.extras.tet_tags[t] = -2;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags.push_back(100 + 2 * static_cast<long long>(i));
+  PassThroughBlock lines{"line3", 3, {0, 2, 1, 4, 6, 5}, {9, 9}, {}, {}};
+  mesh.extras.blocks.push_back(lines);
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  mesh.fixed[21] = 1;  // an interior node that no element pins
+  for (index_t n : lines.connectivity) mesh.fixed[static_cast<std::size_t>(n)] = 1;
+  const std::string text = write_text(mesh);
+  EXPECT_NE(text.find("*ELEMENT, TYPE=C3D4, ELSET=REGION_M2\n1, "), std::string::npos) << text;
+  EXPECT_NE(text.find("*ELEMENT, TYPE=C3D4, ELSET=REGION_4\n"), std::string::npos);
+  // A 3-node line is written end, middle, end.
+  EXPECT_NE(text.find("*ELEMENT, TYPE=T3D3, ELSET=LINE3_9\n" + std::to_string(mesh.num_tets() + 1) + ", 100, 102, 104\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("*NSET, NSET=TETSMOOTH_PINNED\n142\n"), std::string::npos) << text;
+  const TetMesh back = read_text(text);
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
+  EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  ASSERT_EQ(back.extras.blocks.size(), 1u);
+  EXPECT_EQ(back.extras.blocks[0].kind, "line3");
+  EXPECT_EQ(back.extras.blocks[0].connectivity, lines.connectivity);
+  EXPECT_EQ(back.extras.blocks[0].tags, lines.tags);
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
+TEST(AbaqusIo, SecondOrderTetsListTheirMidsideNodesInEdgeOrder) {
+  const TetMesh mesh = testing::with_midsides(testing::cube_grid(2, 0.1));
+  const std::string text = write_text(mesh);
+  ASSERT_NE(text.find("*ELEMENT, TYPE=C3D10\n"), std::string::npos);
+  const TetMesh back = read_text(text);
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.midsides, mesh.midsides);
+  EXPECT_EQ(back.xyz, mesh.xyz);
+  // A C3D10 lists its corners, then the midside nodes of edges 12, 23, 31,
+  // 14, 24, 34 (Abaqus's manual), which are kTetEdges.
+  const std::string ten =
+      "*NODE\n1,0,0,0\n2,2,0,0\n3,0,2,0\n4,0,0,2\n5,1,0,0\n6,1,1,0\n7,0,1,0\n8,0,0,1\n9,1,0,1\n10,0,1,1\n"
+      "*ELEMENT, TYPE=C3D10MH\n1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10\n";
+  EXPECT_EQ(read_text(ten).midsides, (std::vector<index_t>{4, 5, 6, 7, 8, 9}));
+}
+
+TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
+  testing::ScratchDir dir("abaqus_include");
+  {
+    std::ofstream(dir.file("nodes.inp")) << "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n";
+    std::ofstream(dir.file("model.inp")) << "*HEADING\n*INCLUDE, INPUT=nodes.inp\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n";
+  }
+  const TetMesh mesh = read_abaqus_file(dir.file("model.inp"));
+  EXPECT_EQ(mesh.num_nodes(), 4u);
+  ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
+  EXPECT_NE(mesh.extras.read_notes[0].find(dir.file("nodes.inp") + " will be written inline"), std::string::npos);
+  EXPECT_EQ(write_text(mesh), "*HEADING\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+                              "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n");
+  std::ofstream(dir.file("self.inp")) << "*INCLUDE, INPUT=self.inp\n";
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("self.inp")); }, "self.inp")
+                .find("self.inp:1: *INCLUDE nested more than 16 deep"),
+            std::string::npos);
+  std::ofstream(dir.file("lost.inp")) << "*HEADING\n*INCLUDE, INPUT=missing.inp\n";
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("lost.inp")); }, "lost.inp")
+                .find("lost.inp:2: *INCLUDE: " + dir.file("missing.inp") + ": cannot open"),
+            std::string::npos);
+}
+
+TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
+  const struct {
+    std::string from, to, message;
+  } cases[] = {
+      {"*Heading\n", "*Part, name=Block\n", "t.inp:1: *PART: decks of parts and assemblies are not read"},
+      {"*Step\n", "*NGEN\n", "t.inp:28: *NGEN: node generation is not read"},
+      {"*Node, nset=All\n", "*Node, system=C\n", "t.inp:4: *NODE, SYSTEM=C: nodes in cylindrical or spherical"},
+      {"type=S3R", "type=C3D20R", "t.inp:16: unsupported element type C3D20R (a 20-node hexahedron)"},
+      {"type=S3R", "type=XYZ", "t.inp:16: unsupported element type XYZ;"},
+      {"type=S3R, elset=Skin", "elset=Skin", "t.inp:16: *ELEMENT without TYPE="},
+      {"10, 1, 2, 3,\n 4\n", "10, 1, 2, 3\n", "t.inp:12: element 10 lists 3 of the 4 nodes of a C3D4 (a line"},
+      {"11, 2, 3, 4, 5\n", "11, 2, 3, 4, 5, 6\n", "t.inp:15: element 11 lists 5 nodes, and a C3D4H has 4"},
+      {"11, 2, 3, 4, 5\n", "11, 2, 3, x, 5\n", "t.inp:15: expected a positive node number, found 'x'"},
+      {"11, 2, 3, 4, 5\n", "11, 2, 3, 4, 9\n", "t.inp: element 11 names node 9, which no *NODE line defines"},
+      {"*ELEMENT, TYPE=C3D4H\n", "*ELEMENT, TYPE=C3D10\n", "t.inp:15: element 11 lists 4 of the 10 nodes"},
+      {"6, 0.3, 0.3\n", "6, 0.3, zero\n", "t.inp:10: node 6: expected a finite coordinate, found 'zero'"},
+      {"6, 0.3, 0.3\n", "6, 0.3, 0.3, 0, 1, 0\n", "t.inp:10: node 6 has 6 fields"},
+      {"6, 0.3, 0.3\n", "5, 0.3, 0.3\n", "t.inp: node 5 is defined twice"},
+      {"20, 1, 2, 3\n", "10, 1, 2, 3\n", "t.inp: element 10 is defined twice"},
+      {"elset=Upper, material", "elset=Middle, material", "t.inp:20: no element set MIDDLE is defined"},
+      {"6, 1, 3\n", "Top, 1, 3\n", "t.inp:27: no node set TOP is defined"},
+      {"6, 1, 3\n", "60, 1, 3\n", "t.inp:27: node 60 is not defined"},
+      {"11, 11, 1\n", "11, 9\n", "t.inp:19: a GENERATE range that ends before it starts"},
+      {"*Heading\n", "1, 2\n*Heading\n", "t.inp:1: a data line before the first keyword"},
+  };
+  for (const auto& c : cases) {
+    const std::string message = read_error(replaced(kDeck, c.from, c.to));
+    EXPECT_NE(message.find(c.message), std::string::npos) << "expected: " << c.message << "\ngot: " << message;
+  }
+  EXPECT_NE(read_error("*HEADING\n*NODE\n1,0,0,0\n").find("t.inp: no tets (C3D4 or C3D10 elements)"), std::string::npos);
+  EXPECT_NE(read_error("*ELSET, ELSET=A\n10\n*ELSET, ELSET=B\nA\n*ELSET, ELSET=A\nB\n" + kDeck.substr(9) +
+                       "*SOLID SECTION, ELSET=A\n")
+                .find("element set A contains itself"),
+            std::string::npos);
+}
+
+TEST(AbaqusIo, ElementTypesByFamily) {
+  const auto kind = [](const char* name) {
+    const auto type = abaqus::element_type(name);
+    return type ? type->kind + "/" + std::to_string(type->nodes) : std::string("none");
+  };
+  EXPECT_EQ(kind("c3d4"), "tetra/4");
+  EXPECT_EQ(kind("C3D4PH"), "tetra/4");
+  EXPECT_EQ(kind("DC3D4"), "tetra/4");
+  EXPECT_EQ(kind("C3D10MPH"), "tetra10/10");
+  EXPECT_EQ(kind("AC3D10"), "tetra10/10");
+  EXPECT_EQ(kind("C3D8R"), "hexahedron/8");
+  EXPECT_EQ(kind("CPS6"), "triangle6/6");
+  EXPECT_EQ(kind("S4R5"), "quad/4");
+  EXPECT_EQ(kind("B31OS"), "line/2");
+  EXPECT_EQ(kind("B32"), "line3/3");
+  EXPECT_EQ(kind("MASS"), "vertex/1");
+  EXPECT_EQ(kind("C3D15"), "none");
+  EXPECT_EQ(kind("C3D20R"), "none");
+  EXPECT_EQ(kind("XC3D4"), "none");
+  // Each type the writer gives reads back as its kind.
+  const struct {
+    const char* kind;
+    int nodes;
+  } written[] = {{"tetra", 4},    {"tetra10", 10}, {"hexahedron", 8}, {"wedge", 6}, {"pyramid", 5}, {"triangle", 3},
+                 {"triangle6", 6}, {"quad", 4},     {"line", 2},       {"line3", 3}, {"vertex", 1}};
+  for (const auto& w : written) {
+    const char* name = abaqus::type_name_of(w.kind, w.nodes);
+    ASSERT_NE(name, nullptr) << w.kind;
+    EXPECT_EQ(kind(name), std::string(w.kind) + "/" + std::to_string(w.nodes));
+  }
+  EXPECT_EQ(abaqus::type_name_of("quad", 8), nullptr);
+}
+
+TEST(AbaqusIo, FormatByNameAndWhatOtherFormatsLose) {
+  EXPECT_EQ(format_from_path("model.INP"), MeshFormat::Abaqus);
+  EXPECT_EQ(parse_format("inp"), MeshFormat::Abaqus);
+  EXPECT_STREQ(format_name(MeshFormat::Abaqus), "abaqus");
+  const TetMesh mesh = read_text(kDeck);
+  EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
+  const std::vector<std::string> to_vtu = output_losses(mesh, "out.vtu");
+  ASSERT_EQ(to_vtu.size(), 2u);
+  EXPECT_EQ(to_vtu[0], "the Abaqus element numbers will not be written: vtu numbers them by position");
+  EXPECT_EQ(to_vtu[1], "the rest of the Abaqus deck (*Elset, *Solid Section, *Material, *Elastic, *Boundary, *Step, "
+                       "*Static, *End Step) will not be written: vtu holds the mesh alone");
+  TetMesh hexes = testing::cube_grid(1);
+  hexes.extras.blocks.push_back(PassThroughBlock{"polygon", 7, {}, {}, {}, {}});
+  try {
+    check_writable(hexes, "out.inp");
+    FAIL() << "a 7-node polygon block written to Abaqus";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Abaqus output cannot hold the pass-through 'polygon' block"),
+              std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace tetsmooth

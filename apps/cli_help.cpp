@@ -134,7 +134,9 @@ std::string quality_help() {
 Prints the radius ratio q (min/mean/max, a 10-bin histogram), the number of
 tets with q < 0.1, inverted and degenerate tets, the smallest dihedral angle,
 the mean of the mean-ratio metric, and the K worst tets with their nodes.
-Tet and node indices are 0-based, in file order, whatever the file numbers.
+Tet and node indices are 0-based, in file order, whatever the file numbers;
+where the file numbers its elements or nodes itself (Gmsh tags, Abaqus
+numbers), its numbers follow them.
 Second-order (10-node) tets are measured by their corner tets.
 
 Options:

@@ -82,7 +82,13 @@ nlohmann::ordered_json smooth_report_json(const SmoothCommand& command, const Sm
 
 nlohmann::ordered_json quality_report_json(const QualityCommand& command, const QualityRecord& record) {
   nlohmann::ordered_json worst = nlohmann::ordered_json::array();
-  for (const RankedTet& t : record.worst) worst.push_back({{"tet", t.tet}, {"quality", t.quality}, {"nodes", t.nodes}});
+  for (const RankedTet& t : record.worst) {
+    nlohmann::ordered_json entry = {{"tet", t.tet}, {"quality", t.quality}, {"nodes", t.nodes}};
+    // The file's own numbers, where it has them (worst_tets.hpp).
+    if (t.element != 0) entry["element_number"] = t.element;
+    if (t.node_numbers[0] != 0) entry["node_numbers"] = t.node_numbers;
+    worst.push_back(std::move(entry));
+  }
   nlohmann::ordered_json input = mesh_counts_json(record.mesh);
   input["path"] = command.input;
   input["format"] = input_format_name(record.format);

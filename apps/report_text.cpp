@@ -112,6 +112,16 @@ void write_worst_tets(std::ostream& os, const std::vector<RankedTet>& worst) {
   for (const RankedTet& t : worst) {
     os << "  " << std::setw(12) << t.tet << std::setw(12) << quality_text(t.quality) << "  ";
     for (index_t n : t.nodes) os << ' ' << n;
+    // The file's own numbers, by which its users know the element.
+    if (t.element != 0 || t.node_numbers[0] != 0) {
+      os << "   (in the file:";
+      if (t.element != 0) os << " element " << t.element;
+      if (t.node_numbers[0] != 0) {
+        os << " nodes";
+        for (long long n : t.node_numbers) os << ' ' << n;
+      }
+      os << ')';
+    }
     os << '\n';
   }
 }

@@ -4,6 +4,18 @@
 #include <numeric>
 
 namespace tetsmooth::cli {
+namespace {
+
+// The file's numbers, or empty where they are just positions 1, 2, ...
+// (which the 0-based indices already give) or missing.
+std::vector<long long> own_numbers(const std::vector<long long>& numbers, std::size_t count) {
+  if (numbers.size() != count) return {};
+  for (std::size_t i = 0; i < count; ++i)
+    if (numbers[i] != static_cast<long long>(i) + 1) return numbers;
+  return {};
+}
+
+}  // namespace
 
 std::vector<RankedTet> worst_tets(const TetMesh& mesh, const std::vector<double>& qualities, std::size_t k) {
   std::vector<index_t> order(qualities.size());
@@ -13,12 +25,18 @@ std::vector<RankedTet> worst_tets(const TetMesh& mesh, const std::vector<double>
   std::partial_sort(
       order.begin(), order.begin() + static_cast<std::ptrdiff_t>(k), order.end(),
       [&](index_t a, index_t b) { return qualities[a] < qualities[b] || (qualities[a] == qualities[b] && a < b); });
+  const std::vector<long long> elements = own_numbers(mesh.extras.tet_element_tags, mesh.num_tets());
+  const std::vector<long long> nodes = own_numbers(mesh.extras.node_tags, mesh.num_nodes());
   std::vector<RankedTet> ranked(k);
   for (std::size_t r = 0; r < k; ++r) {
     const index_t t = order[r];
     ranked[r].tet = t;
     ranked[r].quality = qualities[t];
-    for (int c = 0; c < 4; ++c) ranked[r].nodes[c] = mesh.tets[4 * static_cast<std::size_t>(t) + c];
+    if (!elements.empty()) ranked[r].element = elements[static_cast<std::size_t>(t)];
+    for (int c = 0; c < 4; ++c) {
+      ranked[r].nodes[c] = mesh.tets[4 * static_cast<std::size_t>(t) + c];
+      if (!nodes.empty()) ranked[r].node_numbers[c] = nodes[static_cast<std::size_t>(ranked[r].nodes[c])];
+    }
   }
   return ranked;
 }

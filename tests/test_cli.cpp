@@ -1514,6 +1514,25 @@ TEST_F(CliFiles, QualityTextStatesIndexBase) {
   EXPECT_NE(r.out.find("radius ratio histogram"), std::string::npos);
 }
 
+TEST_F(CliFiles, WorstTetsGiveTheFilesOwnNumbers) {
+  // Gmsh numbers the deck's 44 triangles first, so its tets are elements
+  // 45, 46, ...; its nodes are 1, 2, ..., which the indices already give.
+  const std::string in = testing::data_path("abaqus_gmsh_layers.inp");
+  const CliRun text = run({"quality", in, "--worst", "1"});
+  ASSERT_EQ(text.code, kExitOk) << text.err;
+  const CliRun json = run({"quality", in, "--json", "--worst", "3"});
+  ASSERT_EQ(json.code, kExitOk) << json.err;
+  const nlohmann::json worst = nlohmann::json::parse(json.out)["worst_tets"];
+  ASSERT_EQ(worst.size(), 3u);
+  for (const auto& t : worst) {
+    EXPECT_EQ(t["element_number"].get<long long>(), t["tet"].get<long long>() + 45);
+    EXPECT_FALSE(t.contains("node_numbers"));
+  }
+  EXPECT_NE(text.out.find("   (in the file: element " + std::to_string(worst[0]["element_number"].get<long long>()) + ")\n"),
+            std::string::npos)
+      << text.out;
+}
+
 // --- pieces ----------------------------------------------------------------
 
 // The library throws InputError without a file for a mesh too large for its
@@ -1539,7 +1558,18 @@ TEST(CliPieces, WorstTetsPicksTheLowestQualitiesWithTheirNodes) {
   EXPECT_EQ(worst[2].tet, 8);
   EXPECT_DOUBLE_EQ(worst[2].quality, 0.2);
   for (int c = 0; c < 4; ++c) EXPECT_EQ(worst[1].nodes[c], mesh.tets[4 * 3 + c]);
+  EXPECT_EQ(worst[1].element, 0);  // the file numbers nothing
+  EXPECT_EQ(worst[1].node_numbers[0], 0);
   EXPECT_EQ(worst_tets(mesh, q, 100).size(), q.size());
+  // With numbers of the file's own, the file's numbers too; numbers that are
+  // just the positions 1, 2, ... add nothing to the indices.
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) mesh.extras.tet_element_tags.push_back(100 + static_cast<long long>(t));
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags.push_back(static_cast<long long>(i) + 1);
+  const RankedTet numbered = worst_tets(mesh, q, 2)[1];
+  EXPECT_EQ(numbered.element, 103);
+  EXPECT_EQ(numbered.node_numbers[0], 0);
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags[i] += 10;
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(worst_tets(mesh, q, 2)[1].node_numbers[c], mesh.tets[4 * 3 + c] + 11);
 }
 
 // The histogram has ten bins of 0.1 up to q = 1 inclusive: the top bin holds

@@ -228,24 +228,77 @@ TEST(AbaqusIo, SecondOrderTetsListTheirMidsideNodesInEdgeOrder) {
 
 TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   testing::ScratchDir dir("abaqus_include");
+  std::filesystem::create_directory(dir.file("mesh"));
   {
-    std::ofstream(dir.file("nodes.inp")) << "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n";
-    std::ofstream(dir.file("model.inp")) << "*HEADING\n*INCLUDE, INPUT=nodes.inp\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n";
+    // Relative paths, in a nested file too, start from the job's directory
+    // (the first deck's), as Abaqus takes them; '\' is read as '/'.
+    std::ofstream(dir.file("mesh/nodes.inp")) << "\xEF\xBB\xBF*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n";
+    std::ofstream(dir.file("mesh/model.inp")) << "*INCLUDE, INPUT=mesh\\nodes.inp\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n";
+    std::ofstream(dir.file("job.inp")) << "*HEADING\n*INCLUDE, INPUT=\"mesh/model.inp\"\n*STEP\n";
   }
-  const TetMesh mesh = read_abaqus_file(dir.file("model.inp"));
+  const TetMesh mesh = read_abaqus_file(dir.file("job.inp"));
   EXPECT_EQ(mesh.num_nodes(), 4u);
-  ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
-  EXPECT_NE(mesh.extras.read_notes[0].find(dir.file("nodes.inp") + " will be written inline"), std::string::npos);
   EXPECT_EQ(write_text(mesh), "*HEADING\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
-                              "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n");
-  std::ofstream(dir.file("self.inp")) << "*INCLUDE, INPUT=self.inp\n";
+                              "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*STEP\n");
+  const std::vector<std::string> notes = output_losses(mesh, "out.inp");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "the *INCLUDE files (" + dir.file("mesh/model.inp") + ", " + dir.file("mesh/nodes.inp") +
+                          ") will be written inline, in the one output deck");
+  // Errors name the line of the included file.
+  std::ofstream(dir.file("mesh/nodes.inp")) << "*NODE\n1,0,0,0\n1,1,0,0\n";
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("job.inp")); }, "job.inp")
+                .find(dir.file("mesh/nodes.inp") + ":3: node 1 is defined a second time"),
+            std::string::npos);
+  std::ofstream(dir.file("self.inp")) << "*HEADING\n*INCLUDE, INPUT=self.inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("self.inp")); }, "self.inp")
-                .find("self.inp:1: *INCLUDE nested more than 16 deep"),
+                .find("self.inp:2: *INCLUDE: " + dir.file("self.inp") + " includes itself"),
             std::string::npos);
   std::ofstream(dir.file("lost.inp")) << "*HEADING\n*INCLUDE, INPUT=missing.inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("lost.inp")); }, "lost.inp")
                 .find("lost.inp:2: *INCLUDE: " + dir.file("missing.inp") + ": cannot open"),
             std::string::npos);
+}
+
+TEST(AbaqusIo, ShortenedKeywordsAndParametersAndQuotedNames) {
+  // Abaqus takes any unambiguous prefix of a keyword or parameter.
+  std::string deck = replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*ELEM, TYP=C3D4, ELS=Lower");
+  deck = replaced(deck, "*Elset, elset=Upper, generate", "*ELSET, ELSET=Upper, GEN");
+  deck = replaced(deck, "*Solid Section, elset=Upper", "*Solid Sec, elset=Upper");
+  deck = replaced(deck, "*Boundary\n6, 1, 3\n", "*BOUND\n\"Free node\", 1, 3\n*NSET, NSET=\"Free node\"\n6\n");
+  const TetMesh mesh = read_text(deck);
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2, 1}));
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 1}));
+  // A quoted name keeps its spaces; an unquoted one loses them.
+  EXPECT_NE(read_error(replaced(deck, "NSET=\"Free node\"", "NSET=Freenode")).find("no node set FREE NODE is defined"),
+            std::string::npos);
+  // A prefix of two keywords the reader knows is no abbreviation of either.
+  EXPECT_NE(read_error(replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*EL, type=C3D4"))
+                .find("t.inp:11: keyword line: the keyword EL could be short for ELEMENT, ELSET, ELGEN or ELCOPY"),
+            std::string::npos);
+}
+
+TEST(AbaqusIo, EquationsAndMultiPointConstraintsPinTheirNodes) {
+  const std::string base =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,0.4,0.4,0.4\n7,0.3,0.3,0.3\n"
+      "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n*NSET, NSET=Six\n6\n";
+  EXPECT_EQ(read_text(base + "*EQUATION\n2\n7, 1, 1.0, Six, 1, -1.0\n").fixed,
+            (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
+  EXPECT_EQ(read_text(base + "*MPC\nBEAM, 7, 0, 1\n").fixed, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0, 1}));
+  EXPECT_EQ(read_text(base + "*CFLOW\nSix, , 2.5\n").fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0}));
+}
+
+TEST(AbaqusIo, RegionsFromElementSetsAloneWhereTheDeckHasNothingElse) {
+  // meshio writes Gmsh's physical groups as *ELSET lists; a set over every
+  // tet splits nothing.
+  const std::string deck =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,-1,-1,-1\n"
+      "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n3, 6, 1, 3, 2\n"
+      "*ELEMENT, TYPE=COH3D6\n4, 1, 2, 3, 1, 2, 3\n"
+      "*ELSET, ELSET=All\n1, 2, 3, 4\n*ELSET, ELSET=Rock\n2\n*ELSET, ELSET=Soil\n1, 3\n";
+  const TetMesh mesh = read_text(deck);
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1, 2, 1}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "wedge");
 }
 
 TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
@@ -258,15 +311,15 @@ TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
       {"type=S3R", "type=C3D20R", "t.inp:16: unsupported element type C3D20R (a 20-node hexahedron)"},
       {"type=S3R", "type=XYZ", "t.inp:16: unsupported element type XYZ;"},
       {"type=S3R, elset=Skin", "elset=Skin", "t.inp:16: *ELEMENT without TYPE="},
-      {"10, 1, 2, 3,\n 4\n", "10, 1, 2, 3\n", "t.inp:12: element 10 lists 3 of the 4 nodes of a C3D4 (a line"},
-      {"11, 2, 3, 4, 5\n", "11, 2, 3, 4, 5, 6\n", "t.inp:15: element 11 lists 5 nodes, and a C3D4H has 4"},
+      {"10, 1, 2, 3,\n 4\n", "10, 1, 2, 3\n", "t.inp:12: element 10 of type C3D4 lists 3 of its 4 nodes (a line that goes on"},
+      {"11, 2, 3, 4, 5\n", "11, 2, 3, 4, 5, 6\n", "t.inp:15: element 11 of type C3D4H lists 5 nodes, not 4"},
       {"11, 2, 3, 4, 5\n", "11, 2, 3, x, 5\n", "t.inp:15: expected a positive node number, found 'x'"},
-      {"11, 2, 3, 4, 5\n", "11, 2, 3, 4, 9\n", "t.inp: element 11 names node 9, which no *NODE line defines"},
-      {"*ELEMENT, TYPE=C3D4H\n", "*ELEMENT, TYPE=C3D10\n", "t.inp:15: element 11 lists 4 of the 10 nodes"},
+      {"11, 2, 3, 4, 5\n", "11, 2, 3, 4, 9\n", "t.inp:15: element 11 names node 9, which no *NODE line defines"},
+      {"*ELEMENT, TYPE=C3D4H\n", "*ELEMENT, TYPE=C3D10\n", "t.inp:15: element 11 of type C3D10 lists 4 of its 10 nodes"},
       {"6, 0.3, 0.3\n", "6, 0.3, zero\n", "t.inp:10: node 6: expected a finite coordinate, found 'zero'"},
       {"6, 0.3, 0.3\n", "6, 0.3, 0.3, 0, 1, 0\n", "t.inp:10: node 6 has 6 fields"},
-      {"6, 0.3, 0.3\n", "5, 0.3, 0.3\n", "t.inp: node 5 is defined twice"},
-      {"20, 1, 2, 3\n", "10, 1, 2, 3\n", "t.inp: element 10 is defined twice"},
+      {"6, 0.3, 0.3\n", "5, 0.3, 0.3\n", "t.inp:10: node 5 is defined a second time"},
+      {"20, 1, 2, 3\n", "10, 1, 2, 3\n", "t.inp:17: element 10 is defined a second time"},
       {"elset=Upper, material", "elset=Middle, material", "t.inp:20: no element set MIDDLE is defined"},
       {"6, 1, 3\n", "Top, 1, 3\n", "t.inp:27: no node set TOP is defined"},
       {"6, 1, 3\n", "60, 1, 3\n", "t.inp:27: node 60 is not defined"},

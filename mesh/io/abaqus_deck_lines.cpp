@@ -2,19 +2,57 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <stdexcept>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/input_file.hpp"
-#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::abaqus {
 namespace {
 
-// Nested *INCLUDE files deeper than this are taken for a file that
-// includes itself.
-constexpr std::size_t kMaxIncludeDepth = 16;
+// Deeper *INCLUDE nesting is refused, whatever the files.
+constexpr std::size_t kMaxIncludeDepth = 64;
+
+// The keywords the reader interprets (or refuses), each with the parameters
+// it reads, in full and normalized: the names an abbreviation may stand for.
+struct Known {
+  const char* keyword;
+  std::vector<const char*> params;
+};
+const std::vector<Known>& known_keywords() {
+  static const std::vector<Known> known = {
+      {"HEADING", {}},       {"NODE", {"NSET", "SYSTEM", "INPUT"}}, {"ELEMENT", {"TYPE", "ELSET", "INPUT"}},
+      {"NSET", {"NSET", "ELSET", "GENERATE"}}, {"ELSET", {"ELSET", "GENERATE"}},
+      {"SOLIDSECTION", {"ELSET", "MATERIAL"}}, {"BOUNDARY", {}}, {"CLOAD", {}}, {"CFLUX", {}}, {"CFLOW", {}},
+      {"EQUATION", {}},      {"MPC", {}},        {"INCLUDE", {"INPUT"}}, {"PART", {}},  {"ASSEMBLY", {}},
+      {"INSTANCE", {}},      {"NGEN", {}},       {"NFILL", {}},          {"NCOPY", {}}, {"NMAP", {}},
+      {"SYSTEM", {}},        {"ELGEN", {}},      {"ELCOPY", {}},
+  };
+  return known;
+}
+
+// `name` in full: itself when it is one of `names` or a prefix of none,
+// the one it begins if it begins one. Throws std::invalid_argument when it
+// begins several: Abaqus would refuse it, and taking one could misread the
+// deck.
+template <class Names, class NameOf>
+std::string in_full(const std::string& name, const Names& names, NameOf name_of, const char* what) {
+  std::vector<std::string_view> begun;
+  for (const auto& n : names) {
+    const std::string_view full = name_of(n);
+    if (full == name) return name;
+    if (!name.empty() && full.substr(0, name.size()) == name) begun.push_back(full);
+  }
+  if (begun.size() == 1) return std::string(begun.front());
+  if (begun.empty()) return name;
+  std::string list;
+  for (std::size_t i = 0; i < begun.size(); ++i)
+    list += std::string(i == 0 ? "" : i + 1 == begun.size() ? " or " : ", ") + std::string(begun[i]);
+  throw std::invalid_argument(std::string(what) + " " + name + " could be short for " + list + ": write more of it");
+}
 
 std::string_view trimmed(std::string_view s) {
   while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
@@ -66,6 +104,14 @@ std::string normalized(std::string_view name) {
   return out;
 }
 
+std::string set_name(std::string_view name) {
+  name = trimmed(name);
+  if (name.size() < 2 || name.front() != '"' || name.back() != '"') return normalized(name);
+  std::string out(name.substr(1, name.size() - 2));
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
 const std::string* Keyword::param(std::string_view key) const {
   for (const auto& [param_name, value] : params)
     if (param_name == key) return &value;
@@ -77,16 +123,18 @@ Keyword parse_keyword(std::string_view line) {
   for (char& c : joined)
     if (c == '\n') c = ' ';
   const std::vector<std::string_view> parts = split_quoted(trimmed(joined));
+  const auto& known = known_keywords();
   Keyword kw;
-  kw.name = normalized(parts.front().substr(1));
+  kw.name = in_full(normalized(parts.front().substr(1)), known, [](const Known& k) { return std::string_view(k.keyword); },
+                    "the keyword");
+  const auto it = std::find_if(known.begin(), known.end(), [&](const Known& k) { return kw.name == k.keyword; });
   for (std::size_t i = 1; i < parts.size(); ++i) {
     const std::string_view part = trimmed(parts[i]);
     if (part.empty()) continue;  // the comma before a continuation line
     const std::size_t eq = part.find('=');
-    if (eq == std::string_view::npos)
-      kw.params.emplace_back(normalized(part), "");
-    else
-      kw.params.emplace_back(normalized(part.substr(0, eq)), unquoted(part.substr(eq + 1)));
+    std::string name = normalized(part.substr(0, eq));
+    if (it != known.end()) name = in_full(name, it->params, [](const char* p) { return std::string_view(p); }, "the parameter");
+    kw.params.emplace_back(std::move(name), eq == std::string_view::npos ? "" : std::string(trimmed(part.substr(eq + 1))));
   }
   return kw;
 }
@@ -109,31 +157,47 @@ bool ends_with_comma(std::string_view line) {
   return !t.empty() && t.back() == ',';
 }
 
-DeckLines::DeckLines(std::istream& in, std::string source) { stack_.push_back(Source{&in, nullptr, std::move(source)}); }
+DeckLines::DeckLines(std::istream& in, std::string source) : directory_(directory_of(source)) {
+  stack_.push_back(Source{&in, nullptr, std::move(source)});
+  new_stretch();
+}
 
 DeckLines::~DeckLines() = default;
+
+void DeckLines::new_stretch() {
+  if (!stack_.empty()) stretches_.push_back(Stretch{lines_read_ + 1, stack_.back().path, stack_.back().line + 1});
+}
 
 bool DeckLines::raw_line(std::string& out) {
   while (!stack_.empty()) {
     Source& s = stack_.back();
     if (std::getline(*s.in, out)) {
       ++s.line;
+      ++lines_read_;
+      if (s.line == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);  // a UTF-8 byte order mark
       if (!out.empty() && out.back() == '\r') out.pop_back();
-      where_ = s.path + ":" + std::to_string(s.line);
       return true;
     }
     if (s.in->bad()) throw InputError(s.path, "read error");
     stack_.pop_back();
+    new_stretch();
   }
   return false;
 }
 
 void DeckLines::include(const Keyword& kw) {
-  const std::string* file = kw.param("INPUT");
-  if (file == nullptr || file->empty()) fail("*INCLUDE without INPUT=file");
+  const std::string* input = kw.param("INPUT");
+  std::string file = input == nullptr ? "" : unquoted(*input);
+  if (file.empty()) fail("*INCLUDE without INPUT=file");
+  std::replace(file.begin(), file.end(), '\\', '/');
+  const std::string path = file.front() == '/' ? file : directory_ + file;
   if (stack_.size() > kMaxIncludeDepth)
-    fail("*INCLUDE nested more than " + std::to_string(kMaxIncludeDepth) + " deep (does a file include itself?)");
-  const std::string path = file->front() == '/' ? *file : directory_of(stack_.back().path) + *file;
+    fail("*INCLUDE nested more than " + std::to_string(kMaxIncludeDepth) + " files deep");
+  std::error_code ec;
+  const auto canonical = std::filesystem::weakly_canonical(path, ec);
+  for (const Source& s : stack_)
+    if (!ec && std::filesystem::weakly_canonical(s.path, ec) == canonical && !ec)
+      fail("*INCLUDE: " + path + " includes itself, through the files that include it");
   // A device or a pipe (/dev/zero, say) might never end.
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
@@ -145,12 +209,14 @@ void DeckLines::include(const Keyword& kw) {
   } catch (const InputError& e) {
     fail(std::string("*INCLUDE: ") + e.what());
   }
+  new_stretch();
   included_.push_back(path);
 }
 
 bool DeckLines::next() {
   for (;;) {
     if (!raw_line(text_)) return false;
+    mark_ = lines_read_;
     if (is_comment(text_)) {
       kind_ = Kind::Comment;
       return true;
@@ -159,14 +225,11 @@ bool DeckLines::next() {
       kind_ = Kind::Data;
       return true;
     }
-    const std::string first = where_;
     std::string more;
-    while (ends_with_comma(text_)) {
-      if (!raw_line(more)) break;
+    while (ends_with_comma(text_) && raw_line(more)) {
       text_ += '\n';
       text_ += more;
     }
-    where_ = first;
     try {
       keyword_ = parse_keyword(text_);
     } catch (const std::invalid_argument& e) {
@@ -181,8 +244,16 @@ bool DeckLines::next() {
   }
 }
 
-std::string DeckLines::where() const { return where_; }
+std::string DeckLines::where_of(std::uint32_t mark) const {
+  const auto after = std::upper_bound(stretches_.begin(), stretches_.end(), mark,
+                                      [](std::uint32_t m, const Stretch& s) { return m < s.first; });
+  if (after == stretches_.begin()) return "";
+  const Stretch& s = *(after - 1);
+  return s.path + ":" + std::to_string(s.line + (mark - s.first));
+}
 
-void DeckLines::fail(const std::string& what) const { throw InputError(where_, what); }
+std::string DeckLines::where() const { return where_of(mark_); }
+
+void DeckLines::fail(const std::string& what) const { throw InputError(where(), what); }
 
 }  // namespace tetsmooth::abaqus

@@ -3,9 +3,13 @@
 // public API). A deck is a sequence of keyword lines ("*Element,
 // type=C3D4, elset=Soil"), each followed by its data lines (fields split by
 // commas); "**" starts a comment line. Keyword and parameter names ignore
-// case and spaces; a keyword line that ends with a comma goes on on the next
-// line. *INCLUDE, INPUT=file reads that file in its place (relative to the
-// including file's directory), as Abaqus does.
+// case and spaces, and those the reader interprets may be shortened to any
+// prefix that no other of them shares (*ELEM, GEN), as Abaqus allows
+// unambiguous abbreviations; a keyword line that ends with a comma goes on
+// on the next line. *INCLUDE, INPUT=file reads that file in its place, a
+// relative path taken from the directory of the deck first read (the job's
+// directory, from which Abaqus resolves it), '\' read as '/'.
+#include <cstdint>
 #include <fstream>
 #include <istream>
 #include <memory>
@@ -18,17 +22,20 @@ namespace tetsmooth::abaqus {
 
 // A keyword line, parsed.
 struct Keyword {
-  std::string name;  // upper case, without the '*' and spaces: "ELEMENT", "SOLIDSECTION"
-  // Parameters in order: names upper case without spaces, values trimmed
-  // and unquoted as written ("" for a parameter without a value).
+  // Upper case, without the '*' and spaces, in full where it shortens one
+  // the reader interprets: "ELEMENT", "SOLIDSECTION".
+  std::string name;
+  // Parameters in order: names as `name`; values trimmed, as written (a
+  // quoted value keeps its quotes), "" for a parameter without a value.
   std::vector<std::pair<std::string, std::string>> params;
 
-  // The value of parameter `name` (upper case), or nullptr.
+  // The value of parameter `key` (upper case, in full), or nullptr.
   const std::string* param(std::string_view key) const;
 };
 
 // Parses a keyword line (its continuation lines joined after it). Throws
-// std::invalid_argument with the reason on an unclosed quote.
+// std::invalid_argument with the reason on an unclosed quote or a name that
+// shortens more than one the reader interprets.
 Keyword parse_keyword(std::string_view line);
 
 // The comma-separated fields of a data line, without surrounding spaces; a
@@ -38,9 +45,13 @@ std::vector<std::string_view> split_fields(std::string_view line);
 // Whether a data line ends with a comma (an element line that goes on).
 bool ends_with_comma(std::string_view line);
 
-// Upper case, spaces removed: how Abaqus compares keyword, parameter and set
-// names.
+// How Abaqus compares keyword and parameter names: upper case, spaces
+// removed.
 std::string normalized(std::string_view name);
+
+// How Abaqus compares set names: upper case; a name in double quotes keeps
+// its spaces (and loses the quotes), any other loses them.
+std::string set_name(std::string_view name);
 
 class DeckLines {
  public:
@@ -54,7 +65,7 @@ class DeckLines {
   bool next();
   Kind kind() const { return kind_; }
   // The line as written (a keyword's continuation lines joined by '\n'),
-  // without the line break and a trailing '\r'.
+  // without the line break, a trailing '\r' and a file's byte order mark.
   const std::string& text() const { return text_; }
   // The parsed keyword, for Kind::Keyword.
   const Keyword& keyword() const { return keyword_; }
@@ -62,6 +73,10 @@ class DeckLines {
   // "file:line" of the current line, and InputError there.
   std::string where() const;
   [[noreturn]] void fail(const std::string& what) const;
+  // The place of the current line, 4 bytes to keep per item read (a node, an
+  // element) for a message once the whole deck is read, and its "file:line".
+  std::uint32_t mark() const { return mark_; }
+  std::string where_of(std::uint32_t mark) const;
 
   // The files *INCLUDE read, in the order met.
   const std::vector<std::string>& included() const { return included_; }
@@ -73,14 +88,24 @@ class DeckLines {
     std::string path;
     std::size_t line = 0;
   };
+  // From line `first` of the deck on (counted over every file), lines come
+  // from `path`, its line `first` being line `line` of the file.
+  struct Stretch {
+    std::uint32_t first;
+    std::string path;
+    std::size_t line;
+  };
   bool raw_line(std::string& out);
   void include(const Keyword& kw);
+  void new_stretch();
 
   std::vector<Source> stack_;
+  std::string directory_;  // of the deck first read, for relative *INCLUDE paths
   std::string text_;
   Keyword keyword_;
   Kind kind_ = Kind::Data;
-  std::string where_;
+  std::uint32_t lines_read_ = 0, mark_ = 0;
+  std::vector<Stretch> stretches_;
   std::vector<std::string> included_;
 };
 

@@ -20,6 +20,10 @@ struct Family {
 constexpr Family kFamilies[] = {
     {"C3D4", true, "tetra", 4},         {"C3D10", true, "tetra10", 10},      {"C3D8", true, "hexahedron", 8},
     {"C3D6", true, "wedge", 6},         {"C3D5", true, "pyramid", 5},
+    // Cohesive elements (a fault, a joint), infinite elements and continuum
+    // shells pass through like any other solid.
+    {"COH3D6", false, "wedge", 6},      {"COH3D8", false, "hexahedron", 8}, {"CIN3D8", false, "hexahedron", 8},
+    {"SC6R", false, "wedge", 6},        {"SC8R", false, "hexahedron", 8},
     {"SFM3D3", false, "triangle", 3},   {"S3", false, "triangle", 3},       {"STRI3", false, "triangle", 3},
     {"CPS3", false, "triangle", 3},     {"CPE3", false, "triangle", 3},     {"CAX3", false, "triangle", 3},
     {"M3D3", false, "triangle", 3},     {"R3D3", false, "triangle", 3},     {"DS3", false, "triangle", 3},
@@ -32,7 +36,8 @@ constexpr Family kFamilies[] = {
     {"DS4", false, "quad", 4},          {"DC2D4", false, "quad", 4},        {"T3D2", false, "line", 2},
     {"T2D2", false, "line", 2},         {"B31", false, "line", 2},          {"B21", false, "line", 2},
     {"RB3D2", false, "line", 2},        {"CONN3D2", false, "line", 2},      {"SPRINGA", false, "line", 2},
-    {"DASHPOTA", false, "line", 2},     {"DC1D2", false, "line", 2},        {"T3D3", false, "line3", 3},
+    {"DASHPOTA", false, "line", 2},     {"DC1D2", false, "line", 2},        {"SPRING2", false, "line", 2},
+    {"DASHPOT2", false, "line", 2},     {"GAPUNI", false, "line", 2},        {"T3D3", false, "line3", 3},
     {"T2D3", false, "line3", 3},        {"B32", false, "line3", 3},         {"B22", false, "line3", 3},
     {"MASS", false, "vertex", 1},       {"ROTARYI", false, "vertex", 1},    {"SPRING1", false, "vertex", 1},
     {"DASHPOT1", false, "vertex", 1},   {"HEATCAP", false, "vertex", 1},

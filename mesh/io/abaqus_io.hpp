@@ -17,18 +17,23 @@
 //    negative after "_M", as the writer names negative tags: REGION_M2 is
 //    -2), else the names numbered 1, 2, ... in the order met. Other
 //    elements get their tags from their ELSET= names the same way.
-//  * Pinned nodes, besides those of non-tet elements: nodes that *BOUNDARY
-//    or *CLOAD name (by number or node set), and the node set
-//    TETSMOOTH_PINNED that the writer leaves for pins nothing else keeps.
-//  * *INCLUDE files are read in place. Parts and assemblies, node and element
-//    generation (*NGEN, *ELGEN, ...), and nodes in other coordinate systems
-//    (*SYSTEM, SYSTEM=C|S) are refused with a message.
+//    A deck with neither: the tets that the same *ELSET sets hold form a
+//    region (meshio writes Gmsh's physical groups so), for up to 64 sets.
+//  * Pinned nodes, besides those of non-tet elements: nodes that loads and
+//    constraints name (by number or node set): *BOUNDARY, *CLOAD, *CFLUX,
+//    *CFLOW, *EQUATION and *MPC; and the node set TETSMOOTH_PINNED that the
+//    writer leaves for pins nothing else keeps.
+//  * *INCLUDE files are read in place (abaqus_deck_lines.hpp). Parts and
+//    assemblies, node and element generation (*NGEN, *ELGEN, ...), and nodes
+//    in other coordinate systems (*SYSTEM, SYSTEM=C|S) are refused with a
+//    message.
 //  * The deck is kept in FileExtras::raw_sections, in order: "abaqus:text"
 //    bodies as read (lines end in '\n'; included files inline) and
 //    "abaqus:nodes" counts of the *NODE lines between them, then
 //    "abaqus:deck" ("<nodes> <tets>", what the deck describes) and
 //    "abaqus:keywords" (the deck's keywords other than *HEADING, *NODE and
-//    *ELEMENT, as written, for a note when another format drops them).
+//    *ELEMENT, as written, for a note when another format drops them) and
+//    "abaqus:includes" (the files *INCLUDE read).
 //
 // Writing: a mesh read from a deck is written as that deck, each *NODE line
 // "id, x, y, z" with the new coordinates in shortest round-trip form and

@@ -11,6 +11,7 @@
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/abaqus_regions.hpp"
 #include "mesh/io/abaqus_sets.hpp"
 #include "mesh/io/input_file.hpp"
 #include "mesh/io/text_lines.hpp"
@@ -45,6 +46,27 @@ constexpr Refused kRefused[] = {
     {"ELCOPY", kElementGeneration},
 };
 
+// Keywords whose data lines name nodes that loads or constraints act on,
+// which keep their places: by number or node set, in the first field of
+// each line (concentrated loads, fluxes and flows, boundary conditions) or
+// in every field but the first (*MPC: its type, then its nodes), or in each
+// term's first field (*EQUATION: lines of node, degree of freedom,
+// coefficient, after a line with the number of terms).
+enum class Names { First, AfterFirst, EveryThird };
+struct PinKeyword {
+  const char* keyword;
+  Names names;
+};
+constexpr PinKeyword kPinKeywords[] = {
+    {"BOUNDARY", Names::First}, {"CLOAD", Names::First},        {"CFLUX", Names::First},
+    {"CFLOW", Names::First},    {"MPC", Names::AfterFirst}, {"EQUATION", Names::EveryThird},
+};
+
+// More element sets than this are not used to tell regions apart in a deck
+// without sections or ELSET= on its *ELEMENT lines (each set takes a pass
+// over the elements).
+constexpr std::size_t kMaxRegionSets = 64;
+
 // The set of the node pins that the writer leaves (abaqus_io.hpp).
 constexpr const char* kPinnedSet = "TETSMOOTH_PINNED";
 
@@ -60,52 +82,6 @@ bool finite_real(std::string_view field, double& value) {
   return std::isfinite(value);
 }
 
-// The whole number a set name ends with, if it has one that fits an int;
-// "_M" before it makes it negative, as the writer names negative tags.
-bool trailing_number(const std::string& name, int& value) {
-  std::size_t start = name.size();
-  while (start > 0 && std::isdigit(static_cast<unsigned char>(name[start - 1]))) --start;
-  long long v = 0;
-  if (start == name.size() || name.size() - start > 9 || !parse_integer(std::string_view(name).substr(start), v))
-    return false;
-  const bool negative = start >= 2 && name.compare(start - 2, 2, "_M") == 0;
-  value = static_cast<int>(negative ? -v : v);
-  return true;
-}
-
-// Region tags for element set names in the order met: each name's trailing
-// number where every name has one and no two share it, else 1, 2, ...
-std::vector<int> region_numbers(const std::vector<std::string>& names) {
-  std::vector<int> numbers;
-  for (const std::string& name : names) {
-    int n = 0;
-    if (!trailing_number(name, n) || std::find(numbers.begin(), numbers.end(), n) != numbers.end()) {
-      numbers.clear();
-      for (std::size_t i = 0; i < names.size(); ++i) numbers.push_back(static_cast<int>(i) + 1);
-      return numbers;
-    }
-    numbers.push_back(n);
-  }
-  return numbers;
-}
-
-// Region tags for elements that carry the index (1-based; 0 for none) of
-// their *ELEMENT line's ELSET in `names`: empty when no element has one.
-std::vector<int> region_tags(const std::vector<std::uint32_t>& elsets, const std::vector<std::string>& names) {
-  std::vector<std::uint32_t> order;  // name indices in the order met
-  for (std::uint32_t e : elsets)
-    if (e != 0 && std::find(order.begin(), order.end(), e) == order.end()) order.push_back(e);
-  if (order.empty()) return {};
-  std::vector<std::string> met;
-  for (std::uint32_t e : order) met.push_back(names[e - 1]);
-  const std::vector<int> numbers = region_numbers(met);
-  std::vector<int> tags;
-  tags.reserve(elsets.size());
-  for (std::uint32_t e : elsets)
-    tags.push_back(e == 0 ? 0 : numbers[static_cast<std::size_t>(std::find(order.begin(), order.end(), e) - order.begin())]);
-  return tags;
-}
-
 class AbaqusReader {
  public:
   explicit AbaqusReader(DeckLines& lines) : lines_(lines) {}
@@ -117,12 +93,17 @@ class AbaqusReader {
   struct Others {
     abaqus::ElementType type;
     std::vector<long long> ids, nodes;  // nodes in PassThroughBlock order, by file id
-    std::vector<std::uint32_t> elsets;  // see region_tags()
+    std::vector<std::uint32_t> elsets;  // see abaqus::tags_from_element_sets
+  };
+  // A node or node set that a load or constraint names, and its line.
+  struct PinRef {
+    std::string name;
+    std::uint32_t mark;
   };
 
   void keyword();
   void data();
-  // Ends a run of node lines in the kept deck, then keeps `line`.
+  // Ends a run of node lines in the kept deck.
   void flush_nodes();
   void append_text(const std::string& line);
   void finish_block();
@@ -132,44 +113,52 @@ class AbaqusReader {
   void element_line();
   void add_element();
   void set_line();
+  void pin_line();
   std::uint32_t elset_index(const std::string* name);
+  std::string element_type_text() const { return "element " + std::to_string(pending_.front()) + " of type " + type_name_; }
 
-  void resolve(const std::string& source);
+  void resolve();
   void resolve_regions(const abaqus::IdIndex& element_ids);
   void resolve_pins(const abaqus::IdIndex& node_ids, const abaqus::IdIndex& element_ids);
+  std::vector<std::uint8_t> elements_of(const std::string& elset, const std::string& where,
+                                        const abaqus::IdIndex& element_ids) const;
 
   DeckLines& lines_;
   TetMesh mesh_;
   abaqus::DeckSets sets_;
   Block block_ = Block::None;
+  Names pin_names_ = Names::First;
 
-  std::string text_;         // the deck since the last run of node lines
+  std::string text_;          // the deck since the last run of node lines
   std::size_t node_run_ = 0;  // node lines since the last text
-  std::string node_set_;     // NSET= of the current *NODE
+  std::string node_set_;      // NSET= of the current *NODE
   std::size_t block_first_ = 0;
+  std::vector<std::uint32_t> node_marks_;  // per node, its line (DeckLines::mark)
 
   abaqus::ElementType type_;
   std::string type_name_;
   std::uint32_t elset_ = 0;
   std::string elset_name_;
   std::vector<long long> pending_;  // an element's id and nodes so far
-  std::string pending_where_;
+  std::uint32_t pending_mark_ = 0;
 
-  std::vector<long long> element_ids_;    // every element, in read order
-  std::vector<std::int64_t> element_at_;  // per element: tet index, or -1 - its place in others_at_
+  std::vector<long long> element_ids_;       // every element, in read order
+  std::vector<std::uint32_t> element_marks_;  // per element, its first line
+  std::vector<std::int64_t> element_at_;     // per element: tet index, or -1 - its place in others_at_
   std::vector<std::pair<std::size_t, std::size_t>> others_at_;  // (block, element) of each other element
   std::vector<long long> tet_ids_, tet_nodes_;
   int tet_nodes_each_ = 0;
   std::vector<std::uint32_t> tet_elsets_;
   std::vector<Others> others_;
-  std::vector<std::string> elset_names_;  // ELSET= names of *ELEMENT lines, normalized
+  std::vector<std::string> elset_names_;  // ELSET= names of *ELEMENT lines (set_name)
+  std::vector<std::string> elset_order_;  // every element set, in the order defined
 
   abaqus::SetPart part_;
   std::string set_name_;
   bool set_of_nodes_ = false, generate_ = false;
 
   std::vector<std::pair<std::string, std::string>> sections_;  // *SOLID SECTION's ELSET, and where
-  std::vector<std::pair<std::string, std::string>> pin_refs_;  // a node or node set, and where
+  std::vector<PinRef> pin_refs_;
   std::vector<std::string> other_keywords_;  // as written, each once
 };
 
@@ -189,7 +178,9 @@ void AbaqusReader::append_text(const std::string& line) {
 
 std::uint32_t AbaqusReader::elset_index(const std::string* name) {
   if (name == nullptr) return 0;
-  elset_name_ = abaqus::normalized(*name);
+  elset_name_ = abaqus::set_name(*name);
+  if (std::find(elset_order_.begin(), elset_order_.end(), elset_name_) == elset_order_.end())
+    elset_order_.push_back(elset_name_);
   const auto it = std::find(elset_names_.begin(), elset_names_.end(), elset_name_);
   if (it != elset_names_.end()) return static_cast<std::uint32_t>(it - elset_names_.begin()) + 1;
   elset_names_.push_back(elset_name_);
@@ -203,9 +194,9 @@ void AbaqusReader::finish_block() {
       break;
     case Block::Element:
       if (!pending_.empty())
-        throw InputError(pending_where_, "element " + std::to_string(pending_.front()) + " lists " +
-                                             std::to_string(pending_.size() - 1) + " of the " +
-                                             std::to_string(type_.nodes) + " nodes of a " + type_name_);
+        throw InputError(lines_.where_of(pending_mark_), element_type_text() + " lists " +
+                                                             std::to_string(pending_.size() - 1) + " of its " +
+                                                             std::to_string(type_.nodes) + " nodes");
       if (elset_ != 0) sets_.add_element_run(elset_name_, block_first_, element_ids_.size() - block_first_);
       break;
     case Block::Set:
@@ -239,11 +230,13 @@ void AbaqusReader::start_set(const abaqus::Keyword& kw) {
   const char* key = set_of_nodes_ ? "NSET" : "ELSET";
   const std::string* name = kw.param(key);
   if (name == nullptr || name->empty()) lines_.fail("*" + std::string(key) + " without " + key + "=");
-  set_name_ = abaqus::normalized(*name);
+  set_name_ = abaqus::set_name(*name);
+  if (!set_of_nodes_ && std::find(elset_order_.begin(), elset_order_.end(), set_name_) == elset_order_.end())
+    elset_order_.push_back(set_name_);
   generate_ = kw.param("GENERATE") != nullptr;
   part_.where = lines_.where();
   if (set_of_nodes_)
-    if (const std::string* elset = kw.param("ELSET")) part_.elsets.push_back(abaqus::normalized(*elset));
+    if (const std::string* elset = kw.param("ELSET")) part_.elsets.push_back(abaqus::set_name(*elset));
   block_ = Block::Set;
 }
 
@@ -258,7 +251,7 @@ void AbaqusReader::keyword() {
                   ": nodes in cylindrical or spherical coordinates are not read: give them in rectangular ones");
     if (kw.param("INPUT") != nullptr) lines_.fail("node lines from another file (INPUT=) are not read: use *INCLUDE");
     const std::string* nset = kw.param("NSET");
-    node_set_ = nset == nullptr ? "" : abaqus::normalized(*nset);
+    node_set_ = nset == nullptr ? "" : abaqus::set_name(*nset);
     block_first_ = mesh_.num_nodes();
     block_ = Block::Node;
   } else if (kw.name == "ELEMENT") {
@@ -268,10 +261,13 @@ void AbaqusReader::keyword() {
   } else if (kw.name == "SOLIDSECTION") {
     const std::string* elset = kw.param("ELSET");
     if (elset == nullptr || elset->empty()) lines_.fail("*SOLID SECTION without ELSET=");
-    sections_.emplace_back(abaqus::normalized(*elset), lines_.where());
-  } else if (kw.name == "BOUNDARY" || kw.name == "CLOAD") {
-    block_ = Block::Pins;
+    sections_.emplace_back(abaqus::set_name(*elset), lines_.where());
   }
+  for (const PinKeyword& p : kPinKeywords)
+    if (kw.name == p.keyword) {
+      block_ = Block::Pins;
+      pin_names_ = p.names;
+    }
   if (kw.name != "HEADING" && kw.name != "NODE" && kw.name != "ELEMENT") {
     // The keyword as written, up to its first parameter.
     const std::string& text = lines_.text();
@@ -292,6 +288,7 @@ void AbaqusReader::node_line() {
     lines_.fail("node " + std::to_string(id) + " has " + std::to_string(fields.size()) +
                 " fields: a node line is 'number, x, y, z' (directions after the coordinates are not read)");
   mesh_.extras.node_tags.push_back(id);
+  node_marks_.push_back(lines_.mark());
   for (std::size_t c = 1; c <= 3; ++c) {
     double v = 0;  // an omitted coordinate is 0
     if (c < fields.size() && !fields[c].empty() && !finite_real(fields[c], v))
@@ -304,10 +301,11 @@ void AbaqusReader::node_line() {
 void AbaqusReader::add_element() {
   const long long id = pending_.front();
   element_ids_.push_back(id);
+  element_marks_.push_back(pending_mark_);
   const bool tet = type_.kind == "tetra" || type_.kind == "tetra10";
   if (tet) {
     if (tet_nodes_each_ != 0 && tet_nodes_each_ != type_.nodes)
-      throw InputError(pending_where_, mixed_tet_kinds(type_.nodes));
+      throw InputError(lines_.where_of(pending_mark_), mixed_tet_kinds(type_.nodes));
     tet_nodes_each_ = type_.nodes;
     element_at_.push_back(static_cast<std::int64_t>(tet_ids_.size()));
     tet_ids_.push_back(id);
@@ -329,7 +327,7 @@ void AbaqusReader::add_element() {
 void AbaqusReader::element_line() {
   const std::string& line = lines_.text();
   const std::vector<std::string_view> fields = abaqus::split_fields(line);
-  if (pending_.empty()) pending_where_ = lines_.where();
+  if (pending_.empty()) pending_mark_ = lines_.mark();
   for (std::string_view field : fields) {
     long long v = 0;
     if (!positive_integer(field, v))
@@ -339,13 +337,12 @@ void AbaqusReader::element_line() {
   }
   const std::size_t needed = 1 + static_cast<std::size_t>(type_.nodes);
   if (pending_.size() > needed)
-    lines_.fail("element " + std::to_string(pending_.front()) + " lists " + std::to_string(pending_.size() - 1) +
-                " nodes, and a " + type_name_ + " has " + std::to_string(type_.nodes));
+    lines_.fail(element_type_text() + " lists " + std::to_string(pending_.size() - 1) + " nodes, not " +
+                std::to_string(type_.nodes));
   if (pending_.size() == needed) return add_element();
   if (!abaqus::ends_with_comma(line))
-    lines_.fail("element " + std::to_string(pending_.front()) + " lists " + std::to_string(pending_.size() - 1) +
-                " of the " + std::to_string(type_.nodes) + " nodes of a " + type_name_ +
-                " (a line that goes on ends with a comma)");
+    lines_.fail(element_type_text() + " lists " + std::to_string(pending_.size() - 1) + " of its " +
+                std::to_string(type_.nodes) + " nodes (a line that goes on ends with a comma)");
 }
 
 void AbaqusReader::set_line() {
@@ -368,8 +365,29 @@ void AbaqusReader::set_line() {
       if (id <= 0) lines_.fail("expected a positive number or a set name, found " + quoted_token(field));
       part_.ids.push_back(id);
     } else {
-      part_.names.push_back(abaqus::normalized(field));
+      part_.names.push_back(abaqus::set_name(field));
     }
+  }
+}
+
+void AbaqusReader::pin_line() {
+  const std::vector<std::string_view> fields = abaqus::split_fields(lines_.text());
+  const auto add = [&](std::string_view field) {
+    long long zero = 0;  // *MPC's 0 stands for no node
+    if (!field.empty() && !(parse_integer(field, zero) && zero == 0))
+      pin_refs_.push_back(PinRef{std::string(field), lines_.mark()});
+  };
+  switch (pin_names_) {
+    case Names::First:
+      return add(fields.front());
+    case Names::AfterFirst:
+      for (std::size_t i = 1; i < fields.size(); ++i) add(fields[i]);
+      return;
+    case Names::EveryThird:
+      // A line of one field is the number of terms of the next equation.
+      if (fields.size() > 1)
+        for (std::size_t i = 0; i < fields.size(); i += 3) add(fields[i]);
+      return;
   }
 }
 
@@ -385,35 +403,58 @@ void AbaqusReader::data() {
     case Block::Set:
       set_line();
       break;
-    case Block::Pins: {
-      const std::vector<std::string_view> fields = abaqus::split_fields(lines_.text());
-      if (!fields.front().empty()) pin_refs_.emplace_back(std::string(fields.front()), lines_.where());
+    case Block::Pins:
+      pin_line();
       break;
-    }
     case Block::Other:
       break;
   }
   append_text(lines_.text());
 }
 
+std::vector<std::uint8_t> AbaqusReader::elements_of(const std::string& elset, const std::string& where,
+                                                    const abaqus::IdIndex& element_ids) const {
+  std::vector<std::uint8_t> in(element_ids_.size(), 0);
+  try {
+    sets_.mark_elements(elset, where, element_ids, in);
+  } catch (const std::invalid_argument& err) {
+    throw InputError("", err.what());
+  }
+  return in;
+}
+
 void AbaqusReader::resolve_regions(const abaqus::IdIndex& element_ids) {
   FileExtras& e = mesh_.extras;
-  if (sections_.empty()) {
-    e.tet_tags = region_tags(tet_elsets_, elset_names_);
+  const auto tet_flags = [&](const std::vector<std::uint8_t>& in) {
+    std::vector<std::uint8_t> of_tets(tet_ids_.size(), 0);
+    for (std::size_t g = 0; g < in.size(); ++g)
+      if (element_at_[g] >= 0) of_tets[static_cast<std::size_t>(element_at_[g])] = in[g];
+    return of_tets;
+  };
+  if (!sections_.empty()) {
+    e.tet_tags.assign(tet_ids_.size(), 0);
+    for (std::size_t s = 0; s < sections_.size(); ++s) {
+      const std::vector<std::uint8_t> in = tet_flags(elements_of(sections_[s].first, sections_[s].second, element_ids));
+      for (std::size_t t = 0; t < in.size(); ++t)
+        if (in[t] && e.tet_tags[t] == 0) e.tet_tags[t] = static_cast<int>(s) + 1;
+    }
     return;
   }
-  e.tet_tags.assign(tet_ids_.size(), 0);
-  for (std::size_t s = 0; s < sections_.size(); ++s) {
-    std::vector<std::uint8_t> in(element_ids_.size(), 0);
-    try {
-      sets_.mark_elements(sections_[s].first, sections_[s].second, element_ids, in);
-    } catch (const std::invalid_argument& err) {
-      throw InputError("", err.what());
-    }
-    for (std::size_t g = 0; g < in.size(); ++g)
-      if (in[g] && element_at_[g] >= 0 && e.tet_tags[static_cast<std::size_t>(element_at_[g])] == 0)
-        e.tet_tags[static_cast<std::size_t>(element_at_[g])] = static_cast<int>(s) + 1;
+  e.tet_tags = abaqus::tags_from_element_sets(tet_elsets_, elset_names_);
+  if (!e.tet_tags.empty() || elset_order_.empty()) return;
+  if (elset_order_.size() > kMaxRegionSets) {
+    e.read_notes.push_back("no regions: the deck has no *SOLID SECTION, no ELSET= on its *ELEMENT lines, and " +
+                           std::to_string(elset_order_.size()) + " element sets, more than the " +
+                           std::to_string(kMaxRegionSets) +
+                           " tetsmooth tells regions apart by; nodes between materials may move");
+    return;
   }
+  // Regions are the tets that the same element sets hold (meshio writes
+  // Gmsh's physical groups so).
+  std::vector<int> regions(tet_ids_.size(), 0);
+  for (const std::string& name : elset_order_) abaqus::split_regions(regions, tet_flags(elements_of(name, "", element_ids)));
+  for (int& r : regions) ++r;
+  e.tet_tags = std::move(regions);
 }
 
 void AbaqusReader::resolve_pins(const abaqus::IdIndex& node_ids, const abaqus::IdIndex& element_ids) {
@@ -434,15 +475,15 @@ void AbaqusReader::resolve_pins(const abaqus::IdIndex& node_ids, const abaqus::I
     for (std::size_t k = 0; k < n; ++k) flags[static_cast<std::size_t>(block.connectivity[i * n + k])] = 1;
   };
   try {
-    for (const auto& [ref, where] : pin_refs_) {
+    for (const PinRef& ref : pin_refs_) {
       long long id = 0;
-      if (!parse_integer(ref, id)) {
-        sets_.mark_nodes(abaqus::normalized(ref), where, node_ids, element_ids, element_ids_.size(), mark_element,
-                         pinned);
+      if (!parse_integer(ref.name, id)) {
+        sets_.mark_nodes(abaqus::set_name(ref.name), lines_.where_of(ref.mark), node_ids, element_ids,
+                         element_ids_.size(), mark_element, pinned);
         continue;
       }
       const long long node = node_ids.find(id);
-      if (node < 0) throw InputError(where, "node " + std::to_string(id) + " is not defined");
+      if (node < 0) throw InputError(lines_.where_of(ref.mark), "node " + std::to_string(id) + " is not defined");
       pinned[static_cast<std::size_t>(node)] = 1;
     }
     if (sets_.has_nset(kPinnedSet))
@@ -453,40 +494,45 @@ void AbaqusReader::resolve_pins(const abaqus::IdIndex& node_ids, const abaqus::I
   if (std::find(pinned.begin(), pinned.end(), 1) != pinned.end()) mesh_.fixed = std::move(pinned);
 }
 
-void AbaqusReader::resolve(const std::string& source) {
+void AbaqusReader::resolve() {
   FileExtras& e = mesh_.extras;
-  const auto index_of = [&](const std::vector<long long>& ids, const char* kind) {
-    try {
-      return abaqus::IdIndex(ids);
-    } catch (const std::invalid_argument& twice) {
-      throw InputError(source, std::string(kind) + " " + twice.what() + " is defined twice");
-    }
-  };
-  const abaqus::IdIndex node_ids = index_of(e.node_tags, "node");
-  const abaqus::IdIndex element_ids = index_of(element_ids_, "element");
-  const auto node = [&](long long id, long long element) {
-    const long long n = node_ids.find(id);
-    if (n < 0)
-      throw InputError(source, "element " + std::to_string(element) + " names node " + std::to_string(id) +
-                                   ", which no *NODE line defines");
-    return static_cast<index_t>(n);
-  };
-  const auto each = static_cast<std::size_t>(tet_nodes_each_);
-  index_t tet[10];
-  for (std::size_t t = 0; t < tet_ids_.size(); ++t) {
-    for (std::size_t k = 0; k < each; ++k) tet[k] = node(tet_nodes_[each * t + k], tet_ids_[t]);
-    append_file_tet(mesh_, tet, each == 10, abaqus::kMidsidePlaces);
-  }
-  e.tet_element_tags = tet_ids_;
+  const abaqus::IdIndex node_ids(e.node_tags), element_ids(element_ids_);
+  if (const auto twice = node_ids.repeated())
+    throw InputError(lines_.where_of(node_marks_[*twice]),
+                     "node " + std::to_string(e.node_tags[*twice]) + " is defined a second time");
+  if (const auto twice = element_ids.repeated())
+    throw InputError(lines_.where_of(element_marks_[*twice]),
+                     "element " + std::to_string(element_ids_[*twice]) + " is defined a second time");
   for (const Others& o : others_) {
     PassThroughBlock& block = e.blocks.emplace_back();
     block.kind = o.type.kind;
     block.nodes_per_element = o.type.nodes;
-    const auto n = static_cast<std::size_t>(o.type.nodes);
-    for (std::size_t i = 0; i < o.nodes.size(); ++i) block.connectivity.push_back(node(o.nodes[i], o.ids[i / n]));
     block.element_tags = o.ids;
-    block.tags = region_tags(o.elsets, elset_names_);
+    block.tags = abaqus::tags_from_element_sets(o.elsets, elset_names_);
   }
+  // Elements in read order, so that each block's come in its own order.
+  const auto each = static_cast<std::size_t>(tet_nodes_each_);
+  index_t tet[10];
+  for (std::size_t g = 0; g < element_ids_.size(); ++g) {
+    const auto node = [&](long long id) {
+      const long long n = node_ids.find(id);
+      if (n < 0)
+        throw InputError(lines_.where_of(element_marks_[g]), "element " + std::to_string(element_ids_[g]) +
+                                                                 " names node " + std::to_string(id) +
+                                                                 ", which no *NODE line defines");
+      return static_cast<index_t>(n);
+    };
+    if (element_at_[g] >= 0) {
+      const auto t = static_cast<std::size_t>(element_at_[g]);
+      for (std::size_t k = 0; k < each; ++k) tet[k] = node(tet_nodes_[each * t + k]);
+      append_file_tet(mesh_, tet, each == 10, abaqus::kMidsidePlaces);
+      continue;
+    }
+    const auto [b, i] = others_at_[static_cast<std::size_t>(-1 - element_at_[g])];
+    const auto n = static_cast<std::size_t>(others_[b].type.nodes);
+    for (std::size_t k = 0; k < n; ++k) e.blocks[b].connectivity.push_back(node(others_[b].nodes[i * n + k]));
+  }
+  e.tet_element_tags = tet_ids_;
   resolve_regions(element_ids);
   resolve_pins(node_ids, element_ids);
 }
@@ -510,20 +556,16 @@ TetMesh AbaqusReader::read(const std::string& source) {
   if (!text_.empty()) mesh_.extras.raw_sections.emplace_back("abaqus:text", std::move(text_));
   if (mesh_.num_nodes() == 0) throw InputError(source, "no *NODE lines: not an Abaqus mesh");
   if (tet_ids_.empty()) throw InputError(source, "no tets (C3D4 or C3D10 elements): a volume mesh is needed");
-  resolve(source);
+  resolve();
   FileExtras& e = mesh_.extras;
   e.raw_sections.emplace_back("abaqus:deck", std::to_string(mesh_.num_nodes()) + " " + std::to_string(mesh_.num_tets()));
-  if (!other_keywords_.empty()) {
+  const auto joined = [](const std::vector<std::string>& items) {
     std::string list;
-    for (const std::string& k : other_keywords_) list += (list.empty() ? "" : ", ") + k;
-    e.raw_sections.emplace_back("abaqus:keywords", list);
-  }
-  if (!lines_.included().empty()) {
-    std::string files;
-    for (const std::string& f : lines_.included()) files += (files.empty() ? "" : ", ") + f;
-    e.read_notes.push_back("the *INCLUDE file" + std::string(lines_.included().size() == 1 ? " " : "s ") + files +
-                           " will be written inline in Abaqus output");
-  }
+    for (const std::string& item : items) list += (list.empty() ? "" : ", ") + item;
+    return list;
+  };
+  if (!other_keywords_.empty()) e.raw_sections.emplace_back("abaqus:keywords", joined(other_keywords_));
+  if (!lines_.included().empty()) e.raw_sections.emplace_back("abaqus:includes", joined(lines_.included()));
   validate_mesh(mesh_, source);
   return std::move(mesh_);
 }

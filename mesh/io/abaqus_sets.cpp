@@ -11,7 +11,7 @@ IdIndex::IdIndex(const std::vector<long long>& ids) {
   std::sort(sorted_.begin(), sorted_.end());
   const auto twice = std::adjacent_find(sorted_.begin(), sorted_.end(),
                                         [](const auto& a, const auto& b) { return a.first == b.first; });
-  if (twice != sorted_.end()) throw std::invalid_argument(std::to_string(twice->first));
+  if (twice != sorted_.end()) repeated_ = (twice + 1)->second;
 }
 
 long long IdIndex::find(long long id) const {

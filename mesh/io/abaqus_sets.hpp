@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,8 +18,9 @@ namespace tetsmooth::abaqus {
 // by id.
 class IdIndex {
  public:
-  // Throws std::invalid_argument naming the first id given twice.
   explicit IdIndex(const std::vector<long long>& ids);
+  // The later of two items with the same id, if any.
+  std::optional<std::size_t> repeated() const { return repeated_; }
   // The item with this id, or -1.
   long long find(long long id) const;
   // Every item whose id is first, first + step, ... up to last (*NSET and
@@ -27,12 +29,13 @@ class IdIndex {
 
  private:
   std::vector<std::pair<long long, std::size_t>> sorted_;
+  std::optional<std::size_t> repeated_;
 };
 
 // What one *NSET or *ELSET keyword (and its data lines) adds to a set.
 struct SetPart {
   std::vector<long long> ids;
-  std::vector<std::string> names;                // other sets of the same kind, normalized
+  std::vector<std::string> names;                // other sets of the same kind, as set_name() gives them
   std::vector<std::array<long long, 3>> ranges;  // GENERATE: first, last, step
   std::vector<std::string> elsets;               // *NSET, ELSET=: the nodes of these element sets
   std::string where;                             // "file:line" of the keyword
@@ -40,7 +43,7 @@ struct SetPart {
 
 class DeckSets {
  public:
-  // Names are normalized (abaqus_deck_lines.hpp).
+  // Names as set_name() gives them (abaqus_deck_lines.hpp).
   void add_nset(const std::string& name, SetPart part) { nsets_[name].parts.push_back(std::move(part)); }
   void add_elset(const std::string& name, SetPart part) { elsets_[name].parts.push_back(std::move(part)); }
   // Items a *NODE, NSET= or *ELEMENT, ELSET= line adds: `count` items from

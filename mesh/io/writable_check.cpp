@@ -264,6 +264,8 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back(std::string(abaqus ? "the Abaqus " : "the Gmsh ") +
                     (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
                     (abaqus ? " numbers" : " tags") + " will not be written: " + name + " numbers them by position");
+  if (const std::string* files = raw_section(e, "abaqus:includes"); files != nullptr && f == MeshFormat::Abaqus)
+    notes.push_back("the *INCLUDE files (" + *files + ") will be written inline, in the one output deck");
   if (const std::string* keywords = raw_section(e, "abaqus:keywords"); keywords != nullptr && f != MeshFormat::Abaqus)
     notes.push_back("the rest of the Abaqus deck (" + *keywords + ") will not be written: " + name +
                     " holds the mesh alone");

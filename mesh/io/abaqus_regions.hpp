@@ -1,0 +1,23 @@
+#pragma once
+// Region tags of an Abaqus deck's elements, by the rules of abaqus_io.hpp
+// (not a public API).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tetsmooth::abaqus {
+
+// Tags for elements that carry the index (1-based; 0 for none) of their
+// *ELEMENT line's ELSET in `names`: each name's trailing number where every
+// name met has a different one ("_M" before it for a negative one, as the
+// writer names them), else the names numbered 1, 2, ... in the order met.
+// Empty when no element has a set.
+std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets, const std::vector<std::string>& names);
+
+// Splits every element's region by one more set: elements of one region
+// stay together only if the set holds all or none of them. `regions` holds
+// a region number per element (start with all 0), `in_set` one flag per
+// element. Numbers are 0, 1, ... in the order of each region's first element.
+void split_regions(std::vector<int>& regions, const std::vector<std::uint8_t>& in_set);
+
+}  // namespace tetsmooth::abaqus

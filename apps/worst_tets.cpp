@@ -6,13 +6,9 @@
 namespace tetsmooth::cli {
 namespace {
 
-// The file's numbers, or empty where they are just positions 1, 2, ...
-// (which the 0-based indices already give) or missing.
+// The file's numbers, or empty where they are missing or just positions.
 std::vector<long long> own_numbers(const std::vector<long long>& numbers, std::size_t count) {
-  if (numbers.size() != count) return {};
-  for (std::size_t i = 0; i < count; ++i)
-    if (numbers[i] != static_cast<long long>(i) + 1) return numbers;
-  return {};
+  return numbers.size() == count && !numbered_by_position(numbers) ? numbers : std::vector<long long>{};
 }
 
 }  // namespace

@@ -67,6 +67,15 @@ inline const std::string* raw_section(const FileExtras& extras, std::string_view
   return nullptr;
 }
 
+// Whether a file's numbers (node_tags, tet_element_tags) are just the
+// positions 1, 2, ... in order, which the 0-based indices already give and
+// every format keeps by writing the items in order; true for none.
+inline bool numbered_by_position(const std::vector<long long>& numbers) {
+  for (std::size_t i = 0; i < numbers.size(); ++i)
+    if (numbers[i] != static_cast<long long>(i) + 1) return false;
+  return true;
+}
+
 // Whether the extras hold TetGen tet attributes for each of `tets` tets.
 inline bool has_tet_attributes(const FileExtras& extras, std::size_t tets) {
   return extras.tet_attribute_count > 0 &&

@@ -144,6 +144,14 @@ TEST(AbaqusIo, ADeckIsWrittenOnlyForTheMeshItWasReadWith) {
     EXPECT_NE(std::string(e.what()).find("lists (nodes, tets) 6 2, and the mesh has 6 1"), std::string::npos)
         << e.what();
   }
+  TetMesh unnumbered = read_text(kDeck);
+  unnumbered.extras.node_tags.clear();
+  try {
+    write_text(unnumbered);
+    FAIL() << "a deck written without its node numbers";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("and the mesh has 6 2 without their numbers"), std::string::npos) << e.what();
+  }
 }
 
 TEST(AbaqusIo, RegionsWithoutSectionsComeFromTheElementLinesSets) {
@@ -210,6 +218,30 @@ TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
   EXPECT_EQ(back.fixed, mesh.fixed);
 }
 
+TEST(AbaqusIo, ANewDeckListsManyPinsSixteenALineAndRenumbersWhatItCannotKeep) {
+  TetMesh mesh = testing::cube_grid(5);
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  std::vector<std::string> pinned;
+  for (std::size_t i = 0; i < mesh.num_nodes() && pinned.size() < 20; ++i)
+    if (i % 7 == 3) {
+      mesh.fixed[i] = 1;
+      pinned.push_back(std::to_string(i + 1));
+    }
+  const std::string text = write_text(mesh);
+  std::string lines = "*NSET, NSET=TETSMOOTH_PINNED\n";
+  for (std::size_t k = 0; k < pinned.size(); ++k) lines += pinned[k] + (k + 1 == pinned.size() ? "\n" : k % 16 == 15 ? "\n" : ", ");
+  EXPECT_NE(text.find(lines), std::string::npos) << text.substr(text.find("*NSET"));
+  EXPECT_EQ(read_text(text).fixed, mesh.fixed);
+  EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
+  // A node number 0 cannot be kept: every node is numbered by position.
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags.push_back(static_cast<long long>(i) * 5);
+  EXPECT_EQ(read_text(write_text(mesh)).extras.node_tags.back(), static_cast<long long>(mesh.num_nodes()));
+  const std::vector<std::string> notes = output_losses(mesh, "out.inp");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "the node numbers of the file cannot all be kept (each must be positive and distinct): abaqus "
+                      "numbers them 1, 2, ... instead");
+}
+
 TEST(AbaqusIo, SecondOrderTetsListTheirMidsideNodesInEdgeOrder) {
   const TetMesh mesh = testing::with_midsides(testing::cube_grid(2, 0.1));
   const std::string text = write_text(mesh);
@@ -252,6 +284,16 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   std::ofstream(dir.file("self.inp")) << "*HEADING\n*INCLUDE, INPUT=self.inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("self.inp")); }, "self.inp")
                 .find("self.inp:2: *INCLUDE: " + dir.file("self.inp") + " includes itself"),
+            std::string::npos);
+  // Files nested 65 deep (no file includes itself), and a device.
+  for (int k = 0; k < 66; ++k)
+    std::ofstream(dir.file("n" + std::to_string(k) + ".inp")) << "*INCLUDE, INPUT=n" << k + 1 << ".inp\n";
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("n0.inp")); }, "n0.inp")
+                .find("n64.inp:1: *INCLUDE nested more than 64 files deep"),
+            std::string::npos);
+  std::ofstream(dir.file("device.inp")) << "*INCLUDE, INPUT=/dev/null\n";
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("device.inp")); }, "device.inp")
+                .find("device.inp:1: *INCLUDE: /dev/null is not a regular file"),
             std::string::npos);
   std::ofstream(dir.file("lost.inp")) << "*HEADING\n*INCLUDE, INPUT=missing.inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("lost.inp")); }, "lost.inp")
@@ -301,6 +343,43 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneWhereTheDeckHasNothingElse) {
   EXPECT_EQ(mesh.extras.blocks[0].kind, "wedge");
 }
 
+TEST(AbaqusIo, SetsByStepsByElementSetsAndSectionsThatOverlap) {
+  const std::string base =
+      "*NODE, SYSTEM=R\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,0.4,0.4,0.4\n7,0.3,0.3,0.3\n8,0.2,0.2,0.2\n"
+      "9,0.1,0.1,0.1\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n";
+  // GENERATE with a step of 3: nodes 2, 5 and 8.
+  EXPECT_EQ(read_text(base + "*NSET, NSET=S, GENERATE\n2, 8, 3\n*BOUNDARY\nS, 1\n").fixed,
+            (std::vector<std::uint8_t>{0, 1, 0, 0, 1, 0, 0, 1, 0}));
+  // *NSET, ELSET: the data lines name element sets.
+  EXPECT_EQ(read_text(base + "*ELSET, ELSET=Second\n2\n*NSET, NSET=N, ELSET\nSecond\n*BOUNDARY\nN, 1\n").fixed,
+            (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0, 0, 0, 0}));
+  // A tet in two sections (Abaqus would refuse it) takes the first.
+  const std::string sections = "*ELSET, ELSET=A\n1, 2\n*ELSET, ELSET=B\n2\n";
+  EXPECT_EQ(read_text(base + sections + "*SOLID SECTION, ELSET=B\n*SOLID SECTION, ELSET=A\n").extras.tet_tags,
+            (std::vector<int>{2, 1}));
+  // Regions from element sets alone: at most 64 sets are told apart.
+  std::string many = base;
+  for (int s = 0; s < 65; ++s) many += "*ELSET, ELSET=E" + std::to_string(s) + "\n" + std::to_string(1 + s % 2) + "\n";
+  const TetMesh unsplit = read_text(many);
+  EXPECT_TRUE(unsplit.extras.tet_tags.empty());
+  ASSERT_EQ(unsplit.extras.read_notes.size(), 1u);
+  EXPECT_NE(unsplit.extras.read_notes[0].find("no regions: the deck has no *SOLID SECTION"), std::string::npos);
+  // A set numbered 0 is no tag of its own: 0 is that of tets without a set.
+  const std::string zero =
+      "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n*ELEMENT, TYPE=C3D4, ELSET=Volume0\n1, 1, 2, 3, 4\n"
+      "*ELEMENT, TYPE=C3D4\n2, 2, 3, 4, 5\n";
+  EXPECT_EQ(read_text(zero).extras.tet_tags, (std::vector<int>{1, 0}));
+}
+
+TEST(AbaqusIo, EveryRefusedKeywordSaysWhy) {
+  for (const char* keyword : {"PART", "ASSEMBLY", "INSTANCE", "NGEN", "NFILL", "NCOPY", "NMAP", "SYSTEM", "ELGEN",
+                              "ELCOPY"}) {
+    const std::string message = read_error(replaced(kDeck, "*Step\n", "*" + std::string(keyword) + "\n"));
+    EXPECT_NE(message.find("t.inp:28: *" + std::string(keyword) + ": "), std::string::npos) << message;
+    EXPECT_NE(message.find(" not read"), std::string::npos) << message;
+  }
+}
+
 TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
   const struct {
     std::string from, to, message;
@@ -325,6 +404,10 @@ TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
       {"6, 1, 3\n", "60, 1, 3\n", "t.inp:27: node 60 is not defined"},
       {"11, 11, 1\n", "11, 9\n", "t.inp:19: a GENERATE range that ends before it starts"},
       {"*Heading\n", "1, 2\n*Heading\n", "t.inp:1: a data line before the first keyword"},
+      {"*Material, name=Rock\n", "*Material, name=\"Rock\n", "t.inp:23: keyword line: a quote that does not close"},
+      {"*Material, name=Rock\n", "*Material, name=Rock,\n",
+       "t.inp:23: the keyword line ends with a comma, and the next line is a keyword line"},
+      {"*End Step\n", "*End Step,\n", "t.inp:30: the keyword line ends with a comma, and its file ends after it"},
   };
   for (const auto& c : cases) {
     const std::string message = read_error(replaced(kDeck, c.from, c.to));

@@ -97,19 +97,23 @@ std::string directory_of(const std::string& path) {
 
 }  // namespace
 
+std::string upper_case(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
 std::string normalized(std::string_view name) {
-  std::string out;
-  for (char c : name)
-    if (!std::isspace(static_cast<unsigned char>(c))) out += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  std::string out = upper_case(name);
+  out.erase(std::remove_if(out.begin(), out.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }),
+            out.end());
   return out;
 }
 
 std::string set_name(std::string_view name) {
   name = trimmed(name);
   if (name.size() < 2 || name.front() != '"' || name.back() != '"') return normalized(name);
-  std::string out(name.substr(1, name.size() - 2));
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
+  return upper_case(name.substr(1, name.size() - 2));
 }
 
 const std::string* Keyword::param(std::string_view key) const {
@@ -225,8 +229,14 @@ bool DeckLines::next() {
       kind_ = Kind::Data;
       return true;
     }
+    // A keyword line that ends with a comma goes on on the next line of its
+    // file, which must be no keyword line.
     std::string more;
-    while (ends_with_comma(text_) && raw_line(more)) {
+    while (ends_with_comma(text_)) {
+      const std::size_t depth = stack_.size();
+      if (!raw_line(more) || stack_.size() != depth)
+        fail("the keyword line ends with a comma, and its file ends after it");
+      if (is_keyword(more)) fail("the keyword line ends with a comma, and the next line is a keyword line");
       text_ += '\n';
       text_ += more;
     }

@@ -1,5 +1,7 @@
 #include "mesh/io/abaqus_element_types.hpp"
 
+#include "mesh/io/abaqus_deck_lines.hpp"
+
 #include <cctype>
 #include <string_view>
 
@@ -66,12 +68,6 @@ constexpr Named kUnread[] = {
     {"CPE8", "an 8-node quadrilateral"}, {"M3D8", "an 8-node quadrilateral"}, {"M3D9", "a 9-node quadrilateral"},
 };
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
 bool only_letters(std::string_view s) {
   for (char c : s)
     if (!std::isalpha(static_cast<unsigned char>(c))) return false;
@@ -90,14 +86,14 @@ bool in_family(std::string_view name, std::string_view base, bool solid_prefix) 
 }  // namespace
 
 std::optional<ElementType> element_type(const std::string& name) {
-  const std::string key = upper(name);
+  const std::string key = upper_case(name);
   for (const Family& f : kFamilies)
     if (in_family(key, f.base, f.solid_prefix)) return ElementType{f.kind, f.nodes};
   return std::nullopt;
 }
 
 std::string unsupported_element_type(const std::string& name) {
-  const std::string key = upper(name);
+  const std::string key = upper_case(name);
   for (const Named& n : kUnread)
     if (in_family(key, n.base, true))
       return "unsupported element type " + name + " (" + n.what +

@@ -22,7 +22,8 @@
 //  * Pinned nodes, besides those of non-tet elements: nodes that loads and
 //    constraints name (by number or node set): *BOUNDARY, *CLOAD, *CFLUX,
 //    *CFLOW, *EQUATION and *MPC; and the node set TETSMOOTH_PINNED that the
-//    writer leaves for pins nothing else keeps.
+//    writer leaves for pins nothing else keeps. Node sets that only output
+//    or monitoring name (*NODE PRINT, *MONITOR) pin nothing.
 //  * *INCLUDE files are read in place (abaqus_deck_lines.hpp). Parts and
 //    assemblies, node and element generation (*NGEN, *ELGEN, ...), and nodes
 //    in other coordinate systems (*SYSTEM, SYSTEM=C|S) are refused with a
@@ -37,8 +38,10 @@
 //
 // Writing: a mesh read from a deck is written as that deck, each *NODE line
 // "id, x, y, z" with the new coordinates in shortest round-trip form and
-// every other line as read; the mesh must still have the deck's node and tet
-// counts. Any other mesh is written as a new deck: *HEADING, *NODE, then
+// every other line as read, but for the line ends (each line ends in '\n',
+// the last too: CRLF becomes LF), a UTF-8 byte order mark (dropped) and
+// *INCLUDE lines (the included lines in their place); the mesh must still
+// have the deck's node and tet counts. Any other mesh is written as a new deck: *HEADING, *NODE, then
 // *ELEMENT blocks in file order (C3D4 or C3D10; other elements under the
 // type_name_of() types), one block per run of one region tag, with
 // ELSET=REGION_<tag> (negative tags as REGION_M<|tag|>) and, for other
@@ -58,6 +61,11 @@ TetMesh read_abaqus(std::istream& in, const std::string& source);
 TetMesh read_abaqus_file(const std::string& path);
 
 void write_abaqus(const TetMesh& mesh, std::ostream& out);
+
+// The file's own numbers that a new deck for `mesh` cannot keep, and
+// numbers 1, 2, ... instead (some missing, not positive or not distinct):
+// "node", "element", "node and element", or "" when it keeps them all.
+std::string abaqus_numbers_lost(const TetMesh& mesh);
 void write_abaqus_file(const TetMesh& mesh, const std::string& path);
 
 }  // namespace tetsmooth

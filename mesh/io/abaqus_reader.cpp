@@ -1,26 +1,23 @@
-// Abaqus/CalculiX .inp reading (abaqus_io.hpp). Lines are taken one at a
-// time (abaqus_deck_lines); node ids, element ids and set names are
-// resolved once every line is read, as Abaqus resolves them.
+// Abaqus/CalculiX .inp reading (abaqus_io.hpp), line by line
+// (abaqus_deck_lines): nodes, elements, sets, sections and the nodes that
+// loads and constraints name, kept by the file's numbers and names for
+// abaqus_resolve.cpp. The deck's text is kept as read, but for its node
+// lines, which the writer writes anew.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <stdexcept>
 
 #include "mesh/errors.hpp"
 #include "mesh/second_order.hpp"
-#include "mesh/io/abaqus_deck_lines.hpp"
-#include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
-#include "mesh/io/abaqus_regions.hpp"
-#include "mesh/io/abaqus_sets.hpp"
+#include "mesh/io/abaqus_reader.hpp"
 #include "mesh/io/input_file.hpp"
 #include "mesh/io/text_lines.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth {
+namespace abaqus {
 namespace {
-
-using abaqus::DeckLines;
 
 constexpr const char* kParts =
     "decks of parts and assemblies are not read (their node and element numbers belong to a part, placed by "
@@ -48,27 +45,19 @@ constexpr Refused kRefused[] = {
 
 // Keywords whose data lines name nodes that loads or constraints act on,
 // which keep their places: by number or node set, in the first field of
-// each line (concentrated loads, fluxes and flows, boundary conditions) or
-// in every field but the first (*MPC: its type, then its nodes), or in each
+// each line (concentrated loads, fluxes and flows, boundary conditions), in
+// every field but the first (*MPC: its type, then its nodes), or in each
 // term's first field (*EQUATION: lines of node, degree of freedom,
 // coefficient, after a line with the number of terms).
-enum class Names { First, AfterFirst, EveryThird };
+using Names = DeckReader::Names;
 struct PinKeyword {
   const char* keyword;
   Names names;
 };
 constexpr PinKeyword kPinKeywords[] = {
-    {"BOUNDARY", Names::First}, {"CLOAD", Names::First},        {"CFLUX", Names::First},
+    {"BOUNDARY", Names::First}, {"CLOAD", Names::First},     {"CFLUX", Names::First},
     {"CFLOW", Names::First},    {"MPC", Names::AfterFirst}, {"EQUATION", Names::EveryThird},
 };
-
-// More element sets than this are not used to tell regions apart in a deck
-// without sections or ELSET= on its *ELEMENT lines (each set takes a pass
-// over the elements).
-constexpr std::size_t kMaxRegionSets = 64;
-
-// The set of the node pins that the writer leaves (abaqus_io.hpp).
-constexpr const char* kPinnedSet = "TETSMOOTH_PINNED";
 
 bool positive_integer(std::string_view field, long long& value) { return parse_integer(field, value) && value > 0; }
 
@@ -82,87 +71,9 @@ bool finite_real(std::string_view field, double& value) {
   return std::isfinite(value);
 }
 
-class AbaqusReader {
- public:
-  explicit AbaqusReader(DeckLines& lines) : lines_(lines) {}
-  TetMesh read(const std::string& source);
+}  // namespace
 
- private:
-  enum class Block { None, Other, Node, Element, Set, Pins };
-  // Elements of one kind other than tets, in read order.
-  struct Others {
-    abaqus::ElementType type;
-    std::vector<long long> ids, nodes;  // nodes in PassThroughBlock order, by file id
-    std::vector<std::uint32_t> elsets;  // see abaqus::tags_from_element_sets
-  };
-  // A node or node set that a load or constraint names, and its line.
-  struct PinRef {
-    std::string name;
-    std::uint32_t mark;
-  };
-
-  void keyword();
-  void data();
-  // Ends a run of node lines in the kept deck.
-  void flush_nodes();
-  void append_text(const std::string& line);
-  void finish_block();
-  void start_element_block(const abaqus::Keyword& kw);
-  void start_set(const abaqus::Keyword& kw);
-  void node_line();
-  void element_line();
-  void add_element();
-  void set_line();
-  void pin_line();
-  std::uint32_t elset_index(const std::string* name);
-  std::string element_type_text() const { return "element " + std::to_string(pending_.front()) + " of type " + type_name_; }
-
-  void resolve();
-  void resolve_regions(const abaqus::IdIndex& element_ids);
-  void resolve_pins(const abaqus::IdIndex& node_ids, const abaqus::IdIndex& element_ids);
-  std::vector<std::uint8_t> elements_of(const std::string& elset, const std::string& where,
-                                        const abaqus::IdIndex& element_ids) const;
-
-  DeckLines& lines_;
-  TetMesh mesh_;
-  abaqus::DeckSets sets_;
-  Block block_ = Block::None;
-  Names pin_names_ = Names::First;
-
-  std::string text_;          // the deck since the last run of node lines
-  std::size_t node_run_ = 0;  // node lines since the last text
-  std::string node_set_;      // NSET= of the current *NODE
-  std::size_t block_first_ = 0;
-  std::vector<std::uint32_t> node_marks_;  // per node, its line (DeckLines::mark)
-
-  abaqus::ElementType type_;
-  std::string type_name_;
-  std::uint32_t elset_ = 0;
-  std::string elset_name_;
-  std::vector<long long> pending_;  // an element's id and nodes so far
-  std::uint32_t pending_mark_ = 0;
-
-  std::vector<long long> element_ids_;       // every element, in read order
-  std::vector<std::uint32_t> element_marks_;  // per element, its first line
-  std::vector<std::int64_t> element_at_;     // per element: tet index, or -1 - its place in others_at_
-  std::vector<std::pair<std::size_t, std::size_t>> others_at_;  // (block, element) of each other element
-  std::vector<long long> tet_ids_, tet_nodes_;
-  int tet_nodes_each_ = 0;
-  std::vector<std::uint32_t> tet_elsets_;
-  std::vector<Others> others_;
-  std::vector<std::string> elset_names_;  // ELSET= names of *ELEMENT lines (set_name)
-  std::vector<std::string> elset_order_;  // every element set, in the order defined
-
-  abaqus::SetPart part_;
-  std::string set_name_;
-  bool set_of_nodes_ = false, generate_ = false;
-
-  std::vector<std::pair<std::string, std::string>> sections_;  // *SOLID SECTION's ELSET, and where
-  std::vector<PinRef> pin_refs_;
-  std::vector<std::string> other_keywords_;  // as written, each once
-};
-
-void AbaqusReader::flush_nodes() {
+void DeckReader::flush_nodes() {
   if (node_run_ == 0) return;
   mesh_.extras.raw_sections.emplace_back("abaqus:text", std::move(text_));
   mesh_.extras.raw_sections.emplace_back("abaqus:nodes", std::to_string(node_run_));
@@ -170,31 +81,37 @@ void AbaqusReader::flush_nodes() {
   node_run_ = 0;
 }
 
-void AbaqusReader::append_text(const std::string& line) {
+void DeckReader::append_text(const std::string& line) {
   flush_nodes();
   text_ += line;
   text_ += '\n';
 }
 
-std::uint32_t AbaqusReader::elset_index(const std::string* name) {
-  if (name == nullptr) return 0;
-  elset_name_ = abaqus::set_name(*name);
-  if (std::find(elset_order_.begin(), elset_order_.end(), elset_name_) == elset_order_.end())
-    elset_order_.push_back(elset_name_);
-  const auto it = std::find(elset_names_.begin(), elset_names_.end(), elset_name_);
-  if (it != elset_names_.end()) return static_cast<std::uint32_t>(it - elset_names_.begin()) + 1;
-  elset_names_.push_back(elset_name_);
-  return static_cast<std::uint32_t>(elset_names_.size());
+std::string DeckReader::element_text() const {
+  return "element " + std::to_string(pending_.front()) + " of type " + type_name_;
 }
 
-void AbaqusReader::finish_block() {
+void DeckReader::note_elset(const std::string& name) {
+  if (elsets_met_.insert(name).second) elset_order_.push_back(name);
+}
+
+std::uint32_t DeckReader::elset_index(const std::string* name) {
+  if (name == nullptr) return 0;
+  elset_name_ = set_name(*name);
+  note_elset(elset_name_);
+  const auto [it, added] = elset_numbers_.try_emplace(elset_name_, static_cast<std::uint32_t>(elset_names_.size()) + 1);
+  if (added) elset_names_.push_back(elset_name_);
+  return it->second;
+}
+
+void DeckReader::finish_block() {
   switch (block_) {
     case Block::Node:
       if (!node_set_.empty()) sets_.add_node_run(node_set_, block_first_, mesh_.num_nodes() - block_first_);
       break;
     case Block::Element:
       if (!pending_.empty())
-        throw InputError(lines_.where_of(pending_mark_), element_type_text() + " lists " +
+        throw InputError(lines_.where_of(pending_mark_), element_text() + " lists " +
                                                              std::to_string(pending_.size() - 1) + " of its " +
                                                              std::to_string(type_.nodes) + " nodes");
       if (elset_ != 0) sets_.add_element_run(elset_name_, block_first_, element_ids_.size() - block_first_);
@@ -212,12 +129,12 @@ void AbaqusReader::finish_block() {
   block_ = Block::Other;
 }
 
-void AbaqusReader::start_element_block(const abaqus::Keyword& kw) {
+void DeckReader::start_element_block(const Keyword& kw) {
   const std::string* type = kw.param("TYPE");
   if (type == nullptr || type->empty()) lines_.fail("*ELEMENT without TYPE=");
   if (kw.param("INPUT") != nullptr) lines_.fail("element lines from another file (INPUT=) are not read: use *INCLUDE");
-  const auto known = abaqus::element_type(*type);
-  if (!known) lines_.fail(abaqus::unsupported_element_type(text_excerpt(*type)));
+  const auto known = element_type(*type);
+  if (!known) lines_.fail(unsupported_element_type(text_excerpt(*type)));
   type_ = *known;
   type_name_ = text_excerpt(*type);
   elset_ = elset_index(kw.param("ELSET"));
@@ -225,33 +142,35 @@ void AbaqusReader::start_element_block(const abaqus::Keyword& kw) {
   block_ = Block::Element;
 }
 
-void AbaqusReader::start_set(const abaqus::Keyword& kw) {
+void DeckReader::start_set(const Keyword& kw) {
   set_of_nodes_ = kw.name == "NSET";
   const char* key = set_of_nodes_ ? "NSET" : "ELSET";
   const std::string* name = kw.param(key);
   if (name == nullptr || name->empty()) lines_.fail("*" + std::string(key) + " without " + key + "=");
-  set_name_ = abaqus::set_name(*name);
-  if (!set_of_nodes_ && std::find(elset_order_.begin(), elset_order_.end(), set_name_) == elset_order_.end())
-    elset_order_.push_back(set_name_);
+  set_name_ = set_name(*name);
+  if (!set_of_nodes_) note_elset(set_name_);
   generate_ = kw.param("GENERATE") != nullptr;
   part_.where = lines_.where();
-  if (set_of_nodes_)
-    if (const std::string* elset = kw.param("ELSET")) part_.elsets.push_back(abaqus::set_name(*elset));
+  // *NSET, ELSET: the data lines name element sets, whose nodes the set
+  // holds (ELSET=name, as some writers put it, names one more).
+  const std::string* elset = set_of_nodes_ ? kw.param("ELSET") : nullptr;
+  lists_elsets_ = elset != nullptr;
+  if (elset != nullptr && !elset->empty()) part_.elsets.push_back(set_name(*elset));
   block_ = Block::Set;
 }
 
-void AbaqusReader::keyword() {
+void DeckReader::keyword() {
   finish_block();
-  const abaqus::Keyword& kw = lines_.keyword();
+  const Keyword& kw = lines_.keyword();
   for (const Refused& r : kRefused)
     if (kw.name == r.keyword) lines_.fail("*" + kw.name + ": " + r.why);
   if (kw.name == "NODE") {
-    if (const std::string* system = kw.param("SYSTEM"); system != nullptr && abaqus::normalized(*system) != "R")
+    if (const std::string* system = kw.param("SYSTEM"); system != nullptr && normalized(*system) != "R")
       lines_.fail("*NODE, SYSTEM=" + text_excerpt(*system) +
                   ": nodes in cylindrical or spherical coordinates are not read: give them in rectangular ones");
     if (kw.param("INPUT") != nullptr) lines_.fail("node lines from another file (INPUT=) are not read: use *INCLUDE");
     const std::string* nset = kw.param("NSET");
-    node_set_ = nset == nullptr ? "" : abaqus::set_name(*nset);
+    node_set_ = nset == nullptr ? "" : set_name(*nset);
     block_first_ = mesh_.num_nodes();
     block_ = Block::Node;
   } else if (kw.name == "ELEMENT") {
@@ -261,7 +180,7 @@ void AbaqusReader::keyword() {
   } else if (kw.name == "SOLIDSECTION") {
     const std::string* elset = kw.param("ELSET");
     if (elset == nullptr || elset->empty()) lines_.fail("*SOLID SECTION without ELSET=");
-    sections_.emplace_back(abaqus::set_name(*elset), lines_.where());
+    sections_.emplace_back(set_name(*elset), lines_.where());
   }
   for (const PinKeyword& p : kPinKeywords)
     if (kw.name == p.keyword) {
@@ -280,8 +199,8 @@ void AbaqusReader::keyword() {
   append_text(lines_.text());
 }
 
-void AbaqusReader::node_line() {
-  const std::vector<std::string_view> fields = abaqus::split_fields(lines_.text());
+void DeckReader::node_line() {
+  const std::vector<std::string_view> fields = split_fields(lines_.text());
   long long id = 0;
   if (!positive_integer(fields[0], id)) lines_.fail("expected a positive node number, found " + quoted_token(fields[0]));
   if (fields.size() > 4)
@@ -298,12 +217,11 @@ void AbaqusReader::node_line() {
   ++node_run_;
 }
 
-void AbaqusReader::add_element() {
+void DeckReader::add_element() {
   const long long id = pending_.front();
   element_ids_.push_back(id);
   element_marks_.push_back(pending_mark_);
-  const bool tet = type_.kind == "tetra" || type_.kind == "tetra10";
-  if (tet) {
+  if (type_.kind == "tetra" || type_.kind == "tetra10") {
     if (tet_nodes_each_ != 0 && tet_nodes_each_ != type_.nodes)
       throw InputError(lines_.where_of(pending_mark_), mixed_tet_kinds(type_.nodes));
     tet_nodes_each_ = type_.nodes;
@@ -318,15 +236,15 @@ void AbaqusReader::add_element() {
     others_at_.emplace_back(static_cast<std::size_t>(it - others_.begin()), it->ids.size());
     it->ids.push_back(id);
     for (int k = 0; k < type_.nodes; ++k)
-      it->nodes.push_back(pending_[1 + static_cast<std::size_t>(abaqus::file_place(type_.kind, k))]);
+      it->nodes.push_back(pending_[1 + static_cast<std::size_t>(file_place(type_.kind, k))]);
     it->elsets.push_back(elset_);
   }
   pending_.clear();
 }
 
-void AbaqusReader::element_line() {
+void DeckReader::element_line() {
   const std::string& line = lines_.text();
-  const std::vector<std::string_view> fields = abaqus::split_fields(line);
+  const std::vector<std::string_view> fields = split_fields(line);
   if (pending_.empty()) pending_mark_ = lines_.mark();
   for (std::string_view field : fields) {
     long long v = 0;
@@ -337,16 +255,16 @@ void AbaqusReader::element_line() {
   }
   const std::size_t needed = 1 + static_cast<std::size_t>(type_.nodes);
   if (pending_.size() > needed)
-    lines_.fail(element_type_text() + " lists " + std::to_string(pending_.size() - 1) + " nodes, not " +
+    lines_.fail(element_text() + " lists " + std::to_string(pending_.size() - 1) + " nodes, not " +
                 std::to_string(type_.nodes));
   if (pending_.size() == needed) return add_element();
-  if (!abaqus::ends_with_comma(line))
-    lines_.fail(element_type_text() + " lists " + std::to_string(pending_.size() - 1) + " of its " +
+  if (!ends_with_comma(line))
+    lines_.fail(element_text() + " lists " + std::to_string(pending_.size() - 1) + " of its " +
                 std::to_string(type_.nodes) + " nodes (a line that goes on ends with a comma)");
 }
 
-void AbaqusReader::set_line() {
-  const std::vector<std::string_view> fields = abaqus::split_fields(lines_.text());
+void DeckReader::set_line() {
+  const std::vector<std::string_view> fields = split_fields(lines_.text());
   if (generate_) {
     std::array<long long, 3> range{0, 0, 1};
     if (fields.size() < 2 || fields.size() > 3)
@@ -361,17 +279,19 @@ void AbaqusReader::set_line() {
   for (std::string_view field : fields) {
     if (field.empty()) continue;
     long long id = 0;
-    if (parse_integer(field, id)) {
-      if (id <= 0) lines_.fail("expected a positive number or a set name, found " + quoted_token(field));
+    if (lists_elsets_)
+      part_.elsets.push_back(set_name(field));
+    else if (!parse_integer(field, id))
+      part_.names.push_back(set_name(field));
+    else if (id <= 0)
+      lines_.fail("expected a positive number or a set name, found " + quoted_token(field));
+    else
       part_.ids.push_back(id);
-    } else {
-      part_.names.push_back(abaqus::set_name(field));
-    }
   }
 }
 
-void AbaqusReader::pin_line() {
-  const std::vector<std::string_view> fields = abaqus::split_fields(lines_.text());
+void DeckReader::pin_line() {
+  const std::vector<std::string_view> fields = split_fields(lines_.text());
   const auto add = [&](std::string_view field) {
     long long zero = 0;  // *MPC's 0 stands for no node
     if (!field.empty() && !(parse_integer(field, zero) && zero == 0))
@@ -391,7 +311,7 @@ void AbaqusReader::pin_line() {
   }
 }
 
-void AbaqusReader::data() {
+void DeckReader::data() {
   switch (block_) {
     case Block::None:
       lines_.fail("a data line before the first keyword");
@@ -412,132 +332,7 @@ void AbaqusReader::data() {
   append_text(lines_.text());
 }
 
-std::vector<std::uint8_t> AbaqusReader::elements_of(const std::string& elset, const std::string& where,
-                                                    const abaqus::IdIndex& element_ids) const {
-  std::vector<std::uint8_t> in(element_ids_.size(), 0);
-  try {
-    sets_.mark_elements(elset, where, element_ids, in);
-  } catch (const std::invalid_argument& err) {
-    throw InputError("", err.what());
-  }
-  return in;
-}
-
-void AbaqusReader::resolve_regions(const abaqus::IdIndex& element_ids) {
-  FileExtras& e = mesh_.extras;
-  const auto tet_flags = [&](const std::vector<std::uint8_t>& in) {
-    std::vector<std::uint8_t> of_tets(tet_ids_.size(), 0);
-    for (std::size_t g = 0; g < in.size(); ++g)
-      if (element_at_[g] >= 0) of_tets[static_cast<std::size_t>(element_at_[g])] = in[g];
-    return of_tets;
-  };
-  if (!sections_.empty()) {
-    e.tet_tags.assign(tet_ids_.size(), 0);
-    for (std::size_t s = 0; s < sections_.size(); ++s) {
-      const std::vector<std::uint8_t> in = tet_flags(elements_of(sections_[s].first, sections_[s].second, element_ids));
-      for (std::size_t t = 0; t < in.size(); ++t)
-        if (in[t] && e.tet_tags[t] == 0) e.tet_tags[t] = static_cast<int>(s) + 1;
-    }
-    return;
-  }
-  e.tet_tags = abaqus::tags_from_element_sets(tet_elsets_, elset_names_);
-  if (!e.tet_tags.empty() || elset_order_.empty()) return;
-  if (elset_order_.size() > kMaxRegionSets) {
-    e.read_notes.push_back("no regions: the deck has no *SOLID SECTION, no ELSET= on its *ELEMENT lines, and " +
-                           std::to_string(elset_order_.size()) + " element sets, more than the " +
-                           std::to_string(kMaxRegionSets) +
-                           " tetsmooth tells regions apart by; nodes between materials may move");
-    return;
-  }
-  // Regions are the tets that the same element sets hold (meshio writes
-  // Gmsh's physical groups so).
-  std::vector<int> regions(tet_ids_.size(), 0);
-  for (const std::string& name : elset_order_) abaqus::split_regions(regions, tet_flags(elements_of(name, "", element_ids)));
-  for (int& r : regions) ++r;
-  e.tet_tags = std::move(regions);
-}
-
-void AbaqusReader::resolve_pins(const abaqus::IdIndex& node_ids, const abaqus::IdIndex& element_ids) {
-  std::vector<std::uint8_t> pinned(mesh_.num_nodes(), 0);
-  mark_element_nodes(mesh_.extras.blocks, pinned);
-  const auto mark_element = [&](std::size_t g, std::vector<std::uint8_t>& flags) {
-    const std::int64_t at = element_at_[g];
-    if (at >= 0) {
-      const std::size_t t = static_cast<std::size_t>(at);
-      for (int k = 0; k < 4; ++k) flags[static_cast<std::size_t>(mesh_.tets[4 * t + static_cast<std::size_t>(k)])] = 1;
-      if (!mesh_.midsides.empty())
-        for (int k = 0; k < 6; ++k) flags[static_cast<std::size_t>(mesh_.midsides[6 * t + static_cast<std::size_t>(k)])] = 1;
-      return;
-    }
-    const auto [b, i] = others_at_[static_cast<std::size_t>(-1 - at)];
-    const PassThroughBlock& block = mesh_.extras.blocks[b];
-    const auto n = static_cast<std::size_t>(block.nodes_per_element);
-    for (std::size_t k = 0; k < n; ++k) flags[static_cast<std::size_t>(block.connectivity[i * n + k])] = 1;
-  };
-  try {
-    for (const PinRef& ref : pin_refs_) {
-      long long id = 0;
-      if (!parse_integer(ref.name, id)) {
-        sets_.mark_nodes(abaqus::set_name(ref.name), lines_.where_of(ref.mark), node_ids, element_ids,
-                         element_ids_.size(), mark_element, pinned);
-        continue;
-      }
-      const long long node = node_ids.find(id);
-      if (node < 0) throw InputError(lines_.where_of(ref.mark), "node " + std::to_string(id) + " is not defined");
-      pinned[static_cast<std::size_t>(node)] = 1;
-    }
-    if (sets_.has_nset(kPinnedSet))
-      sets_.mark_nodes(kPinnedSet, "", node_ids, element_ids, element_ids_.size(), mark_element, pinned);
-  } catch (const std::invalid_argument& err) {
-    throw InputError("", err.what());
-  }
-  if (std::find(pinned.begin(), pinned.end(), 1) != pinned.end()) mesh_.fixed = std::move(pinned);
-}
-
-void AbaqusReader::resolve() {
-  FileExtras& e = mesh_.extras;
-  const abaqus::IdIndex node_ids(e.node_tags), element_ids(element_ids_);
-  if (const auto twice = node_ids.repeated())
-    throw InputError(lines_.where_of(node_marks_[*twice]),
-                     "node " + std::to_string(e.node_tags[*twice]) + " is defined a second time");
-  if (const auto twice = element_ids.repeated())
-    throw InputError(lines_.where_of(element_marks_[*twice]),
-                     "element " + std::to_string(element_ids_[*twice]) + " is defined a second time");
-  for (const Others& o : others_) {
-    PassThroughBlock& block = e.blocks.emplace_back();
-    block.kind = o.type.kind;
-    block.nodes_per_element = o.type.nodes;
-    block.element_tags = o.ids;
-    block.tags = abaqus::tags_from_element_sets(o.elsets, elset_names_);
-  }
-  // Elements in read order, so that each block's come in its own order.
-  const auto each = static_cast<std::size_t>(tet_nodes_each_);
-  index_t tet[10];
-  for (std::size_t g = 0; g < element_ids_.size(); ++g) {
-    const auto node = [&](long long id) {
-      const long long n = node_ids.find(id);
-      if (n < 0)
-        throw InputError(lines_.where_of(element_marks_[g]), "element " + std::to_string(element_ids_[g]) +
-                                                                 " names node " + std::to_string(id) +
-                                                                 ", which no *NODE line defines");
-      return static_cast<index_t>(n);
-    };
-    if (element_at_[g] >= 0) {
-      const auto t = static_cast<std::size_t>(element_at_[g]);
-      for (std::size_t k = 0; k < each; ++k) tet[k] = node(tet_nodes_[each * t + k]);
-      append_file_tet(mesh_, tet, each == 10, abaqus::kMidsidePlaces);
-      continue;
-    }
-    const auto [b, i] = others_at_[static_cast<std::size_t>(-1 - element_at_[g])];
-    const auto n = static_cast<std::size_t>(others_[b].type.nodes);
-    for (std::size_t k = 0; k < n; ++k) e.blocks[b].connectivity.push_back(node(others_[b].nodes[i * n + k]));
-  }
-  e.tet_element_tags = tet_ids_;
-  resolve_regions(element_ids);
-  resolve_pins(node_ids, element_ids);
-}
-
-TetMesh AbaqusReader::read(const std::string& source) {
+TetMesh DeckReader::read(const std::string& source) {
   while (lines_.next()) {
     switch (lines_.kind()) {
       case DeckLines::Kind::Keyword:
@@ -557,24 +352,16 @@ TetMesh AbaqusReader::read(const std::string& source) {
   if (mesh_.num_nodes() == 0) throw InputError(source, "no *NODE lines: not an Abaqus mesh");
   if (tet_ids_.empty()) throw InputError(source, "no tets (C3D4 or C3D10 elements): a volume mesh is needed");
   resolve();
-  FileExtras& e = mesh_.extras;
-  e.raw_sections.emplace_back("abaqus:deck", std::to_string(mesh_.num_nodes()) + " " + std::to_string(mesh_.num_tets()));
-  const auto joined = [](const std::vector<std::string>& items) {
-    std::string list;
-    for (const std::string& item : items) list += (list.empty() ? "" : ", ") + item;
-    return list;
-  };
-  if (!other_keywords_.empty()) e.raw_sections.emplace_back("abaqus:keywords", joined(other_keywords_));
-  if (!lines_.included().empty()) e.raw_sections.emplace_back("abaqus:includes", joined(lines_.included()));
+  keep_deck_notes();
   validate_mesh(mesh_, source);
   return std::move(mesh_);
 }
 
-}  // namespace
+}  // namespace abaqus
 
 TetMesh read_abaqus(std::istream& in, const std::string& source) {
-  DeckLines lines(in, source);
-  return AbaqusReader(lines).read(source);
+  abaqus::DeckLines lines(in, source);
+  return abaqus::DeckReader(lines).read(source);
 }
 
 TetMesh read_abaqus_file(const std::string& path) {

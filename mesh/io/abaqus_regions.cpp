@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <unordered_set>
 #include <string_view>
 #include <utility>
 
@@ -26,9 +27,11 @@ bool trailing_number(const std::string& name, int& value) {
 
 std::vector<int> numbers_of(const std::vector<std::string>& names) {
   std::vector<int> numbers;
+  std::unordered_set<int> taken;
   for (const std::string& name : names) {
     int n = 0;
-    if (!trailing_number(name, n) || std::find(numbers.begin(), numbers.end(), n) != numbers.end()) {
+    // 0 is the tag of elements without a set.
+    if (!trailing_number(name, n) || n == 0 || !taken.insert(n).second) {
       numbers.clear();
       for (std::size_t i = 0; i < names.size(); ++i) numbers.push_back(static_cast<int>(i) + 1);
       return numbers;
@@ -42,8 +45,12 @@ std::vector<int> numbers_of(const std::vector<std::string>& names) {
 
 std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets, const std::vector<std::string>& names) {
   std::vector<std::uint32_t> order;  // name indices in the order met
+  std::vector<std::uint8_t> met_already(names.size() + 1, 0);
   for (std::uint32_t e : elsets)
-    if (e != 0 && std::find(order.begin(), order.end(), e) == order.end()) order.push_back(e);
+    if (e != 0 && !met_already[e]) {
+      met_already[e] = 1;
+      order.push_back(e);
+    }
   if (order.empty()) return {};
   std::vector<std::string> met;
   for (std::uint32_t e : order) met.push_back(names[e - 1]);

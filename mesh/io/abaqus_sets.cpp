@@ -1,7 +1,9 @@
 #include "mesh/io/abaqus_sets.hpp"
 
 #include <algorithm>
-#include <stdexcept>
+#include <string>
+
+#include "mesh/errors.hpp"
 
 namespace tetsmooth::abaqus {
 
@@ -26,57 +28,54 @@ void IdIndex::append_range(long long first, long long last, long long step, std:
 }
 
 void DeckSets::collect(const std::map<std::string, Set>& sets, const std::string& name, const std::string& where,
-                       const IdIndex& ids, const char* kind, std::vector<std::uint8_t>& flags,
+                       const IdIndex& ids, const char* kind, std::vector<std::size_t>& items,
                        std::vector<std::string>& path, std::vector<std::string>& done,
                        std::vector<const SetPart*>& parts_with_elsets) const {
   if (std::find(done.begin(), done.end(), name) != done.end()) return;
   if (std::find(path.begin(), path.end(), name) != path.end())
-    throw std::invalid_argument(where + ": " + kind + " set " + name + " contains itself, through other sets");
+    throw InputError(where, std::string(kind) + " set " + name + " contains itself, through other sets");
   const auto it = sets.find(name);
-  if (it == sets.end()) throw std::invalid_argument(where + ": no " + kind + " set " + name + " is defined");
+  if (it == sets.end()) throw InputError(where, "no " + std::string(kind) + " set " + name + " is defined");
   path.push_back(name);
   for (const auto& [first, count] : it->second.runs)
-    std::fill(flags.begin() + static_cast<std::ptrdiff_t>(first),
-              flags.begin() + static_cast<std::ptrdiff_t>(first + count), std::uint8_t{1});
-  std::vector<std::size_t> items;
+    for (std::size_t i = first; i < first + count; ++i) items.push_back(i);
   for (const SetPart& part : it->second.parts) {
     for (long long id : part.ids) {
       const long long item = ids.find(id);
       if (item < 0)
-        throw std::invalid_argument(part.where + ": " + kind + " set " + name + " lists " + kind + " " +
-                                    std::to_string(id) + ", which the deck does not define");
-      flags[static_cast<std::size_t>(item)] = 1;
+        throw InputError(part.where, std::string(kind) + " set " + name + " lists " + kind + " " + std::to_string(id) +
+                                         ", which the deck does not define");
+      items.push_back(static_cast<std::size_t>(item));
     }
-    items.clear();
     for (const auto& [first, last, step] : part.ranges) ids.append_range(first, last, step, items);
-    for (std::size_t item : items) flags[item] = 1;
     for (const std::string& other : part.names)
-      collect(sets, other, part.where, ids, kind, flags, path, done, parts_with_elsets);
+      collect(sets, other, part.where, ids, kind, items, path, done, parts_with_elsets);
     if (!part.elsets.empty()) parts_with_elsets.push_back(&part);
   }
   path.pop_back();
   done.push_back(name);
 }
 
-void DeckSets::mark_elements(const std::string& name, const std::string& where, const IdIndex& element_ids,
-                             std::vector<std::uint8_t>& flags) const {
+std::vector<std::size_t> DeckSets::elements(const std::string& name, const std::string& where,
+                                            const IdIndex& element_ids) const {
+  std::vector<std::size_t> items;
   std::vector<std::string> path, done;
-  std::vector<const SetPart*> unused;  // element sets name no element sets of other kinds
-  collect(elsets_, name, where, element_ids, "element", flags, path, done, unused);
+  std::vector<const SetPart*> unused;  // element sets name no sets of nodes
+  collect(elsets_, name, where, element_ids, "element", items, path, done, unused);
+  return items;
 }
 
 void DeckSets::mark_nodes(const std::string& name, const std::string& where, const IdIndex& node_ids,
-                          const IdIndex& element_ids, std::size_t element_count,
-                          const MarkElementNodes& mark_element_nodes, std::vector<std::uint8_t>& flags) const {
+                          const IdIndex& element_ids, const MarkElementNodes& mark_element_nodes,
+                          std::vector<std::uint8_t>& flags) const {
+  std::vector<std::size_t> items;
   std::vector<std::string> path, done;
   std::vector<const SetPart*> with_elsets;
-  collect(nsets_, name, where, node_ids, "node", flags, path, done, with_elsets);
-  for (const SetPart* part : with_elsets) {
-    std::vector<std::uint8_t> elements(element_count, 0);
-    for (const std::string& elset : part->elsets) mark_elements(elset, part->where, element_ids, elements);
-    for (std::size_t e = 0; e < element_count; ++e)
-      if (elements[e]) mark_element_nodes(e, flags);
-  }
+  collect(nsets_, name, where, node_ids, "node", items, path, done, with_elsets);
+  for (std::size_t n : items) flags[n] = 1;
+  for (const SetPart* part : with_elsets)
+    for (const std::string& elset : part->elsets)
+      for (std::size_t e : elements(elset, part->where, element_ids)) mark_element_nodes(e, flags);
 }
 
 }  // namespace tetsmooth::abaqus

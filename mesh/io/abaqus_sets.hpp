@@ -56,16 +56,17 @@ class DeckSets {
   }
   bool has_nset(const std::string& name) const { return nsets_.count(name) != 0; }
 
-  // Marks the items of a set in `flags` (one per item): nodes by read index,
-  // elements by read index over every kind. `mark_element_nodes` marks an
-  // element's nodes, for *NSET, ELSET=. Throws std::invalid_argument, with
-  // "where: what", for a set that is not defined (`where` names the line
-  // that uses it), an id that no item has, or sets that contain each other.
+  // The items of an element set, by read index over every kind of element
+  // (an item may come more than once). Throws InputError at `where` (the
+  // line that uses the set) for a set that is not defined, at a set's own
+  // line for an id that no element has, or for sets that contain each other.
+  std::vector<std::size_t> elements(const std::string& name, const std::string& where, const IdIndex& element_ids) const;
+  // Marks the nodes of a node set in `flags` (one per node, by read index);
+  // `mark_element_nodes` marks an element's nodes, for *NSET, ELSET.
+  // Throws as elements() does.
   using MarkElementNodes = std::function<void(std::size_t element, std::vector<std::uint8_t>& node_flags)>;
-  void mark_elements(const std::string& name, const std::string& where, const IdIndex& element_ids,
-                     std::vector<std::uint8_t>& flags) const;
   void mark_nodes(const std::string& name, const std::string& where, const IdIndex& node_ids,
-                  const IdIndex& element_ids, std::size_t element_count, const MarkElementNodes& mark_element_nodes,
+                  const IdIndex& element_ids, const MarkElementNodes& mark_element_nodes,
                   std::vector<std::uint8_t>& flags) const;
 
  private:
@@ -73,10 +74,10 @@ class DeckSets {
     std::vector<SetPart> parts;
     std::vector<std::pair<std::size_t, std::size_t>> runs;
   };
-  // Marks the items of set `name` of `sets` (and of the sets it names) in
-  // `flags`, and gathers the parts that name element sets.
+  // Appends the items of set `name` of `sets` (and of the sets it names) to
+  // `items`, and gathers the parts that name element sets.
   void collect(const std::map<std::string, Set>& sets, const std::string& name, const std::string& where,
-               const IdIndex& ids, const char* kind, std::vector<std::uint8_t>& flags,
+               const IdIndex& ids, const char* kind, std::vector<std::size_t>& items,
                std::vector<std::string>& path, std::vector<std::string>& done,
                std::vector<const SetPart*>& parts_with_elsets) const;
 

@@ -7,6 +7,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/second_order.hpp"
+#include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
 #include "mesh/io/atomic_file.hpp"
@@ -36,12 +37,11 @@ bool has_deck(const TetMesh& mesh) { return raw_section(mesh.extras, "abaqus:dec
 void check_deck(const TetMesh& mesh) {
   const std::string expected = std::to_string(mesh.num_nodes()) + " " + std::to_string(mesh.num_tets());
   const std::string& stamp = *raw_section(mesh.extras, "abaqus:deck");
-  std::size_t listed = 0;
-  for (const auto& [name, body] : mesh.extras.raw_sections)
-    if (name == "abaqus:nodes") listed += std::stoull(body);
-  if (stamp != expected || listed != mesh.num_nodes() || mesh.extras.node_tags.size() != mesh.num_nodes())
+  // The node lines are written with the deck's numbers.
+  if (stamp != expected || mesh.extras.node_tags.size() != mesh.num_nodes())
     throw OutputError("the Abaqus deck read with this mesh lists (nodes, tets) " + stamp + ", and the mesh has " +
-                      expected + ": a deck is written back only for the mesh it was read with");
+                      expected + (mesh.extras.node_tags.size() != mesh.num_nodes() ? " without their numbers" : "") +
+                      ": a deck is written back only for the mesh it was read with");
 }
 
 void write_deck(const TetMesh& mesh, std::ostream& out) {
@@ -56,14 +56,17 @@ void write_deck(const TetMesh& mesh, std::ostream& out) {
 
 // --- A new deck -------------------------------------------------------------
 
-// The file's ids where each item has one and they are positive and
-// distinct, else 1, 2, ... in order.
-std::vector<long long> ids_or_positions(const std::vector<long long>& ids, std::size_t count) {
+// Whether a new deck can number `count` items by the file's `ids`: one
+// each, positive and distinct.
+bool usable(const std::vector<long long>& ids, std::size_t count) {
   std::vector<long long> sorted = ids;
   std::sort(sorted.begin(), sorted.end());
-  const bool usable = ids.size() == count && (sorted.empty() || sorted.front() > 0) &&
-                      std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-  if (usable) return ids;
+  return ids.size() == count && (sorted.empty() || sorted.front() > 0) &&
+         std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
+std::vector<long long> ids_or_positions(const std::vector<long long>& ids, std::size_t count) {
+  if (usable(ids, count)) return ids;
   std::vector<long long> positions(count);
   for (std::size_t i = 0; i < count; ++i) positions[i] = static_cast<long long>(i) + 1;
   return positions;
@@ -73,8 +76,9 @@ std::size_t elements_in(const PassThroughBlock& b) {
   return b.nodes_per_element > 0 ? b.connectivity.size() / static_cast<std::size_t>(b.nodes_per_element) : 0;
 }
 
-// Element ids over the tets, then each block's elements.
-std::vector<long long> element_ids(const TetMesh& mesh) {
+// The file's element ids over the tets, then each block's elements, and how
+// many elements there are; the ids are empty unless every element has one.
+std::pair<std::vector<long long>, std::size_t> file_element_ids(const TetMesh& mesh) {
   std::vector<long long> ids = mesh.extras.tet_element_tags;
   std::size_t count = mesh.num_tets();
   bool complete = ids.size() == count;
@@ -83,12 +87,19 @@ std::vector<long long> element_ids(const TetMesh& mesh) {
     complete = complete && b.element_tags.size() == elements_in(b);
     ids.insert(ids.end(), b.element_tags.begin(), b.element_tags.end());
   }
-  return ids_or_positions(complete ? ids : std::vector<long long>{}, count);
+  return {complete ? ids : std::vector<long long>{}, count};
 }
 
-std::string set_name(std::string prefix, int tag) {
-  for (char& c : prefix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return prefix + (tag < 0 ? "_M" + std::to_string(-static_cast<long long>(tag)) : "_" + std::to_string(tag));
+std::vector<long long> element_ids(const TetMesh& mesh) {
+  const auto [ids, count] = file_element_ids(mesh);
+  return ids_or_positions(ids, count);
+}
+
+// The ELSET= name of elements of one tag: REGION_4, TRIANGLE_5, REGION_M2
+// for -2 (abaqus_regions reads the number back).
+std::string element_set_name(const std::string& prefix, int tag) {
+  return abaqus::upper_case(prefix) +
+         (tag < 0 ? "_M" + std::to_string(-static_cast<long long>(tag)) : "_" + std::to_string(tag));
 }
 
 void check_new_deck(const TetMesh& mesh) {
@@ -110,7 +121,7 @@ void write_elements(std::ostream& out, const char* type, int nodes_each, std::si
   for (std::size_t e = 0; e < count; ++e) {
     if (e == 0 || (tagged && tags[e] != tags[e - 1])) {
       out << "*ELEMENT, TYPE=" << type;
-      if (tagged) out << ", ELSET=" << set_name(prefix, tags[e]);
+      if (tagged) out << ", ELSET=" << element_set_name(prefix, tags[e]);
       out << '\n';
     }
     put_integer(out, ids[e]);
@@ -131,7 +142,7 @@ void write_pinned_set(std::ostream& out, const TetMesh& mesh, const std::vector<
   for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i) {
     if (!mesh.fixed[i] || by_element[i]) continue;
     if (written == 0) out << "*NSET, NSET=TETSMOOTH_PINNED\n";
-    if (written > 0) out << (written % kSetEntriesPerLine == 0 ? ",\n" : ", ");
+    if (written > 0) out << (written % kSetEntriesPerLine == 0 ? "\n" : ", ");
     put_integer(out, node_ids[i]);
     ++written;
   }
@@ -177,6 +188,17 @@ void write_body(const TetMesh& mesh, std::ostream& out) {
 }
 
 }  // namespace
+
+std::string abaqus_numbers_lost(const TetMesh& mesh) {
+  if (has_deck(mesh)) return "";
+  const FileExtras& e = mesh.extras;
+  const bool nodes = !e.node_tags.empty() && !usable(e.node_tags, mesh.num_nodes());
+  const auto [ids, count] = file_element_ids(mesh);
+  bool any_element_ids = !e.tet_element_tags.empty();
+  for (const PassThroughBlock& b : e.blocks) any_element_ids = any_element_ids || !b.element_tags.empty();
+  const bool elements = any_element_ids && !usable(ids, count);
+  return nodes && elements ? "node and element" : nodes ? "node" : elements ? "element" : "";
+}
 
 void write_abaqus(const TetMesh& mesh, std::ostream& out) {
   check(mesh);

@@ -171,14 +171,6 @@ std::size_t entity_pins_lost(const TetMesh& mesh, MeshFormat format) {
   return lost;
 }
 
-// Whether the file's ids are just positions (1, 2, ... in order), which
-// every format keeps by writing the items in order.
-bool positional(const std::vector<long long>& tags) {
-  for (std::size_t i = 0; i < tags.size(); ++i)
-    if (tags[i] != static_cast<long long>(i) + 1) return false;
-  return true;
-}
-
 // Whether Gmsh entity tags tell apart elements of one region (or, without
 // region tags, of one block), in the tets or in a pass-through block (the
 // surface patches of a boundary, say): only then does their loss lose
@@ -258,12 +250,15 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                                               "whole, else their ranks)"));
   const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
   // MSH and Abaqus keep the file's node and element numbers.
-  const bool node_ids = !positional(e.node_tags), element_ids = !positional(e.tet_element_tags);
+  const bool node_ids = !numbered_by_position(e.node_tags), element_ids = !numbered_by_position(e.tet_element_tags);
   const bool abaqus = raw_section(e, "abaqus:deck") != nullptr;
   if (!msh && f != MeshFormat::Abaqus && (node_ids || element_ids))
     notes.push_back(std::string(abaqus ? "the Abaqus " : "the Gmsh ") +
                     (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
                     (abaqus ? " numbers" : " tags") + " will not be written: " + name + " numbers them by position");
+  if (const std::string lost = abaqus_numbers_lost(mesh); f == MeshFormat::Abaqus && !lost.empty())
+    notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct): " +
+                    name + " numbers them 1, 2, ... instead");
   if (const std::string* files = raw_section(e, "abaqus:includes"); files != nullptr && f == MeshFormat::Abaqus)
     notes.push_back("the *INCLUDE files (" + *files + ") will be written inline, in the one output deck");
   if (const std::string* keywords = raw_section(e, "abaqus:keywords"); keywords != nullptr && f != MeshFormat::Abaqus)

@@ -162,12 +162,21 @@ class MeshioDecks(GmshScratchCase):
         theirs = meshio.read(self.path("lattice.inp"))
         np.testing.assert_array_equal(theirs.points, ours.points)
         np.testing.assert_array_equal(theirs.cells_dict["tetra"], ours.cells_dict["tetra"])
-        # meshio's own deck (its *NODE and *ELEMENT layout) read by tetsmooth.
-        meshio.write(self.path("meshio.inp"), meshio.Mesh(ours.points, [("tetra", ours.cells_dict["tetra"])]))
+        # meshio's own deck (its *NODE and *ELEMENT layout) read by tetsmooth,
+        # with two materials as meshio writes cell sets: *ELSET lists alone.
+        tets = ours.cells_dict["tetra"]
+        rock = np.arange(0, len(tets), 3)
+        soil = np.setdiff1d(np.arange(len(tets)), rock)
+        meshio.write(self.path("meshio.inp"),
+                     meshio.Mesh(ours.points, [("tetra", tets)], cell_sets={"Soil": [soil], "Rock": [rock]}))
         run("convert", self.path("meshio.inp"), self.path("back.vtu"))
         back = meshio.read(self.path("back.vtu"))
         np.testing.assert_array_equal(back.points, ours.points)
-        np.testing.assert_array_equal(back.cells_dict["tetra"], ours.cells_dict["tetra"])
+        np.testing.assert_array_equal(back.cells_dict["tetra"], tets)
+        tags = np.concatenate(back.cell_data["tetsmooth:tag"]).ravel()
+        self.assertEqual(len(set(tags[rock].tolist())), 1)
+        self.assertEqual(len(set(tags[soil].tolist())), 1)
+        self.assertNotEqual(tags[rock[0]], tags[soil[0]])
 
     def test_a_deck_of_parts_is_refused_and_nothing_written(self):
         with open(self.path("parts.inp"), "w") as f:

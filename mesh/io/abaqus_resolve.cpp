@@ -1,0 +1,150 @@
+// The Abaqus deck reader's second half (abaqus_reader.hpp): once every line
+// is read, node and element numbers become indices, sets their members,
+// and the mesh gets its tets, pass-through blocks, regions and pins, by the
+// rules of abaqus_io.hpp.
+#include <algorithm>
+#include <unordered_set>
+
+#include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
+#include "mesh/io/abaqus_reader.hpp"
+#include "mesh/io/abaqus_regions.hpp"
+#include "mesh/io/text_lines.hpp"
+
+namespace tetsmooth::abaqus {
+namespace {
+
+// More element sets than this are not used to tell regions apart in a deck
+// without sections or ELSET= on its *ELEMENT lines (each set takes a pass
+// over the tets).
+constexpr std::size_t kMaxRegionSets = 64;
+
+// The set of the node pins that the writer leaves (abaqus_io.hpp).
+constexpr const char* kPinnedSet = "TETSMOOTH_PINNED";
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string list;
+  for (const std::string& item : items) list += (list.empty() ? "" : ", ") + item;
+  return list;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> DeckReader::tet_flags(const std::vector<std::size_t>& elements) const {
+  std::vector<std::uint8_t> of_tets(tet_ids_.size(), 0);
+  for (std::size_t g : elements)
+    if (element_at_[g] >= 0) of_tets[static_cast<std::size_t>(element_at_[g])] = 1;
+  return of_tets;
+}
+
+void DeckReader::resolve_regions(const IdIndex& element_ids) {
+  FileExtras& e = mesh_.extras;
+  if (!sections_.empty()) {
+    // A tet in two sections (which Abaqus refuses) takes the first.
+    e.tet_tags.assign(tet_ids_.size(), 0);
+    for (std::size_t s = 0; s < sections_.size(); ++s)
+      for (std::size_t g : sets_.elements(sections_[s].first, sections_[s].second, element_ids))
+        if (element_at_[g] >= 0 && e.tet_tags[static_cast<std::size_t>(element_at_[g])] == 0)
+          e.tet_tags[static_cast<std::size_t>(element_at_[g])] = static_cast<int>(s) + 1;
+    return;
+  }
+  e.tet_tags = tags_from_element_sets(tet_elsets_, elset_names_);
+  if (!e.tet_tags.empty() || elset_order_.empty()) return;
+  if (elset_order_.size() > kMaxRegionSets) {
+    e.read_notes.push_back("no regions: the deck has no *SOLID SECTION, no ELSET= on its *ELEMENT lines, and " +
+                           std::to_string(elset_order_.size()) + " element sets, more than the " +
+                           std::to_string(kMaxRegionSets) +
+                           " tetsmooth tells regions apart by; nodes between materials may move");
+    return;
+  }
+  // Regions are the tets that the same element sets hold (meshio writes
+  // Gmsh's physical groups so).
+  std::vector<int> regions(tet_ids_.size(), 0);
+  for (const std::string& name : elset_order_) split_regions(regions, tet_flags(sets_.elements(name, "", element_ids)));
+  for (int& r : regions) ++r;
+  e.tet_tags = std::move(regions);
+}
+
+void DeckReader::resolve_pins(const IdIndex& node_ids, const IdIndex& element_ids) {
+  std::vector<std::uint8_t> pinned(mesh_.num_nodes(), 0);
+  mark_element_nodes(mesh_.extras.blocks, pinned);
+  const auto mark_element = [&](std::size_t g, std::vector<std::uint8_t>& flags) {
+    const std::int64_t at = element_at_[g];
+    if (at >= 0) {
+      const auto t = static_cast<std::size_t>(at);
+      for (std::size_t k = 0; k < 4; ++k) flags[static_cast<std::size_t>(mesh_.tets[4 * t + k])] = 1;
+      if (!mesh_.midsides.empty())
+        for (std::size_t k = 0; k < 6; ++k) flags[static_cast<std::size_t>(mesh_.midsides[6 * t + k])] = 1;
+      return;
+    }
+    const auto [b, i] = others_at_[static_cast<std::size_t>(-1 - at)];
+    const PassThroughBlock& block = mesh_.extras.blocks[b];
+    const auto n = static_cast<std::size_t>(block.nodes_per_element);
+    for (std::size_t k = 0; k < n; ++k) flags[static_cast<std::size_t>(block.connectivity[i * n + k])] = 1;
+  };
+  std::unordered_set<std::string> sets_done;  // a set named on many lines is resolved once
+  for (const PinRef& ref : pin_refs_) {
+    long long id = 0;
+    if (parse_integer(ref.name, id)) {
+      const long long node = node_ids.find(id);
+      if (node < 0) throw InputError(lines_.where_of(ref.mark), "node " + std::to_string(id) + " is not defined");
+      pinned[static_cast<std::size_t>(node)] = 1;
+    } else if (const std::string name = set_name(ref.name); sets_done.insert(name).second) {
+      sets_.mark_nodes(name, lines_.where_of(ref.mark), node_ids, element_ids, mark_element, pinned);
+    }
+  }
+  if (sets_.has_nset(kPinnedSet)) sets_.mark_nodes(kPinnedSet, "", node_ids, element_ids, mark_element, pinned);
+  if (std::find(pinned.begin(), pinned.end(), 1) != pinned.end()) mesh_.fixed = std::move(pinned);
+}
+
+void DeckReader::resolve() {
+  FileExtras& e = mesh_.extras;
+  const IdIndex node_ids(e.node_tags), element_ids(element_ids_);
+  if (const auto twice = node_ids.repeated())
+    throw InputError(lines_.where_of(node_marks_[*twice]),
+                     "node " + std::to_string(e.node_tags[*twice]) + " is defined a second time");
+  if (const auto twice = element_ids.repeated())
+    throw InputError(lines_.where_of(element_marks_[*twice]),
+                     "element " + std::to_string(element_ids_[*twice]) + " is defined a second time");
+  for (const Others& o : others_) {
+    PassThroughBlock& block = e.blocks.emplace_back();
+    block.kind = o.type.kind;
+    block.nodes_per_element = o.type.nodes;
+    block.element_tags = o.ids;
+    block.tags = tags_from_element_sets(o.elsets, elset_names_);
+  }
+  // Elements in read order, so that each block's come in its own order.
+  const auto each = static_cast<std::size_t>(tet_nodes_each_);
+  index_t tet[10];
+  for (std::size_t g = 0; g < element_ids_.size(); ++g) {
+    const auto node = [&](long long id) {
+      const long long n = node_ids.find(id);
+      if (n < 0)
+        throw InputError(lines_.where_of(element_marks_[g]), "element " + std::to_string(element_ids_[g]) +
+                                                                 " names node " + std::to_string(id) +
+                                                                 ", which no *NODE line defines");
+      return static_cast<index_t>(n);
+    };
+    if (element_at_[g] >= 0) {
+      const auto t = static_cast<std::size_t>(element_at_[g]);
+      for (std::size_t k = 0; k < each; ++k) tet[k] = node(tet_nodes_[each * t + k]);
+      append_file_tet(mesh_, tet, each == 10, kMidsidePlaces);
+      continue;
+    }
+    const auto [b, i] = others_at_[static_cast<std::size_t>(-1 - element_at_[g])];
+    const auto n = static_cast<std::size_t>(others_[b].type.nodes);
+    for (std::size_t k = 0; k < n; ++k) e.blocks[b].connectivity.push_back(node(others_[b].nodes[i * n + k]));
+  }
+  e.tet_element_tags = tet_ids_;
+  resolve_regions(element_ids);
+  resolve_pins(node_ids, element_ids);
+}
+
+void DeckReader::keep_deck_notes() {
+  FileExtras& e = mesh_.extras;
+  e.raw_sections.emplace_back("abaqus:deck", std::to_string(mesh_.num_nodes()) + " " + std::to_string(mesh_.num_tets()));
+  if (!other_keywords_.empty()) e.raw_sections.emplace_back("abaqus:keywords", joined(other_keywords_));
+  if (!lines_.included().empty()) e.raw_sections.emplace_back("abaqus:includes", joined(lines_.included()));
+}
+
+}  // namespace tetsmooth::abaqus

@@ -297,7 +297,8 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
             std::string::npos);
   std::ofstream(dir.file("lost.inp")) << "*HEADING\n*INCLUDE, INPUT=missing.inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("lost.inp")); }, "lost.inp")
-                .find("lost.inp:2: *INCLUDE: " + dir.file("missing.inp") + ": cannot open"),
+                .find("lost.inp:2: *INCLUDE: " + dir.file("missing.inp") +
+                      ": cannot open: No such file or directory (a relative path starts from the job's directory"),
             std::string::npos);
 }
 
@@ -306,12 +307,12 @@ TEST(AbaqusIo, ShortenedKeywordsAndParametersAndQuotedNames) {
   std::string deck = replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*ELEM, TYP=C3D4, ELS=Lower");
   deck = replaced(deck, "*Elset, elset=Upper, generate", "*ELSET, ELSET=Upper, GEN");
   deck = replaced(deck, "*Solid Section, elset=Upper", "*Solid Sec, elset=Upper");
-  deck = replaced(deck, "*Boundary\n6, 1, 3\n", "*BOUND\n\"Free node\", 1, 3\n*NSET, NSET=\"Free node\"\n6\n");
+  deck = replaced(deck, "*Boundary\n6, 1, 3\n", "*BOUND\n\"Free, node\", 1, 3\n*NSET, NSET=\"Free, node\"\n6\n");
   const TetMesh mesh = read_text(deck);
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2, 1}));
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 1}));
-  // A quoted name keeps its spaces; an unquoted one loses them.
-  EXPECT_NE(read_error(replaced(deck, "NSET=\"Free node\"", "NSET=Freenode")).find("no node set FREE NODE is defined"),
+  // A quoted name keeps its spaces and commas; an unquoted one loses its spaces.
+  EXPECT_NE(read_error(replaced(deck, "NSET=\"Free, node\"", "NSET=Freenode")).find("no node set FREE, NODE is defined"),
             std::string::npos);
   // A prefix of two keywords the reader knows is no abbreviation of either.
   EXPECT_NE(read_error(replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*EL, type=C3D4"))
@@ -357,13 +358,14 @@ TEST(AbaqusIo, SetsByStepsByElementSetsAndSectionsThatOverlap) {
   const std::string sections = "*ELSET, ELSET=A\n1, 2\n*ELSET, ELSET=B\n2\n";
   EXPECT_EQ(read_text(base + sections + "*SOLID SECTION, ELSET=B\n*SOLID SECTION, ELSET=A\n").extras.tet_tags,
             (std::vector<int>{2, 1}));
-  // Regions from element sets alone: at most 64 sets are told apart.
+  // Regions from element sets alone, however many: sets that hold both
+  // tets, or one each, keep them apart; those that hold one, together.
   std::string many = base;
-  for (int s = 0; s < 65; ++s) many += "*ELSET, ELSET=E" + std::to_string(s) + "\n" + std::to_string(1 + s % 2) + "\n";
-  const TetMesh unsplit = read_text(many);
-  EXPECT_TRUE(unsplit.extras.tet_tags.empty());
-  ASSERT_EQ(unsplit.extras.read_notes.size(), 1u);
-  EXPECT_NE(unsplit.extras.read_notes[0].find("no regions: the deck has no *SOLID SECTION"), std::string::npos);
+  for (int s = 0; s < 300; ++s)
+    many += "*ELSET, ELSET=E" + std::to_string(s) + "\n" + (s % 3 == 0 ? "1, 2" : std::to_string(1 + s % 2)) + "\n";
+  EXPECT_EQ(read_text(many).extras.tet_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(read_text(base + "*ELSET, ELSET=All\n1, 2\n*ELSET, ELSET=Again\n2, 1\n").extras.tet_tags,
+            (std::vector<int>{1, 1}));
   // A set numbered 0 is no tag of its own: 0 is that of tets without a set.
   const std::string zero =
       "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n*ELEMENT, TYPE=C3D4, ELSET=Volume0\n1, 1, 2, 3, 4\n"
@@ -408,6 +410,11 @@ TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
       {"*Material, name=Rock\n", "*Material, name=Rock,\n",
        "t.inp:23: the keyword line ends with a comma, and the next line is a keyword line"},
       {"*End Step\n", "*End Step,\n", "t.inp:30: the keyword line ends with a comma, and its file ends after it"},
+      {"*Element, type=C3D4, elset=Lower\n", "*Element, type=C3D4, elset=Lower,\n",
+       "t.inp:11: keyword line: '10' is no parameter (does a comma at the end of the keyword line join a data line"},
+      {"*Boundary\n", "*Boundary, input=bc.inp\n", "t.inp:26: *BOUNDARY lines from another file (INPUT=) are not read"},
+      {"*Node, nset=All\n", "*Node, nset=All, inp=n.inp\n", "t.inp:4: *NODE lines from another file (INPUT=)"},
+      {"6, 1, 3\n", "Lower, 1, 3\n", "t.inp:27: no node set LOWER is defined (LOWER is a set of elements)"},
   };
   for (const auto& c : cases) {
     const std::string message = read_error(replaced(kDeck, c.from, c.to));

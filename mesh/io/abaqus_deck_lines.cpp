@@ -25,9 +25,10 @@ struct Known {
 const std::vector<Known>& known_keywords() {
   static const std::vector<Known> known = {
       {"HEADING", {}},       {"NODE", {"NSET", "SYSTEM", "INPUT"}}, {"ELEMENT", {"TYPE", "ELSET", "INPUT"}},
-      {"NSET", {"NSET", "ELSET", "GENERATE"}}, {"ELSET", {"ELSET", "GENERATE"}},
-      {"SOLIDSECTION", {"ELSET", "MATERIAL"}}, {"BOUNDARY", {}}, {"CLOAD", {}}, {"CFLUX", {}}, {"CFLOW", {}},
-      {"EQUATION", {}},      {"MPC", {}},        {"INCLUDE", {"INPUT"}}, {"PART", {}},  {"ASSEMBLY", {}},
+      {"NSET", {"NSET", "ELSET", "GENERATE", "INPUT"}}, {"ELSET", {"ELSET", "GENERATE", "INPUT"}},
+      {"SOLIDSECTION", {"ELSET", "MATERIAL"}}, {"BOUNDARY", {"INPUT"}}, {"CLOAD", {"INPUT"}}, {"CFLUX", {"INPUT"}},
+      {"CFLOW", {"INPUT"}},  {"EQUATION", {"INPUT"}}, {"MPC", {"INPUT"}}, {"INCLUDE", {"INPUT"}}, {"PART", {}},
+      {"ASSEMBLY", {}},
       {"INSTANCE", {}},      {"NGEN", {}},       {"NFILL", {}},          {"NCOPY", {}}, {"NMAP", {}},
       {"SYSTEM", {}},        {"ELGEN", {}},      {"ELCOPY", {}},
   };
@@ -137,6 +138,11 @@ Keyword parse_keyword(std::string_view line) {
     if (part.empty()) continue;  // the comma before a continuation line
     const std::size_t eq = part.find('=');
     std::string name = normalized(part.substr(0, eq));
+    // A data line joined to a keyword line that ended in a comma.
+    if (name.empty() || !std::isalpha(static_cast<unsigned char>(name.front())))
+      throw std::invalid_argument("'" + std::string(part.substr(0, 40)) +
+                                  "' is no parameter (does a comma at the end of the keyword line join a data line "
+                                  "to it?)");
     if (it != known.end()) name = in_full(name, it->params, [](const char* p) { return std::string_view(p); }, "the parameter");
     kw.params.emplace_back(std::move(name), eq == std::string_view::npos ? "" : std::string(trimmed(part.substr(eq + 1))));
   }
@@ -146,11 +152,13 @@ Keyword parse_keyword(std::string_view line) {
 std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
   std::size_t start = 0;
-  for (;;) {
-    const std::size_t comma = line.find(',', start);
-    fields.push_back(trimmed(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
+  bool quoted = false;  // a quoted set name may hold commas
+  for (std::size_t i = 0; i <= line.size(); ++i) {
+    if (i < line.size() && line[i] == '"') quoted = !quoted;
+    if (i == line.size() || (line[i] == ',' && !quoted)) {
+      fields.push_back(trimmed(line.substr(start, i - start)));
+      start = i + 1;
+    }
   }
   if (fields.size() > 1 && fields.back().empty()) fields.pop_back();
   return fields;
@@ -211,10 +219,11 @@ void DeckLines::include(const Keyword& kw) {
     std::istream* raw = in.get();
     stack_.push_back(Source{raw, std::move(in), path});
   } catch (const InputError& e) {
-    fail(std::string("*INCLUDE: ") + e.what());
+    fail(std::string("*INCLUDE: ") + e.what() +
+         (file.front() == '/' ? "" : " (a relative path starts from the job's directory, that of the deck first read)"));
   }
   new_stretch();
-  included_.push_back(path);
+  if (std::find(included_.begin(), included_.end(), path) == included_.end()) included_.push_back(path);
 }
 
 bool DeckLines::next() {

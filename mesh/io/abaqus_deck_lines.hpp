@@ -34,12 +34,14 @@ struct Keyword {
 };
 
 // Parses a keyword line (its continuation lines joined after it). Throws
-// std::invalid_argument with the reason on an unclosed quote or a name that
-// shortens more than one the reader interprets.
+// std::invalid_argument with the reason on an unclosed quote, a name that
+// shortens more than one the reader interprets, or a parameter that is no
+// name (a data line joined on by a trailing comma).
 Keyword parse_keyword(std::string_view line);
 
-// The comma-separated fields of a data line, without surrounding spaces; a
-// line's trailing comma leaves no empty last field.
+// The comma-separated fields of a data line, without surrounding spaces
+// (commas inside double quotes separate nothing); a line's trailing comma
+// leaves no empty last field.
 std::vector<std::string_view> split_fields(std::string_view line);
 
 // Whether a data line ends with a comma (an element line that goes on).
@@ -81,7 +83,7 @@ class DeckLines {
   std::uint32_t mark() const { return mark_; }
   std::string where_of(std::uint32_t mark) const;
 
-  // The files *INCLUDE read, in the order met.
+  // The files *INCLUDE read, each once, in the order met.
   const std::vector<std::string>& included() const { return included_; }
 
  private:

@@ -18,7 +18,7 @@
 //    -2), else the names numbered 1, 2, ... in the order met. Other
 //    elements get their tags from their ELSET= names the same way.
 //    A deck with neither: the tets that the same *ELSET sets hold form a
-//    region (meshio writes Gmsh's physical groups so), for up to 64 sets.
+//    region (meshio writes Gmsh's physical groups so).
 //  * Pinned nodes, besides those of non-tet elements: nodes that loads and
 //    constraints name (by number or node set): *BOUNDARY, *CLOAD, *CFLUX,
 //    *CFLOW, *EQUATION and *MPC; and the node set TETSMOOTH_PINNED that the

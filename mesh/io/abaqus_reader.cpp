@@ -132,7 +132,6 @@ void DeckReader::finish_block() {
 void DeckReader::start_element_block(const Keyword& kw) {
   const std::string* type = kw.param("TYPE");
   if (type == nullptr || type->empty()) lines_.fail("*ELEMENT without TYPE=");
-  if (kw.param("INPUT") != nullptr) lines_.fail("element lines from another file (INPUT=) are not read: use *INCLUDE");
   const auto known = element_type(*type);
   if (!known) lines_.fail(unsupported_element_type(text_excerpt(*type)));
   type_ = *known;
@@ -168,7 +167,6 @@ void DeckReader::keyword() {
     if (const std::string* system = kw.param("SYSTEM"); system != nullptr && normalized(*system) != "R")
       lines_.fail("*NODE, SYSTEM=" + text_excerpt(*system) +
                   ": nodes in cylindrical or spherical coordinates are not read: give them in rectangular ones");
-    if (kw.param("INPUT") != nullptr) lines_.fail("node lines from another file (INPUT=) are not read: use *INCLUDE");
     const std::string* nset = kw.param("NSET");
     node_set_ = nset == nullptr ? "" : set_name(*nset);
     block_first_ = mesh_.num_nodes();
@@ -187,6 +185,9 @@ void DeckReader::keyword() {
       block_ = Block::Pins;
       pin_names_ = p.names;
     }
+  // Data that the reader needs must not be missed.
+  if (block_ != Block::Other && kw.param("INPUT") != nullptr)
+    lines_.fail("*" + kw.name + " lines from another file (INPUT=) are not read: use *INCLUDE");
   if (kw.name != "HEADING" && kw.name != "NODE" && kw.name != "ELEMENT") {
     // The keyword as written, up to its first parameter.
     const std::string& text = lines_.text();

@@ -62,7 +62,7 @@ class DeckReader {
   void resolve();
   void resolve_regions(const IdIndex& element_ids);
   void resolve_pins(const IdIndex& node_ids, const IdIndex& element_ids);
-  std::vector<std::uint8_t> tet_flags(const std::vector<std::size_t>& elements) const;
+  std::vector<std::size_t> tets_of(const std::vector<std::size_t>& elements) const;
   void keep_deck_notes();
 
   DeckLines& lines_;

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <map>
+#include <unordered_map>
 #include <unordered_set>
 #include <string_view>
 #include <utility>
@@ -63,12 +63,25 @@ std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets
   return tags;
 }
 
-void split_regions(std::vector<int>& regions, const std::vector<std::uint8_t>& in_set) {
-  std::map<std::pair<int, bool>, int> renumbered;
-  for (std::size_t e = 0; e < regions.size(); ++e) {
-    const auto key = std::make_pair(regions[e], in_set[e] != 0);
-    regions[e] = renumbered.try_emplace(key, static_cast<int>(renumbered.size())).first->second;
+void RegionSplitter::split(const std::vector<std::size_t>& members) {
+  // The members of each region leave it for a new one; the rest stay.
+  std::unordered_map<int, int> moved_to;
+  ++round_;
+  for (std::size_t e : members) {
+    if (round_of_[e] == round_) continue;
+    round_of_[e] = round_;
+    const auto [it, added] = moved_to.try_emplace(regions_[e], next_);
+    if (added) ++next_;
+    regions_[e] = it->second;
   }
+}
+
+std::vector<int> RegionSplitter::tags() const {
+  std::unordered_map<int, int> tag_of;
+  std::vector<int> tags;
+  tags.reserve(regions_.size());
+  for (int r : regions_) tags.push_back(tag_of.try_emplace(r, static_cast<int>(tag_of.size()) + 1).first->second);
+  return tags;
 }
 
 }  // namespace tetsmooth::abaqus

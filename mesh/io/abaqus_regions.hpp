@@ -15,10 +15,22 @@ namespace tetsmooth::abaqus {
 // Empty when no element has a set.
 std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets, const std::vector<std::string>& names);
 
-// Splits every element's region by one more set: elements of one region
-// stay together only if the set holds all or none of them. `regions` holds
-// a region number per element (start with all 0), `in_set` one flag per
-// element. Numbers are 0, 1, ... in the order of each region's first element.
-void split_regions(std::vector<int>& regions, const std::vector<std::uint8_t>& in_set);
+// Regions as the sets that hold each element: two elements share a region
+// when every set holds both or neither. Each set costs time in its own
+// size, whatever the number of elements.
+class RegionSplitter {
+ public:
+  explicit RegionSplitter(std::size_t elements) : regions_(elements, 0), round_of_(elements, 0) {}
+  // One more set, by element index (an element may come more than once).
+  void split(const std::vector<std::size_t>& members);
+  // The regions, numbered 1, 2, ... in the order of their first elements.
+  std::vector<int> tags() const;
+
+ private:
+  std::vector<int> regions_;
+  std::vector<std::uint32_t> round_of_;  // the last split that met each element
+  std::uint32_t round_ = 0;
+  int next_ = 1;
+};
 
 }  // namespace tetsmooth::abaqus

@@ -14,11 +14,6 @@
 namespace tetsmooth::abaqus {
 namespace {
 
-// More element sets than this are not used to tell regions apart in a deck
-// without sections or ELSET= on its *ELEMENT lines (each set takes a pass
-// over the tets).
-constexpr std::size_t kMaxRegionSets = 64;
-
 // The set of the node pins that the writer leaves (abaqus_io.hpp).
 constexpr const char* kPinnedSet = "TETSMOOTH_PINNED";
 
@@ -30,11 +25,11 @@ std::string joined(const std::vector<std::string>& items) {
 
 }  // namespace
 
-std::vector<std::uint8_t> DeckReader::tet_flags(const std::vector<std::size_t>& elements) const {
-  std::vector<std::uint8_t> of_tets(tet_ids_.size(), 0);
+std::vector<std::size_t> DeckReader::tets_of(const std::vector<std::size_t>& elements) const {
+  std::vector<std::size_t> tets;
   for (std::size_t g : elements)
-    if (element_at_[g] >= 0) of_tets[static_cast<std::size_t>(element_at_[g])] = 1;
-  return of_tets;
+    if (element_at_[g] >= 0) tets.push_back(static_cast<std::size_t>(element_at_[g]));
+  return tets;
 }
 
 void DeckReader::resolve_regions(const IdIndex& element_ids) {
@@ -50,19 +45,11 @@ void DeckReader::resolve_regions(const IdIndex& element_ids) {
   }
   e.tet_tags = tags_from_element_sets(tet_elsets_, elset_names_);
   if (!e.tet_tags.empty() || elset_order_.empty()) return;
-  if (elset_order_.size() > kMaxRegionSets) {
-    e.read_notes.push_back("no regions: the deck has no *SOLID SECTION, no ELSET= on its *ELEMENT lines, and " +
-                           std::to_string(elset_order_.size()) + " element sets, more than the " +
-                           std::to_string(kMaxRegionSets) +
-                           " tetsmooth tells regions apart by; nodes between materials may move");
-    return;
-  }
   // Regions are the tets that the same element sets hold (meshio writes
   // Gmsh's physical groups so).
-  std::vector<int> regions(tet_ids_.size(), 0);
-  for (const std::string& name : elset_order_) split_regions(regions, tet_flags(sets_.elements(name, "", element_ids)));
-  for (int& r : regions) ++r;
-  e.tet_tags = std::move(regions);
+  RegionSplitter regions(tet_ids_.size());
+  for (const std::string& name : elset_order_) regions.split(tets_of(sets_.elements(name, "", element_ids)));
+  e.tet_tags = regions.tags();
 }
 
 void DeckReader::resolve_pins(const IdIndex& node_ids, const IdIndex& element_ids) {

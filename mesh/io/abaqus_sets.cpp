@@ -35,7 +35,13 @@ void DeckSets::collect(const std::map<std::string, Set>& sets, const std::string
   if (std::find(path.begin(), path.end(), name) != path.end())
     throw InputError(where, std::string(kind) + " set " + name + " contains itself, through other sets");
   const auto it = sets.find(name);
-  if (it == sets.end()) throw InputError(where, "no " + std::string(kind) + " set " + name + " is defined");
+  if (it == sets.end()) {
+    const auto& others = &sets == &nsets_ ? elsets_ : nsets_;
+    throw InputError(where, "no " + std::string(kind) + " set " + name + " is defined" +
+                                (others.count(name) != 0 ? " (" + name + " is a set of " +
+                                                               (&sets == &nsets_ ? "elements)" : "nodes)")
+                                                         : ""));
+  }
   path.push_back(name);
   for (const auto& [first, count] : it->second.runs)
     for (std::size_t i = first; i < first + count; ++i) items.push_back(i);

@@ -96,6 +96,8 @@ TEST(AbaqusIo, ReadsNodesElementsSectionsAndPins) {
   EXPECT_EQ(*raw_section(mesh.extras, "abaqus:keywords"),
             "*Elset, *Solid Section, *Material, *Elastic, *Boundary, *Step, *Static, *End Step");
   EXPECT_EQ(*raw_section(mesh.extras, "abaqus:deck"), "6 2");
+  // The regions' names as the deck writes them, for MSH output.
+  EXPECT_EQ(*raw_section(mesh.extras, "$PhysicalNames"), "3\n3 1 \"Upper\"\n3 2 \"LOWER\"\n2 1 \"Skin\"\n");
 }
 
 TEST(AbaqusIo, ReadsADeckGmshWrote) {
@@ -115,6 +117,8 @@ TEST(AbaqusIo, ReadsADeckGmshWrote) {
   mark_element_nodes(mesh.extras.blocks, pinned);
   EXPECT_EQ(mesh.fixed, pinned);
   EXPECT_EQ(*raw_section(mesh.extras, "abaqus:keywords"), "*ELSET, *NSET");
+  EXPECT_EQ(*raw_section(mesh.extras, "$PhysicalNames"),
+            "3\n3 1 \"Volume1\"\n3 2 \"Volume2\"\n2 5 \"Surface5\"\n");
 }
 
 TEST(AbaqusIo, WritesTheDeckBackWithOnlyItsCoordinatesChanged) {
@@ -467,10 +471,18 @@ TEST(AbaqusIo, FormatByNameAndWhatOtherFormatsLose) {
   const TetMesh mesh = read_text(kDeck);
   EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
   const std::vector<std::string> to_vtu = output_losses(mesh, "out.vtu");
-  ASSERT_EQ(to_vtu.size(), 2u);
+  ASSERT_EQ(to_vtu.size(), 3u);
   EXPECT_EQ(to_vtu[0], "the Abaqus element numbers will not be written: vtu numbers them by position");
   EXPECT_EQ(to_vtu[1], "the rest of the Abaqus deck (*Elset, *Solid Section, *Material, *Elastic, *Boundary, *Step, "
                        "*Static, *End Step) will not be written: vtu holds the mesh alone");
+  EXPECT_EQ(to_vtu[2], "the names of the regions (the deck's element sets) will not be written: vtu has no place for "
+                       "them");
+  // MSH keeps the numbers and the names (as physical names), not the rest,
+  // nor the pin of node 6, which no element holds.
+  const std::vector<std::string> to_msh = output_losses(mesh, "out.msh");
+  ASSERT_EQ(to_msh.size(), 2u);
+  EXPECT_EQ(to_msh[0], "1 pinned node will not be pinned in the msh41 output, so a later run may move it");
+  EXPECT_EQ(to_msh[1].substr(0, 30), "the rest of the Abaqus deck (*");
   TetMesh hexes = testing::cube_grid(1);
   hexes.extras.blocks.push_back(PassThroughBlock{"polygon", 7, {}, {}, {}, {}});
   try {

@@ -85,18 +85,18 @@ std::vector<std::string_view> split_quoted(std::string_view line) {
   return parts;
 }
 
-std::string unquoted(std::string_view value) {
-  value = trimmed(value);
-  if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
-  return std::string(value);
-}
-
 std::string directory_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
   return slash == std::string::npos ? "" : path.substr(0, slash + 1);
 }
 
 }  // namespace
+
+std::string unquoted(std::string_view value) {
+  value = trimmed(value);
+  if (value.size() >= 2 && value.front() == '"' && value.back() == '"') value = value.substr(1, value.size() - 2);
+  return std::string(value);
+}
 
 std::string upper_case(std::string_view text) {
   std::string out(text);

@@ -58,6 +58,9 @@ std::string normalized(std::string_view name);
 // its spaces (and loses the quotes), any other loses them.
 std::string set_name(std::string_view name);
 
+// A name as the deck writes it, for people to read: trimmed, unquoted.
+std::string unquoted(std::string_view value);
+
 class DeckLines {
  public:
   enum class Kind { Keyword, Data, Comment };

@@ -20,6 +20,7 @@ inline constexpr MidsidePlaces kMidsidePlaces = {4, 5, 6, 7, 8, 9};
 struct ElementType {
   std::string kind;  // "tetra", "tetra10", or a PassThroughBlock::kind as the other readers name it
   int nodes = 0;
+  int dimension = 3;  // 0 for points, 1 for lines, 2 for faces, 3 for solids
 };
 
 // The element type a TYPE= value names (any case), or nullopt.

@@ -34,7 +34,9 @@
 //    "abaqus:deck" ("<nodes> <tets>", what the deck describes) and
 //    "abaqus:keywords" (the deck's keywords other than *HEADING, *NODE and
 //    *ELEMENT, as written, for a note when another format drops them) and
-//    "abaqus:includes" (the files *INCLUDE read).
+//    "abaqus:includes" (the files *INCLUDE read); and "$PhysicalNames",
+//    Gmsh's names for the region tags (the sections' and *ELEMENT lines'
+//    element set names, as written), which MSH output keeps.
 //
 // Writing: a mesh read from a deck is written as that deck, each *NODE line
 // "id, x, y, z" with the new coordinates in shortest round-trip form and

@@ -100,7 +100,10 @@ std::uint32_t DeckReader::elset_index(const std::string* name) {
   elset_name_ = set_name(*name);
   note_elset(elset_name_);
   const auto [it, added] = elset_numbers_.try_emplace(elset_name_, static_cast<std::uint32_t>(elset_names_.size()) + 1);
-  if (added) elset_names_.push_back(elset_name_);
+  if (added) {
+    elset_names_.push_back(elset_name_);
+    elset_written_.push_back(unquoted(*name));
+  }
   return it->second;
 }
 
@@ -178,7 +181,7 @@ void DeckReader::keyword() {
   } else if (kw.name == "SOLIDSECTION") {
     const std::string* elset = kw.param("ELSET");
     if (elset == nullptr || elset->empty()) lines_.fail("*SOLID SECTION without ELSET=");
-    sections_.emplace_back(set_name(*elset), lines_.where());
+    sections_.push_back(Section{set_name(*elset), lines_.where(), unquoted(*elset)});
   }
   for (const PinKeyword& p : kPinKeywords)
     if (kw.name == p.keyword) {

@@ -14,6 +14,7 @@
 #include "mesh/tet_mesh.hpp"
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
+#include "mesh/io/abaqus_regions.hpp"
 #include "mesh/io/abaqus_sets.hpp"
 
 namespace tetsmooth::abaqus {
@@ -60,7 +61,7 @@ class DeckReader {
 
   // abaqus_resolve.cpp: numbers and names.
   void resolve();
-  void resolve_regions(const IdIndex& element_ids);
+  void resolve_regions(const IdIndex& element_ids, RegionNames& names);
   void resolve_pins(const IdIndex& node_ids, const IdIndex& element_ids);
   std::vector<std::size_t> tets_of(const std::vector<std::size_t>& elements) const;
   void keep_deck_notes();
@@ -92,8 +93,9 @@ class DeckReader {
   int tet_nodes_each_ = 0;
   std::vector<std::uint32_t> tet_elsets_;
   std::vector<Others> others_;
-  // ELSET= names of *ELEMENT lines (set_name), and their indices + 1.
-  std::vector<std::string> elset_names_;
+  // ELSET= names of *ELEMENT lines (set_name; as written), and their
+  // indices + 1.
+  std::vector<std::string> elset_names_, elset_written_;
   std::unordered_map<std::string, std::uint32_t> elset_numbers_;
   // Every element set, in the order defined.
   std::vector<std::string> elset_order_;
@@ -103,7 +105,10 @@ class DeckReader {
   std::string set_name_;
   bool set_of_nodes_ = false, generate_ = false, lists_elsets_ = false;
 
-  std::vector<std::pair<std::string, std::string>> sections_;  // *SOLID SECTION's ELSET, and where
+  struct Section {
+    std::string elset, where, written;  // its ELSET= (set_name), its line, the name as written
+  };
+  std::vector<Section> sections_;
   std::vector<PinRef> pin_refs_;
   std::vector<std::string> other_keywords_;  // as written, each once
 };

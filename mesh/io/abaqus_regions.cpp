@@ -63,6 +63,32 @@ std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets
   return tags;
 }
 
+void RegionNames::add(int dimension, int tag, const std::string& name) {
+  for (const Entry& e : entries_)
+    if (e.dimension == dimension && e.tag == tag) return;
+  entries_.push_back(Entry{dimension, tag, name});
+}
+
+void RegionNames::add(int dimension, const std::vector<int>& tags, const std::vector<std::uint32_t>& elsets,
+                      const std::vector<std::string>& names) {
+  std::vector<std::uint8_t> named(names.size() + 1, 0);
+  for (std::size_t e = 0; e < tags.size() && e < elsets.size(); ++e)
+    if (elsets[e] != 0 && !named[elsets[e]]) {
+      named[elsets[e]] = 1;
+      add(dimension, tags[e], names[elsets[e] - 1]);
+    }
+}
+
+std::string RegionNames::msh_body() const {
+  std::string body = std::to_string(entries_.size()) + "\n";
+  for (const Entry& e : entries_) {
+    std::string name = e.name;
+    std::replace(name.begin(), name.end(), '"', '\'');
+    body += std::to_string(e.dimension) + " " + std::to_string(e.tag) + " \"" + name + "\"\n";
+  }
+  return body;
+}
+
 void RegionSplitter::split(const std::vector<std::size_t>& members) {
   // The members of each region leave it for a new one; the rest stay.
   std::unordered_map<int, int> moved_to;

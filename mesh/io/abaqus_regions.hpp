@@ -15,6 +15,28 @@ namespace tetsmooth::abaqus {
 // Empty when no element has a set.
 std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets, const std::vector<std::string>& names);
 
+// The names of region tags, for Gmsh's $PhysicalNames: (dimension, tag)
+// pairs, each named once, by the first name given it.
+class RegionNames {
+ public:
+  // Names each tag of `tags` (one per element) by the set its element's
+  // `elsets` entry indexes in `names` (1-based; 0 for none).
+  void add(int dimension, const std::vector<int>& tags, const std::vector<std::uint32_t>& elsets,
+           const std::vector<std::string>& names);
+  void add(int dimension, int tag, const std::string& name);
+  bool empty() const { return entries_.empty(); }
+  // The body of a $PhysicalNames section: the count, then a line
+  // `dimension tag "name"` each ('"' in a name written as '\'').
+  std::string msh_body() const;
+
+ private:
+  struct Entry {
+    int dimension, tag;
+    std::string name;
+  };
+  std::vector<Entry> entries_;
+};
+
 // Regions as the sets that hold each element: two elements share a region
 // when every set holds both or neither. Each set costs time in its own
 // size, whatever the number of elements.

@@ -32,18 +32,22 @@ std::vector<std::size_t> DeckReader::tets_of(const std::vector<std::size_t>& ele
   return tets;
 }
 
-void DeckReader::resolve_regions(const IdIndex& element_ids) {
+void DeckReader::resolve_regions(const IdIndex& element_ids, RegionNames& names) {
   FileExtras& e = mesh_.extras;
   if (!sections_.empty()) {
     // A tet in two sections (which Abaqus refuses) takes the first.
     e.tet_tags.assign(tet_ids_.size(), 0);
-    for (std::size_t s = 0; s < sections_.size(); ++s)
-      for (std::size_t g : sets_.elements(sections_[s].first, sections_[s].second, element_ids))
+    for (std::size_t s = 0; s < sections_.size(); ++s) {
+      const int tag = static_cast<int>(s) + 1;
+      names.add(3, tag, sections_[s].written);
+      for (std::size_t g : sets_.elements(sections_[s].elset, sections_[s].where, element_ids))
         if (element_at_[g] >= 0 && e.tet_tags[static_cast<std::size_t>(element_at_[g])] == 0)
-          e.tet_tags[static_cast<std::size_t>(element_at_[g])] = static_cast<int>(s) + 1;
+          e.tet_tags[static_cast<std::size_t>(element_at_[g])] = tag;
+    }
     return;
   }
   e.tet_tags = tags_from_element_sets(tet_elsets_, elset_names_);
+  names.add(3, e.tet_tags, tet_elsets_, elset_written_);
   if (!e.tet_tags.empty() || elset_order_.empty()) return;
   // Regions are the tets that the same element sets hold (meshio writes
   // Gmsh's physical groups so).
@@ -93,13 +97,18 @@ void DeckReader::resolve() {
   if (const auto twice = element_ids.repeated())
     throw InputError(lines_.where_of(element_marks_[*twice]),
                      "element " + std::to_string(element_ids_[*twice]) + " is defined a second time");
+  RegionNames names;
+  resolve_regions(element_ids, names);
   for (const Others& o : others_) {
     PassThroughBlock& block = e.blocks.emplace_back();
     block.kind = o.type.kind;
     block.nodes_per_element = o.type.nodes;
     block.element_tags = o.ids;
     block.tags = tags_from_element_sets(o.elsets, elset_names_);
+    names.add(o.type.dimension, block.tags, o.elsets, elset_written_);
   }
+  // Gmsh's name for each region, so that MSH output keeps the deck's.
+  if (!names.empty()) e.raw_sections.emplace_back("$PhysicalNames", names.msh_body());
   // Elements in read order, so that each block's come in its own order.
   const auto each = static_cast<std::size_t>(tet_nodes_each_);
   index_t tet[10];
@@ -123,7 +132,6 @@ void DeckReader::resolve() {
     for (std::size_t k = 0; k < n; ++k) e.blocks[b].connectivity.push_back(node(others_[b].nodes[i * n + k]));
   }
   e.tet_element_tags = tet_ids_;
-  resolve_regions(element_ids);
   resolve_pins(node_ids, element_ids);
 }
 

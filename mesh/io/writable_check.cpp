@@ -264,7 +264,10 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (const std::string* keywords = raw_section(e, "abaqus:keywords"); keywords != nullptr && f != MeshFormat::Abaqus)
     notes.push_back("the rest of the Abaqus deck (" + *keywords + ") will not be written: " + name +
                     " holds the mesh alone");
-  if (!msh) {
+  if (abaqus && f != MeshFormat::Abaqus && !msh && raw_section(e, "$PhysicalNames") != nullptr)
+    notes.push_back("the names of the regions (the deck's element sets) will not be written: " + name +
+                    " has no place for them");
+  if (!msh && !abaqus) {
     const bool names = raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);
     if (names || entities)

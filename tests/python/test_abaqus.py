@@ -147,6 +147,14 @@ class GmshDecks(GmshScratchCase):
         tags = np.concatenate([d for c, d in zip(mesh.cells, mesh.cell_data["tetsmooth:tag"]) if c.type == "tetra"])
         # Gmsh names the volumes' element sets Volume1 and Volume2.
         self.assertEqual(sorted(set(tags.ravel().tolist())), [1, 2])
+        # In MSH output the regions keep those names, for Gmsh to read.
+        run("convert", self.path("order1.inp"), self.path("order1.msh"))
+        with gmsh_session(self.gmsh):
+            self.gmsh.open(self.path("order1.msh"))
+            names = {(dim, tag): self.gmsh.model.getPhysicalName(dim, tag)
+                     for dim, tag in self.gmsh.model.getPhysicalGroups()}
+        self.assertEqual(names[(3, 1)], "Volume1")
+        self.assertEqual(names[(3, 2)], "Volume2")
 
 
 class MeshioDecks(GmshScratchCase):

@@ -215,6 +215,8 @@ TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
   EXPECT_EQ(back.tets, mesh.tets);
   EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
   EXPECT_EQ(back.extras.tet_tags, mesh.extras.tet_tags);
+  // MSH output renumbers negative tags, so only the others are named.
+  EXPECT_EQ(*raw_section(back.extras, "$PhysicalNames"), "2\n3 4 \"REGION_4\"\n1 9 \"LINE3_9\"\n");
   ASSERT_EQ(back.extras.blocks.size(), 1u);
   EXPECT_EQ(back.extras.blocks[0].kind, "line3");
   EXPECT_EQ(back.extras.blocks[0].connectivity, lines.connectivity);

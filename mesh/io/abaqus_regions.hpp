@@ -16,7 +16,8 @@ namespace tetsmooth::abaqus {
 std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets, const std::vector<std::string>& names);
 
 // The names of region tags, for Gmsh's $PhysicalNames: (dimension, tag)
-// pairs, each named once, by the first name given it.
+// pairs, each named once, by the first name given it; negative tags, which
+// MSH output renumbers, are left unnamed.
 class RegionNames {
  public:
   // Names each tag of `tags` (one per element) by the set its element's

@@ -4,6 +4,7 @@
 // abaqus_resolve.cpp. The deck's text is kept as read, but for its node
 // lines, which the writer writes anew.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 

@@ -65,9 +65,8 @@ std::vector<int> tags_from_element_sets(const std::vector<std::uint32_t>& elsets
 
 void RegionNames::add(int dimension, int tag, const std::string& name) {
   // MSH output gives negative tags new positive ones (negative_tag_renumbering).
-  if (tag < 0) return;
-  for (const Entry& e : entries_)
-    if (e.dimension == dimension && e.tag == tag) return;
+  // A deck may have a section per grain: tens of thousands of names.
+  if (tag < 0 || !named_.insert({dimension, tag}).second) return;
   entries_.push_back(Entry{dimension, tag, name});
 }
 

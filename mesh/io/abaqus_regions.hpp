@@ -2,7 +2,9 @@
 // Region tags of an Abaqus deck's elements, by the rules of abaqus_io.hpp
 // (not a public API).
 #include <cstdint>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tetsmooth::abaqus {
@@ -36,6 +38,7 @@ class RegionNames {
     std::string name;
   };
   std::vector<Entry> entries_;
+  std::set<std::pair<int, int>> named_;  // (dimension, tag) of each entry
 };
 
 // Regions as the sets that hold each element: two elements share a region

@@ -2,7 +2,6 @@
 // comes back as it was read with the new coordinates; any other mesh gets a
 // new deck of its nodes, elements and pins.
 #include <algorithm>
-#include <cctype>
 #include <ostream>
 
 #include "mesh/errors.hpp"

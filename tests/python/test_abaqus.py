@@ -79,10 +79,6 @@ class GmshDecks(GmshScratchCase):
             gmsh.model.mesh.setOrder(2)
             gmsh.write(cls.path("order2.inp"))
 
-    @classmethod
-    def path(cls, name):
-        return os.path.join(cls.tmp, name)
-
     def smooth(self, name):
         src, out = self.path(name), self.path("smooth-" + name)
         run("smooth", src, "-o", out, "--device", "cpu")
@@ -159,9 +155,6 @@ class GmshDecks(GmshScratchCase):
 
 class MeshioDecks(GmshScratchCase):
     SCRATCH_PREFIX = "tetsmooth_test_abaqus_meshio_"
-
-    def path(self, name):
-        return os.path.join(self.tmp, name)
 
     def test_meshio_reads_new_decks_and_tetsmooth_reads_meshios(self):
         run("generate", "lattice-4", "-o", self.path("lattice.vtu"))

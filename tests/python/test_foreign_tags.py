@@ -7,7 +7,6 @@ element counts as in the original, and with meshio, which must find the
 elements on the same entities.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
-import os
 import unittest
 
 import meshio
@@ -54,9 +53,6 @@ def write_box_with_groups(gmsh, path, version):
 
 class ForeignTags(GmshScratchCase):
     SCRATCH_PREFIX = "tetsmooth_test_tags_"
-
-    def path(self, name):
-        return os.path.join(self.tmp, name)
 
     # meshio's VTU (binary uncompressed and ASCII) and legacy VTK (ASCII, and
     # BINARY in the 5.1 and 4.2 layouts), whose cell data are FIELD arrays.

@@ -6,7 +6,6 @@ where they were.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
-import os
 import unittest
 
 import meshio
@@ -66,10 +65,6 @@ class PartitionedGmshMeshes(GmshScratchCase):
                 cls.boundary[name] = boundary_node_tags(gmsh)
             out = cls.path("smoothed-" + name)
             cls.smoothed[name] = (out, run("smooth", cls.path(name), "-o", out))
-
-    @classmethod
-    def path(cls, name):
-        return os.path.join(cls.tmp, name)
 
     def test_gmsh_reads_the_groups_and_the_unmoved_boundary(self):
         gmsh = self.gmsh

@@ -63,9 +63,6 @@ class SeveralPhysicalGroups(GmshScratchCase):
         cls.before = groups_and_tets(gmsh, cls.src)
         assert cls.before[0] == GROUPS, cls.before[0]
 
-    def path(self, name):
-        return os.path.join(self.tmp, name)
-
     def test_msh22_keeps_every_group_without_duplicating_tets(self):
         tets = self.before[2]
         out = self.path("smooth22.msh")

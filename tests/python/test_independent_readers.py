@@ -41,7 +41,8 @@ def require_gmsh():
 
 class GmshScratchCase(unittest.TestCase):
     """Tests that need the tetsmooth binary, the Gmsh API (cls.gmsh) and a
-    scratch folder (cls.tmp, named after SCRATCH_PREFIX and removed after)."""
+    scratch folder (cls.tmp, named after SCRATCH_PREFIX and removed after;
+    path() names a file in it)."""
 
     SCRATCH_PREFIX = "tetsmooth_test_"
 
@@ -54,6 +55,10 @@ class GmshScratchCase(unittest.TestCase):
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.tmp, ignore_errors=True)
+
+    @classmethod
+    def path(cls, name):
+        return os.path.join(cls.tmp, name)
 
 
 def boundary_nodes(tets):

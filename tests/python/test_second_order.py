@@ -146,10 +146,6 @@ class SecondOrderSmoothing(GmshScratchCase):
             with open(report, encoding="utf-8") as handle:
                 cls.smoothed[fmt] = (out, proc, json.load(handle))
 
-    @classmethod
-    def path(cls, name):
-        return os.path.join(cls.tmp, name)
-
     def assert_smoothed(self, xyz, tets):
         """Checks a smoothed mesh (nodes and 10-node tets in VTK order, read
         back by meshio or Gmsh) against the fixture."""

@@ -33,6 +33,8 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
   .mesh       medit         Medit ASCII
   .inp        abaqus        Abaqus/CalculiX input deck (a deck read is written back
                             whole, with the new coordinates)
+  .bdf/.nas   nastran       Nastran bulk data, small, large or free field (a deck
+                            read is written back whole, moved GRIDs in large field)
   .tsm        tsm           tetsmooth binary cache
 )";
 
@@ -136,7 +138,7 @@ tets with q < 0.1, inverted and degenerate tets, the smallest dihedral angle,
 the mean of the mean-ratio metric, and the K worst tets with their nodes.
 Tet and node indices are 0-based, in file order, whatever the file numbers;
 where the file numbers its elements or nodes itself (Gmsh tags, Abaqus
-numbers), its numbers follow them.
+numbers, Nastran ids), its numbers follow them.
 Second-order (10-node) tets are measured by their corner tets.
 
 Options:

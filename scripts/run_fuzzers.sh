@@ -5,7 +5,8 @@
 # exception other than InputError, a timeout or an out-of-memory input.
 #
 #   scripts/run_fuzzers.sh [target ...]      targets: gmsh medit vtu vtk
-#                                            tetgen_node tetgen_ele tsm abaqus (default: all)
+#                                            tetgen_node tetgen_ele tsm abaqus
+#                                            nastran (default: all)
 # Environment:
 #   FUZZ_SECONDS    time per target (default 20)
 #   FUZZ_BUILD_DIR  build folder (default build-fuzz); the growing corpus is
@@ -18,7 +19,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-20}
 jobs=${FUZZ_JOBS:-2}
-all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus)
+all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran)
 targets=("$@")
 [[ ${#targets[@]} -eq 0 ]] && targets=("${all_targets[@]}")
 
@@ -50,6 +51,27 @@ seed vtk "$data"/*.vtk
 seed tetgen_node "$data"/*.node
 seed tetgen_ele "$data"/*.ele
 seed abaqus "$data"/*.inp
+seed nastran "$data"/*.bdf
+# A deck in the three field formats besides Gmsh's small field.
+cat >"$seeds/nastran/fields.bdf" <<'BDF'
+SOL 101
+CEND
+BEGIN BULK
+GRID*                  1                              0.              0.
+*                     0.
+GRID,2,,1.,0.,0.
+GRID    3               0.      1.-0    0.
+GRID    4               0.      0.      1.      0       123
+GRID    5               1.      1.      1.
+CTETRA,1,1,1,2,3,4
+RBE2,6,5,123,1,2,3,+
++,4
+CTETRA  2       2       2       3       4       5
+CTRIA3  3       5       1       2       3
+SPC1    1       123     1       THRU    2
+RBE3    4               5       123     1.      123     4
+ENDDATA
+BDF
 # No .tsm fixture is kept (the cache is binary and hashed): write one tet in
 # the layout of mesh/io/tsm_cache.hpp.
 mkdir -p "$seeds/tsm"

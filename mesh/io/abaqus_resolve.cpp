@@ -9,6 +9,7 @@
 #include "mesh/second_order.hpp"
 #include "mesh/io/abaqus_reader.hpp"
 #include "mesh/io/abaqus_regions.hpp"
+#include "mesh/io/kept_deck.hpp"
 #include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::abaqus {
@@ -137,7 +138,7 @@ void DeckReader::resolve() {
 
 void DeckReader::keep_deck_notes() {
   FileExtras& e = mesh_.extras;
-  e.raw_sections.emplace_back("abaqus:deck", std::to_string(mesh_.num_nodes()) + " " + std::to_string(mesh_.num_tets()));
+  stamp_kept_deck(mesh_, "abaqus");
   if (!other_keywords_.empty()) e.raw_sections.emplace_back("abaqus:keywords", joined(other_keywords_));
   if (!lines_.included().empty()) e.raw_sections.emplace_back("abaqus:includes", joined(lines_.included()));
 }

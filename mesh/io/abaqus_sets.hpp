@@ -12,25 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "mesh/io/id_index.hpp"
+
 namespace tetsmooth::abaqus {
-
-// The file's ids of a kind of item (nodes, elements) in read order, found
-// by id.
-class IdIndex {
- public:
-  explicit IdIndex(const std::vector<long long>& ids);
-  // The later of two items with the same id, if any.
-  std::optional<std::size_t> repeated() const { return repeated_; }
-  // The item with this id, or -1.
-  long long find(long long id) const;
-  // Every item whose id is first, first + step, ... up to last (*NSET and
-  // *ELSET's GENERATE), in id order; ids that no item has are skipped.
-  void append_range(long long first, long long last, long long step, std::vector<std::size_t>& out) const;
-
- private:
-  std::vector<std::pair<long long, std::size_t>> sorted_;
-  std::optional<std::size_t> repeated_;
-};
 
 // What one *NSET or *ELSET keyword (and its data lines) adds to a set.
 struct SetPart {

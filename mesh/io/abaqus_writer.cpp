@@ -2,6 +2,7 @@
 // comes back as it was read with the new coordinates; any other mesh gets a
 // new deck of its nodes, elements and pins.
 #include <algorithm>
+#include <limits>
 #include <ostream>
 
 #include "mesh/errors.hpp"
@@ -9,7 +10,8 @@
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
-#include "mesh/io/atomic_file.hpp"
+#include "mesh/io/file_numbers.hpp"
+#include "mesh/io/kept_deck.hpp"
 #include "mesh/io/number_text.hpp"
 
 namespace tetsmooth {
@@ -29,20 +31,6 @@ void write_node(std::ostream& out, long long id, const double* xyz) {
 
 // --- A deck read with the mesh --------------------------------------------
 
-bool has_deck(const TetMesh& mesh) { return raw_section(mesh.extras, "abaqus:deck") != nullptr; }
-
-// The deck must still describe the mesh: only coordinates change on the way
-// through tetsmooth, and the deck's element lines are written as read.
-void check_deck(const TetMesh& mesh) {
-  const std::string expected = std::to_string(mesh.num_nodes()) + " " + std::to_string(mesh.num_tets());
-  const std::string& stamp = *raw_section(mesh.extras, "abaqus:deck");
-  // The node lines are written with the deck's numbers.
-  if (stamp != expected || mesh.extras.node_tags.size() != mesh.num_nodes())
-    throw OutputError("the Abaqus deck read with this mesh lists (nodes, tets) " + stamp + ", and the mesh has " +
-                      expected + (mesh.extras.node_tags.size() != mesh.num_nodes() ? " without their numbers" : "") +
-                      ": a deck is written back only for the mesh it was read with");
-}
-
 void write_deck(const TetMesh& mesh, std::ostream& out) {
   std::size_t next = 0;
   for (const auto& [name, body] : mesh.extras.raw_sections) {
@@ -55,44 +43,8 @@ void write_deck(const TetMesh& mesh, std::ostream& out) {
 
 // --- A new deck -------------------------------------------------------------
 
-// Whether a new deck can number `count` items by the file's `ids`: one
-// each, positive and distinct.
-bool usable(const std::vector<long long>& ids, std::size_t count) {
-  std::vector<long long> sorted = ids;
-  std::sort(sorted.begin(), sorted.end());
-  return ids.size() == count && (sorted.empty() || sorted.front() > 0) &&
-         std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
-}
-
-std::vector<long long> ids_or_positions(const std::vector<long long>& ids, std::size_t count) {
-  if (usable(ids, count)) return ids;
-  std::vector<long long> positions(count);
-  for (std::size_t i = 0; i < count; ++i) positions[i] = static_cast<long long>(i) + 1;
-  return positions;
-}
-
-std::size_t elements_in(const PassThroughBlock& b) {
-  return b.nodes_per_element > 0 ? b.connectivity.size() / static_cast<std::size_t>(b.nodes_per_element) : 0;
-}
-
-// The file's element ids over the tets, then each block's elements, and how
-// many elements there are; the ids are empty unless every element has one.
-std::pair<std::vector<long long>, std::size_t> file_element_ids(const TetMesh& mesh) {
-  std::vector<long long> ids = mesh.extras.tet_element_tags;
-  std::size_t count = mesh.num_tets();
-  bool complete = ids.size() == count;
-  for (const PassThroughBlock& b : mesh.extras.blocks) {
-    count += elements_in(b);
-    complete = complete && b.element_tags.size() == elements_in(b);
-    ids.insert(ids.end(), b.element_tags.begin(), b.element_tags.end());
-  }
-  return {complete ? ids : std::vector<long long>{}, count};
-}
-
-std::vector<long long> element_ids(const TetMesh& mesh) {
-  const auto [ids, count] = file_element_ids(mesh);
-  return ids_or_positions(ids, count);
-}
+// The reader takes any positive number, so a new deck keeps any.
+constexpr long long kLargestNumber = std::numeric_limits<long long>::max();
 
 // The ELSET= name of elements of one tag: REGION_4, TRIANGLE_5, REGION_M2
 // for -2 (abaqus_regions reads the number back).
@@ -149,8 +101,8 @@ void write_pinned_set(std::ostream& out, const TetMesh& mesh, const std::vector<
 }
 
 void write_new_deck(const TetMesh& mesh, std::ostream& out) {
-  const std::vector<long long> node_ids = ids_or_positions(mesh.extras.node_tags, mesh.num_nodes());
-  const std::vector<long long> ids = element_ids(mesh);
+  const std::vector<long long> node_ids = numbers_or_positions(mesh.extras.node_tags, mesh.num_nodes(), kLargestNumber);
+  const std::vector<long long> ids = element_numbers(mesh, kLargestNumber);
   out << "*HEADING\nwritten by tetsmooth\n*NODE\n";
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) write_node(out, node_ids[i], &mesh.xyz[3 * i]);
   const bool ten = !mesh.midsides.empty();
@@ -172,42 +124,16 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   write_pinned_set(out, mesh, node_ids);
 }
 
-void check(const TetMesh& mesh) {
-  if (has_deck(mesh))
-    check_deck(mesh);
-  else
-    check_new_deck(mesh);
-}
-
-void write_body(const TetMesh& mesh, std::ostream& out) {
-  if (has_deck(mesh))
-    write_deck(mesh, out);
-  else
-    write_new_deck(mesh, out);
-}
+constexpr DeckWriter kWriter{"abaqus", "Abaqus", check_new_deck, write_deck, write_new_deck};
 
 }  // namespace
 
 std::string abaqus_numbers_lost(const TetMesh& mesh) {
-  if (has_deck(mesh)) return "";
-  const FileExtras& e = mesh.extras;
-  const bool nodes = !e.node_tags.empty() && !usable(e.node_tags, mesh.num_nodes());
-  const auto [ids, count] = file_element_ids(mesh);
-  bool any_element_ids = !e.tet_element_tags.empty();
-  for (const PassThroughBlock& b : e.blocks) any_element_ids = any_element_ids || !b.element_tags.empty();
-  const bool elements = any_element_ids && !usable(ids, count);
-  return nodes && elements ? "node and element" : nodes ? "node" : elements ? "element" : "";
+  return has_kept_deck(mesh, "abaqus") ? "" : numbers_lost(mesh, kLargestNumber);
 }
 
-void write_abaqus(const TetMesh& mesh, std::ostream& out) {
-  check(mesh);
-  write_body(mesh, out);
-  if (!out) throw OutputError("the Abaqus output stream failed");
-}
+void write_abaqus(const TetMesh& mesh, std::ostream& out) { kWriter.write(mesh, out); }
 
-void write_abaqus_file(const TetMesh& mesh, const std::string& path) {
-  checked_for(path, [&] { check(mesh); });
-  write_atomically(path, [&](std::ostream& out) { write_body(mesh, out); });
-}
+void write_abaqus_file(const TetMesh& mesh, const std::string& path) { kWriter.write_file(mesh, path); }
 
 }  // namespace tetsmooth

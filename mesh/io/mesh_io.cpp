@@ -9,6 +9,7 @@
 #include "mesh/io/abaqus_io.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
+#include "mesh/io/nastran_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
 #include "mesh/io/tsm_cache.hpp"
 #include "mesh/io/vtk_legacy.hpp"
@@ -35,6 +36,8 @@ constexpr FormatName kNames[] = {
     {"tsm", MeshFormat::Cache},
     {"abaqus", MeshFormat::Abaqus},
     {"inp", MeshFormat::Abaqus},
+    {"nastran", MeshFormat::Nastran},
+    {"bdf", MeshFormat::Nastran},
 };
 
 struct Extension {
@@ -44,7 +47,7 @@ struct Extension {
 constexpr Extension kExtensions[] = {
     {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},   {".vtk", MeshFormat::Vtk},
     {".msh", MeshFormat::Msh41},   {".mesh", MeshFormat::Medit}, {".tsm", MeshFormat::Cache},
-    {".inp", MeshFormat::Abaqus},
+    {".inp", MeshFormat::Abaqus},  {".bdf", MeshFormat::Nastran}, {".nas", MeshFormat::Nastran},
 };
 
 std::string lower(std::string s) {
@@ -71,7 +74,7 @@ MeshFormat parse_format(const std::string& name) {
   for (const FormatName& f : kNames)
     if (key == f.name) return f.format;
   throw UsageError("unknown mesh format '" + name +
-                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm or abaqus)");
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus or nastran)");
 }
 
 const char* format_name(MeshFormat f) {
@@ -86,7 +89,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 
@@ -114,6 +117,8 @@ TetMesh read_mesh(const std::string& path, MeshFormat format) {
       return read_cache_file(path);
     case MeshFormat::Abaqus:
       return read_abaqus_file(path);
+    case MeshFormat::Nastran:
+      return read_nastran_file(path);
     case MeshFormat::Auto:
       break;
   }
@@ -140,6 +145,8 @@ void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format,
       return write_cache_file(mesh, path);
     case MeshFormat::Abaqus:
       return write_abaqus_file(mesh, path);
+    case MeshFormat::Nastran:
+      return write_nastran_file(mesh, path);
     case MeshFormat::Auto:
       break;
   }

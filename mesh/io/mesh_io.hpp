@@ -23,10 +23,11 @@ enum class MeshFormat {
   Medit,        // Medit .mesh ASCII
   Cache,        // tetsmooth binary cache .tsm
   Abaqus,       // Abaqus/CalculiX input deck .inp
+  Nastran,      // Nastran bulk data .bdf, .nas
 };
 
 // Parses a --format value ("tetgen", "vtu", "vtk", "msh", "msh41", "msh41-binary",
-// "msh22", "medit", "tsm", "abaqus" or "inp"); throws UsageError for anything else.
+// "msh22", "medit", "tsm", "abaqus" or "inp", "nastran" or "bdf"); throws UsageError for anything else.
 MeshFormat parse_format(const std::string& name);
 const char* format_name(MeshFormat f);
 

@@ -10,6 +10,7 @@
 #include "mesh/second_order.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/nastran_io.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
@@ -74,6 +75,8 @@ void write_probe(const TetMesh& probe, MeshFormat format, std::ostream& out) {
       return write_cache(probe, out);
     case MeshFormat::Abaqus:
       return write_abaqus(probe, out);
+    case MeshFormat::Nastran:
+      return write_nastran(probe, out);
     case MeshFormat::Auto:
       break;
   }
@@ -117,13 +120,14 @@ std::vector<std::uint8_t> kept_interface_nodes(const TetMesh& mesh, MeshFormat f
 }
 
 // Pinned nodes that the format loses and that a later run would move: VTU,
-// VTK, Medit (RequiredVertices) and Abaqus (the deck, or a node set) write
-// every pin, MSH only element nodes,
+// VTK, Medit (RequiredVertices), Abaqus (the deck, or a node set) and
+// Nastran (the deck, or a comment it reads back) write every pin, MSH only
+// element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
 // an interface where the format keeps what tells of it.
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit ||
-      format == MeshFormat::Abaqus)
+      format == MeshFormat::Abaqus || format == MeshFormat::Nastran)
     return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
   if (format != MeshFormat::TetGen && format != MeshFormat::Cache) mark_element_nodes(mesh.extras.blocks, kept);
@@ -249,21 +253,33 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                                             : " keeps only the region tags (the first attribute's values where "
                                               "whole, else their ranks)"));
   const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
-  // MSH and Abaqus keep the file's node and element numbers.
+  // MSH, Abaqus and Nastran keep the file's node and element numbers.
   const bool node_ids = !numbered_by_position(e.node_tags), element_ids = !numbered_by_position(e.tet_element_tags);
-  const bool abaqus = raw_section(e, "abaqus:deck") != nullptr;
-  if (!msh && f != MeshFormat::Abaqus && (node_ids || element_ids))
-    notes.push_back(std::string(abaqus ? "the Abaqus " : "the Gmsh ") +
+  const bool abaqus = raw_section(e, "abaqus:deck") != nullptr, nastran = raw_section(e, "nastran:deck") != nullptr;
+  const bool keeps_numbers = msh || f == MeshFormat::Abaqus || f == MeshFormat::Nastran;
+  if (!keeps_numbers && (node_ids || element_ids))
+    notes.push_back(std::string(abaqus ? "the Abaqus " : nastran ? "the Nastran " : "the Gmsh ") +
                     (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
-                    (abaqus ? " numbers" : " tags") + " will not be written: " + name + " numbers them by position");
-  if (const std::string lost = abaqus_numbers_lost(mesh); f == MeshFormat::Abaqus && !lost.empty())
-    notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct): " +
-                    name + " numbers them 1, 2, ... instead");
+                    (abaqus ? " numbers" : nastran ? " ids" : " tags") + " will not be written: " + name +
+                    " numbers them by position");
+  const std::string lost = f == MeshFormat::Abaqus ? abaqus_numbers_lost(mesh)
+                           : f == MeshFormat::Nastran ? nastran_numbers_lost(mesh)
+                                                      : "";
+  if (!lost.empty())
+    notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct" +
+                    (f == MeshFormat::Nastran ? ", at most 99,999,999" : "") + "): " + name +
+                    " numbers them 1, 2, ... instead");
   if (const std::string* files = raw_section(e, "abaqus:includes"); files != nullptr && f == MeshFormat::Abaqus)
     notes.push_back("the *INCLUDE files (" + *files + ") will be written inline, in the one output deck");
   if (const std::string* keywords = raw_section(e, "abaqus:keywords"); keywords != nullptr && f != MeshFormat::Abaqus)
     notes.push_back("the rest of the Abaqus deck (" + *keywords + ") will not be written: " + name +
                     " holds the mesh alone");
+  if (const std::string* types = raw_section(e, "nastran:types"); types != nullptr && f != MeshFormat::Nastran)
+    notes.push_back("the rest of the Nastran deck (" + *types + ") will not be written: " + name +
+                    " holds the mesh alone");
+  if (const std::string* types = raw_section(e, "nastran:uncarried"); types != nullptr && f != MeshFormat::Nastran)
+    notes.push_back("the " + *types + " elements will not be written: " + name +
+                    " has no place for them (their nodes were pinned)");
   if (abaqus && f != MeshFormat::Abaqus && !msh && raw_section(e, "$PhysicalNames") != nullptr)
     notes.push_back("the names of the regions (the deck's element sets) will not be written: " + name +
                     " has no place for them");

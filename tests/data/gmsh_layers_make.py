@@ -13,6 +13,9 @@ two boxes stacked in z, fragmented so that they share the face z = 0.5:
   groups of nodes. Gmsh writes each volume's tets under ELSET=Volume<entity>,
   the bottom face's triangles as CPS3 elements, and *ELSET/*NSET lists of
   the physical groups.
+* nastran_gmsh_layers.bdf, the same model as Gmsh writes Nastran bulk data in
+  small field: CTETRA with the volume's entity tag as PID, the bottom face's
+  CTRIA3, no BEGIN BULK.
 
 Run from tests/data."""
 import gmsh
@@ -50,6 +53,8 @@ gmsh.model.addPhysicalGroup(2, bottom, 5)
 gmsh.model.mesh.generate(3)
 gmsh.option.setNumber("Mesh.SaveGroupsOfNodes", 1)
 gmsh.write("abaqus_gmsh_layers.inp")
+gmsh.option.setNumber("Mesh.BdfFieldFormat", 1)
+gmsh.write("nastran_gmsh_layers.bdf")
 gmsh.finalize()
 
 mesh = meshio.read("gmsh_layers41.msh")

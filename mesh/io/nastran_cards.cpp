@@ -1,0 +1,250 @@
+// Nastran entries from a deck's lines (nastran_cards.hpp).
+#include "mesh/io/nastran_cards.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/nastran_entry_types.hpp"
+#include "mesh/io/text_lines.hpp"
+
+namespace tetsmooth::nastran {
+namespace {
+
+constexpr std::size_t kFixedColumns = 80;  // Nastran ignores what a fixed-format line has past column 80
+
+std::string trimmed(std::string_view s) {
+  const std::size_t first = s.find_first_not_of(" \t");
+  if (first == std::string_view::npos) return "";
+  return std::string(s.substr(first, s.find_last_not_of(" \t") + 1 - first));
+}
+
+std::string upper(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return s;
+}
+
+bool blank(const std::string& line) { return line.find_first_not_of(" \t") == std::string::npos; }
+
+bool comment(const std::string& line) {
+  const std::size_t first = line.find_first_not_of(" \t");
+  return first != std::string::npos && line[first] == '$';
+}
+
+// A line's text before an inline '$' comment.
+std::string_view data_part(const std::string& line) { return std::string_view(line).substr(0, line.find('$')); }
+
+// Tabs to the next multiple of 8 columns, as fixed-format fields are laid.
+std::string tabs_expanded(std::string_view line) {
+  std::string out;
+  for (char c : line) {
+    if (c != '\t') {
+      out += c;
+      continue;
+    }
+    do out += ' ';
+    while (out.size() % 8 != 0);
+  }
+  return out;
+}
+
+// The first field of a line, upper case: what names an entry.
+std::string first_field(const std::string& line) {
+  const std::string_view data = data_part(line);
+  const std::size_t comma = data.find(',');
+  if (comma != std::string_view::npos) return upper(trimmed(data.substr(0, comma)));
+  return upper(trimmed(tabs_expanded(data).substr(0, 8)));
+}
+
+// A line that goes on with the entry before it.
+bool continuation(const std::string& line) {
+  return !line.empty() && (line[0] == '+' || line[0] == '*' || line[0] == ',' || line[0] == ' ' || line[0] == '\t');
+}
+
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+}  // namespace
+
+const std::string& Card::field(std::size_t d) const {
+  static const std::string none;
+  return d < fields.size() ? fields[d] : none;
+}
+
+BulkCards::BulkCards(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
+
+void BulkCards::fail(std::size_t line, const std::string& what) const { throw InputError(where(line), what); }
+
+bool BulkCards::read_line(Line& line) {
+  if (!ahead_.empty()) {
+    line = std::move(ahead_.front());
+    ahead_.pop_front();
+    return true;
+  }
+  if (!std::getline(in_, line.text)) {
+    if (in_.bad()) throw InputError(source_, "read error after line " + std::to_string(line_no_));
+    return false;
+  }
+  if (!line.text.empty() && line.text.back() == '\r') line.text.pop_back();
+  line.number = ++line_no_;
+  return true;
+}
+
+BulkCards::Kind BulkCards::take_text(Line line, bool bulk_comment) {
+  text_ = std::move(line.text);
+  text_ += '\n';
+  text_line_ = line.number;
+  bulk_comment_ = bulk_comment;
+  return Kind::Text;
+}
+
+BulkCards::Kind BulkCards::next() {
+  if (!header_.empty()) {
+    Line line = std::move(header_.front());
+    header_.pop_front();
+    return take_text(std::move(line), false);
+  }
+  switch (part_) {
+    case Part::Undecided:
+      return next_undecided();
+    case Part::Bulk:
+      return next_bulk();
+    case Part::After:
+      break;
+  }
+  Line line;
+  return read_line(line) ? take_text(std::move(line), false) : Kind::End;
+}
+
+BulkCards::Kind BulkCards::next_undecided() {
+  Line line;
+  while (read_line(line)) {
+    const std::string name = first_field(line.text);
+    if (starts_with(name, "BEGIN")) {
+      const std::string all = upper(line.text);
+      if (all.find("SUPER") != std::string::npos)
+        fail(line.number, "superelements are not read: give the model as one bulk data section");
+      if (all.find("BULK") == std::string::npos)
+        fail(line.number, "'" + text_excerpt(trimmed(line.text)) + "': only BEGIN BULK is read");
+      // What came before was executive and case control: kept, not read.
+      header_ = std::move(undecided_);
+      undecided_.clear();
+      header_.push_back(std::move(line));
+      part_ = Part::Bulk;
+      return next();
+    }
+    if (name == "INCLUDE") fail(line.number, "INCLUDE is not read: merge the included file into the deck");
+    if (!comment(line.text) && is_mesh_entry(name)) {
+      // No BEGIN BULK: the deck is bulk data from its first line.
+      ahead_.push_front(std::move(line));
+      ahead_.insert(ahead_.begin(), std::make_move_iterator(undecided_.begin()),
+                    std::make_move_iterator(undecided_.end()));
+      undecided_.clear();
+      part_ = Part::Bulk;
+      return next_bulk();
+    }
+    undecided_.push_back(std::move(line));
+  }
+  ahead_ = std::move(undecided_);
+  undecided_.clear();
+  part_ = Part::Bulk;
+  return next_bulk();
+}
+
+BulkCards::Kind BulkCards::next_bulk() {
+  Line line;
+  if (!read_line(line)) return Kind::End;
+  if (blank(line.text) || comment(line.text)) {
+    const bool is_comment = comment(line.text);
+    return take_text(std::move(line), is_comment);
+  }
+  const std::string name = first_field(line.text);
+  if (name == "ENDDATA") {
+    part_ = Part::After;
+    return take_text(std::move(line), false);
+  }
+  if (name == "INCLUDE") fail(line.number, "INCLUDE is not read: merge the included file into the deck");
+  if (starts_with(name, "BEGIN"))
+    fail(line.number, "'" + text_excerpt(trimmed(line.text)) +
+                          "' after bulk data: superelements and parts are not read, and BEGIN BULK comes once, "
+                          "before the first entry");
+  if (continuation(line.text)) fail(line.number, "a continuation line with no entry before it");
+  start_card(line);
+  std::vector<Line> held;  // comments and blank lines that may fall inside the entry
+  Line next_line;
+  while (read_line(next_line)) {
+    if (blank(next_line.text) || comment(next_line.text)) {
+      held.push_back(std::move(next_line));
+      continue;
+    }
+    if (!continuation(next_line.text)) {
+      ahead_.push_front(std::move(next_line));
+      break;
+    }
+    for (const Line& h : held) card_.text += h.text + '\n';
+    held.clear();
+    add_line(next_line, false);
+  }
+  for (auto it = held.rbegin(); it != held.rend(); ++it) ahead_.push_front(std::move(*it));
+  finish_card();
+  return Kind::Card;
+}
+
+void BulkCards::start_card(const Line& line) {
+  card_.name.clear();
+  card_.fields.clear();
+  card_.text.clear();
+  card_.line = line.number;
+  half_line_ = false;
+  add_line(line, true);
+}
+
+void BulkCards::add_line(const Line& line, bool first) {
+  const std::string_view data = data_part(line.text);
+  std::string head;
+  std::vector<std::string> fields;
+  bool large = false;
+  if (data.find(',') != std::string_view::npos) {
+    std::size_t start = 0;
+    for (;;) {
+      const std::size_t comma = data.find(',', start);
+      fields.push_back(trimmed(data.substr(start, comma - start)));
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+    head = upper(fields.front());
+    fields.erase(fields.begin());
+    large = first ? !head.empty() && head.back() == '*' : starts_with(head, "*");
+    const std::size_t capacity = large ? 4 : 8;
+    if (fields.size() > capacity + 1)
+      fail(line.number, "a free-field line of " + std::string(large ? "large" : "small") + " fields holds " +
+                            std::to_string(capacity) + " data fields and a continuation marker, and this one has " +
+                            std::to_string(fields.size()) + " fields after its first");
+    fields.resize(capacity);  // drops the continuation marker
+  } else {
+    std::string fixed = tabs_expanded(data);
+    if (fixed.size() > kFixedColumns) fixed.resize(kFixedColumns);
+    fixed.resize(kFixedColumns, ' ');
+    head = upper(trimmed(fixed.substr(0, 8)));
+    large = first ? !head.empty() && head.back() == '*' : starts_with(head, "*");
+    const std::size_t width = large ? 16 : 8;
+    for (std::size_t k = 0; k < (large ? 4u : 8u); ++k) fields.push_back(trimmed(fixed.substr(8 + k * width, width)));
+  }
+  if (first) {
+    card_.name = head;
+    if (large) card_.name.pop_back();
+  }
+  // A small line after half a logical line starts the next one.
+  if (!large && half_line_) card_.fields.resize(card_.fields.size() + 4);
+  card_.fields.insert(card_.fields.end(), std::make_move_iterator(fields.begin()),
+                      std::make_move_iterator(fields.end()));
+  half_line_ = large && !half_line_;
+  card_.text += line.text;
+  card_.text += '\n';
+}
+
+void BulkCards::finish_card() {
+  if (half_line_) card_.fields.resize(card_.fields.size() + 4);
+  half_line_ = false;
+}
+
+}  // namespace tetsmooth::nastran

@@ -1,0 +1,77 @@
+#pragma once
+// A Nastran deck taken entry by entry (not a public API; the rules are in
+// nastran_io.hpp). An entry's physical lines, in any of the three field
+// formats, become one list of data fields, 8 for each logical line: field k
+// (2..9, Nastran's numbering) of logical line L is data field
+// 8 * (L - 1) + k - 2. A large-field line holds half a logical line. The
+// first field (the name, or a continuation marker) and the tenth (a marker)
+// are not data.
+#include <cstddef>
+#include <deque>
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace tetsmooth::nastran {
+
+struct Card {
+  std::string name;                 // upper case, without a large field's '*'
+  std::vector<std::string> fields;  // data fields without their blanks ("" for a blank one)
+  std::size_t line = 0;             // its first line
+  std::string text;                 // its lines as read (comments between them too), each ending in '\n'
+
+  // Data field d, or "" past the end.
+  const std::string& field(std::size_t d) const;
+};
+
+class BulkCards {
+ public:
+  BulkCards(std::istream& in, std::string source);
+
+  enum class Kind { Card, Text, End };
+  // The next entry of the bulk data (Card), or a line that is none: before
+  // BEGIN BULK, after ENDDATA, a comment or a blank line (Text).
+  Kind next();
+  const Card& card() const { return card_; }
+  // A Text line, ending in '\n'.
+  const std::string& text() const { return text_; }
+  // Whether the last Text line is a comment of the bulk data, and its line.
+  bool bulk_comment() const { return bulk_comment_; }
+  std::size_t text_line() const { return text_line_; }
+
+  // "source:line", and InputError there.
+  std::string where(std::size_t line) const { return source_ + ":" + std::to_string(line); }
+  [[noreturn]] void fail(std::size_t line, const std::string& what) const;
+
+ private:
+  struct Line {
+    std::string text;  // without its line end
+    std::size_t number = 0;
+  };
+  enum class Part { Undecided, Bulk, After };
+
+  bool read_line(Line& line);
+  Kind next_undecided();
+  Kind next_bulk();
+  Kind take_text(Line line, bool bulk_comment);
+  void start_card(const Line& line);
+  void add_line(const Line& line, bool first);
+  void finish_card();
+
+  std::istream& in_;
+  std::string source_;
+  std::size_t line_no_ = 0;
+  Part part_ = Part::Undecided;
+  std::deque<Line> ahead_;  // lines read but not yet taken
+  // Lines before BEGIN BULK or the first mesh entry, whichever comes first.
+  std::deque<Line> undecided_;
+  std::deque<Line> header_;  // lines known to come before BEGIN BULK, to give out as Text
+
+  Card card_;
+  bool half_line_ = false;  // the card's last logical line has only a large-field half
+  std::string text_;
+  bool bulk_comment_ = false;
+  std::size_t text_line_ = 0;
+};
+
+}  // namespace tetsmooth::nastran

@@ -1,0 +1,56 @@
+#pragma once
+// The Nastran entries the deck reader reads besides GRID (not a public API;
+// the list is in nastran_io.hpp): elements, whose grid points a smoother
+// must keep unless they are tets, and loads and constraints, whose grid
+// points it must keep. Where each names its grid points is given in data
+// fields (nastran_cards.hpp: 0 for Nastran's field 2 of the first line).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mesh/io/nastran_cards.hpp"
+
+namespace tetsmooth::nastran {
+
+enum class Grids {
+  Run,        // data fields first .. first + count - 1 (elements' connectivity)
+  Listed,     // the data fields in `at`
+  EveryLine,  // data fields 1 and 4 of each logical line (MPC's terms)
+  Spc1,       // data fields 2 on, or "G1 THRU G2" there
+  Rbe2,       // field 1, then the whole numbers from field 3 on
+  Rbe3,       // field 2, then each weight's grids and those after UM
+};
+
+struct EntryType {
+  const char* name;
+  bool element;            // an element (its EID shares the element ids) or a load/constraint
+  const char* kind;        // its shape for other formats (PassThroughBlock::kind), or nullptr: it only pins
+  int shape_grids;         // the shape's node count: more grids (a higher-order solid) only pin
+  bool has_pid;            // data field 1 is its PID
+  Grids grids;
+  int first = 0, count = 0;  // Run
+  int at[4] = {-1, -1, -1, -1};  // Listed; -1 ends
+};
+
+// The type of an entry name (upper case, as Card::name), or nullptr when
+// the reader does not read it (GRID and CTETRA are read on their own).
+const EntryType* entry_type(const std::string& name);
+
+// Whether an entry of this name is part of a mesh (GRID, CTETRA, another
+// element): none comes before BEGIN BULK, so a deck that opens with one
+// has no executive or case control.
+bool is_mesh_entry(const std::string& name);
+
+// The grid point ids `card` names as `type` lays them, as ranges (first,
+// last) (a single id is (id, id)); blank fields and 0 (no grid point, as in
+// a grounded spring) are left out. InputError at the card's line for a
+// field that is not an id.
+std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, const Card& card,
+                                                         const std::string& where);
+
+// A field that must hold a positive id (an element or grid point id);
+// InputError at `where` naming `what` otherwise. A blank field is 0 where
+// `blank_ok`.
+long long id_field(const std::string& field, const char* what, const std::string& where, bool blank_ok = false);
+
+}  // namespace tetsmooth::nastran

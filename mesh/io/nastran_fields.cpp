@@ -1,0 +1,90 @@
+// Nastran field values (nastran_fields.hpp).
+#include "mesh/io/nastran_fields.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "mesh/io/text_lines.hpp"
+
+namespace tetsmooth::nastran {
+namespace {
+
+// A number from std::to_chars in Nastran's form: a decimal point always,
+// "E" with the exponent's leading zeros and '+' left out, "0." as ".".
+std::string nastran_form(std::string s) {
+  std::string exponent;
+  if (const std::size_t e = s.find('e'); e != std::string::npos) {
+    const int power = std::stoi(s.substr(e + 1));
+    exponent = "E" + std::to_string(power);
+    s.resize(e);
+  }
+  if (s.find('.') == std::string::npos) s += '.';
+  const bool negative = s[0] == '-';
+  if (s.compare(negative ? 1 : 0, 2, "0.") == 0 && s.size() > (negative ? 3u : 2u))
+    s.erase(negative ? 1 : 0, 1);  // 0.25 as .25, but 0. stays
+  return s + exponent;
+}
+
+template <typename... Format>
+std::string to_text(double value, Format... format) {
+  char buf[64];
+  const auto result = std::to_chars(buf, buf + sizeof buf, value, format...);
+  return nastran_form(std::string(buf, result.ptr));
+}
+
+}  // namespace
+
+bool parse_real_field(std::string_view field, double& value) {
+  std::string s(field);
+  for (char& c : s)
+    if (c == 'd' || c == 'D') c = 'E';
+  if (!parse_real(s, value)) {
+    // An exponent's sign after the mantissa, without E: 1.5-3 is 1.5E-3.
+    const std::size_t sign = s.find_last_of("+-");
+    if (sign == std::string::npos || sign == 0 || s[sign - 1] == 'E' || s[sign - 1] == 'e') return false;
+    s.insert(sign, "E");
+    if (!parse_real(s, value)) return false;
+  }
+  return std::isfinite(value);
+}
+
+std::string real_field(double value, std::size_t width) {
+  std::string best = to_text(value);
+  if (best.size() <= width) return best;  // exact
+  double best_error = INFINITY;
+  best.clear();
+  const auto consider = [&](const std::string& candidate) {
+    double back = 0;
+    if (candidate.size() > width || !parse_real_field(candidate, back)) return;
+    const double error = std::fabs(back - value);
+    if (error < best_error || (error == best_error && candidate.size() < best.size())) {
+      best_error = error;
+      best = candidate;
+    }
+  };
+  for (int digits = 17; digits >= 0; --digits) {
+    consider(to_text(value, std::chars_format::scientific, digits));
+    consider(to_text(value, std::chars_format::fixed, digits));
+  }
+  return best;
+}
+
+void write_entry(std::ostream& out, std::string_view name, const std::vector<std::string>& fields, bool large) {
+  const std::size_t per_line = large ? 4 : 8, width = large ? 16 : 8;
+  std::size_t used = fields.size();
+  while (used > 0 && fields[used - 1].empty()) --used;
+  std::string line(name);
+  if (large) line += '*';
+  for (std::size_t i = 0; i == 0 || i < used; i += per_line) {
+    if (i > 0) line = large ? "*" : "+";
+    line.resize(8, ' ');
+    for (std::size_t k = i; k < std::min(i + per_line, used); ++k) {
+      line.append(width - std::min(width, fields[k].size()), ' ');  // right-justified, as numbers are
+      line += fields[k];
+    }
+    out << line << '\n';
+  }
+}
+
+}  // namespace tetsmooth::nastran

@@ -1,0 +1,30 @@
+#pragma once
+// Nastran field values as text, both ways (not a public API).
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tetsmooth::nastran {
+
+// A real in any of Nastran's forms: "1.5", ".5", "5.", "1.5E-3", "1.5-3"
+// (the exponent's E left out), "1.5+3", "1.5D-3"; a whole number ("1", as
+// Gmsh writes some coordinates) too. False for anything else and for
+// values that are not finite.
+bool parse_real_field(std::string_view field, double& value);
+
+// `value` in at most `width` characters (8 or 16) as Nastran reads a real
+// (with a decimal point): the shortest form that reads back exactly where
+// that fits, else the form that fits and reads back closest, in fixed or
+// exponent notation.
+std::string real_field(double value, std::size_t width);
+
+// Writes one entry: small field (8 columns) or large field (a '*' after the
+// name, 16 columns, 4 fields a line), `fields` being the data fields
+// (Nastran's fields 2..9 of each logical line; each must fit its width),
+// continued on lines that start with '+' (small) or '*' (large). Trailing
+// blank fields are left out.
+void write_entry(std::ostream& out, std::string_view name, const std::vector<std::string>& fields, bool large);
+
+}  // namespace tetsmooth::nastran

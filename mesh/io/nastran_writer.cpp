@@ -1,0 +1,186 @@
+// Nastran bulk data writing (nastran_io.hpp): a deck read with the mesh
+// comes back as it was read, the GRID entries of moved nodes rewritten; any
+// other mesh gets a new deck of its nodes, elements and pins.
+#include <algorithm>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/file_numbers.hpp"
+#include "mesh/io/gmsh_detail.hpp"
+#include "mesh/io/kept_deck.hpp"
+#include "mesh/io/nastran_cards.hpp"
+#include "mesh/io/nastran_fields.hpp"
+#include "mesh/io/nastran_io.hpp"
+#include "mesh/io/number_text.hpp"
+#include "mesh/second_order.hpp"
+
+namespace tetsmooth {
+namespace {
+
+using nastran::real_field;
+using nastran::write_entry;
+
+// Nastran ids have at most 8 digits.
+constexpr long long kLargestId = 99999999;
+constexpr std::size_t kLargeWidth = 16, kSmallWidth = 8;
+constexpr MidsidePlaces kMidsidePlaces = {4, 5, 6, 7, 8, 9};  // as the reader's
+// Pins a line of the "$TETSMOOTH PINNED" comment lists.
+constexpr std::size_t kPinsPerLine = 6;
+
+// --- A deck read with the mesh --------------------------------------------
+
+// A GRID entry as read, or in large field with the node's new coordinates
+// where it moved (its other fields as read).
+void write_grid(std::ostream& out, const nastran::Card& card, const double* xyz) {
+  bool moved = false;
+  for (std::size_t c = 0; c < 3; ++c) {
+    double v = 0;
+    const std::string& f = card.field(2 + c);
+    moved = moved || ((f.empty() || nastran::parse_real_field(f, v)) && v != xyz[c]);
+  }
+  if (!moved) {
+    out << card.text;
+    return;
+  }
+  std::vector<std::string> fields(card.fields.begin(), card.fields.begin() + 8);
+  for (std::size_t c = 0; c < 3; ++c) fields[2 + c] = real_field(xyz[c], kLargeWidth);
+  write_entry(out, "GRID", fields, true);
+}
+
+void write_deck(const TetMesh& mesh, std::ostream& out) {
+  std::size_t next = 0;
+  for (const auto& [name, body] : mesh.extras.raw_sections) {
+    if (name == "nastran:text") out << body;
+    if (name != "nastran:grids") continue;
+    std::istringstream in(body);
+    nastran::BulkCards cards(in, "the kept deck");
+    for (nastran::BulkCards::Kind kind; (kind = cards.next()) != nastran::BulkCards::Kind::End;) {
+      if (kind == nastran::BulkCards::Kind::Text) {
+        out << cards.text();
+        continue;
+      }
+      if (next >= mesh.num_nodes())
+        throw OutputError("the kept Nastran deck has more GRID entries than the mesh nodes");
+      write_grid(out, cards.card(), &mesh.xyz[3 * next]);
+      ++next;
+    }
+  }
+}
+
+// --- A new deck -------------------------------------------------------------
+
+struct EntryName {
+  const char* kind;
+  const char* name;
+  bool pid;  // whether the entry has a PID field
+};
+constexpr EntryName kEntryNames[] = {
+    {"triangle", "CTRIA3", true}, {"triangle6", "CTRIA6", true}, {"quad", "CQUAD4", true},  {"line", "CROD", true},
+    {"vertex", "CONM2", false},   {"hexahedron", "CHEXA", true}, {"wedge", "CPENTA", true}, {"pyramid", "CPYRAM", true},
+};
+
+const EntryName* entry_name_of(const std::string& kind) {
+  for (const EntryName& e : kEntryNames)
+    if (kind == e.kind) return &e;
+  return nullptr;
+}
+
+std::string text_of(long long v) { return std::to_string(v); }
+
+// The PID of a region tag: blank for 0, a new positive id for a negative
+// tag (gmsh::negative_tag_renumbering, as MSH output numbers them).
+std::string pid_text(int tag, const std::map<int, int>& renumbered) {
+  if (tag == 0) return "";
+  return text_of(tag > 0 ? tag : renumbered.at(tag));
+}
+
+// An element entry in small field where every field fits, else large.
+void write_element(std::ostream& out, const char* name, const std::vector<std::string>& fields) {
+  const bool large =
+      std::any_of(fields.begin(), fields.end(), [](const std::string& f) { return f.size() > kSmallWidth; });
+  write_entry(out, name, fields, large);
+}
+
+void check_new_deck(const TetMesh& mesh) {
+  if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (entry_name_of(b.kind) == nullptr)
+      throw OutputError("Nastran output cannot hold the pass-through '" + b.kind + "' block (" +
+                        std::to_string(b.nodes_per_element) + " nodes per element)");
+  std::size_t elements = mesh.num_tets();
+  for (const PassThroughBlock& b : mesh.extras.blocks) elements += elements_in(b);
+  if (mesh.num_nodes() > static_cast<std::size_t>(kLargestId) || elements > static_cast<std::size_t>(kLargestId))
+    throw OutputError("Nastran ids have at most 8 digits, and the mesh has more than 99,999,999 nodes or elements");
+}
+
+// Pinned nodes that no element of a block pins, in comment lines the reader
+// reads back.
+void write_pinned_comment(std::ostream& out, const TetMesh& mesh, const std::vector<long long>& node_ids) {
+  std::vector<std::uint8_t> by_element(mesh.num_nodes(), 0);
+  mark_element_nodes(mesh.extras.blocks, by_element);
+  std::size_t written = 0;
+  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i) {
+    if (!mesh.fixed[i] || by_element[i]) continue;
+    out << (written % kPinsPerLine == 0 ? (written == 0 ? "$TETSMOOTH PINNED" : "\n$TETSMOOTH PINNED") : "");
+    out << ' ' << node_ids[i];
+    ++written;
+  }
+  if (written > 0) out << '\n';
+}
+
+void write_new_deck(const TetMesh& mesh, std::ostream& out) {
+  const std::vector<long long> node_ids = numbers_or_positions(mesh.extras.node_tags, mesh.num_nodes(), kLargestId);
+  const std::vector<long long> ids = element_numbers(mesh, kLargestId);
+  const std::map<int, int> renumbered = gmsh::negative_tag_renumbering(mesh.extras);
+  out << "$ written by tetsmooth\nBEGIN BULK\n";
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    std::vector<std::string> fields{text_of(node_ids[i]), ""};
+    for (std::size_t c = 0; c < 3; ++c) fields.push_back(real_field(mesh.xyz[3 * i + c], kLargeWidth));
+    write_entry(out, "GRID", fields, true);
+  }
+  const bool ten = !mesh.midsides.empty();
+  const std::vector<int>& tags = mesh.extras.tet_tags;
+  index_t nodes[10];
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    std::vector<std::string> fields{text_of(ids[t]),
+                                    tags.size() == mesh.num_tets() ? pid_text(tags[t], renumbered) : ""};
+    if (ten)
+      file_tet10(mesh, t, kMidsidePlaces, nodes);
+    else
+      std::copy_n(&mesh.tets[4 * t], 4, nodes);
+    for (std::size_t k = 0; k < (ten ? 10u : 4u); ++k)
+      fields.push_back(text_of(node_ids[static_cast<std::size_t>(nodes[k])]));
+    write_element(out, "CTETRA", fields);
+  }
+  std::size_t first = mesh.num_tets();
+  for (const PassThroughBlock& b : mesh.extras.blocks) {
+    const EntryName& entry = *entry_name_of(b.kind);
+    const auto n = static_cast<std::size_t>(b.nodes_per_element);
+    for (std::size_t e = 0; e < elements_in(b); ++e) {
+      std::vector<std::string> fields{text_of(ids[first + e])};
+      if (entry.pid) fields.push_back(b.tags.size() == elements_in(b) ? pid_text(b.tags[e], renumbered) : "");
+      for (std::size_t k = 0; k < n; ++k)
+        fields.push_back(text_of(node_ids[static_cast<std::size_t>(b.connectivity[e * n + k])]));
+      write_element(out, entry.name, fields);
+    }
+    first += elements_in(b);
+  }
+  write_pinned_comment(out, mesh, node_ids);
+  out << "ENDDATA\n";
+}
+
+constexpr DeckWriter kWriter{"nastran", "Nastran", check_new_deck, write_deck, write_new_deck};
+
+}  // namespace
+
+std::string nastran_numbers_lost(const TetMesh& mesh) {
+  return has_kept_deck(mesh, "nastran") ? "" : numbers_lost(mesh, kLargestId);
+}
+
+void write_nastran(const TetMesh& mesh, std::ostream& out) { kWriter.write(mesh, out); }
+
+void write_nastran_file(const TetMesh& mesh, const std::string& path) { kWriter.write_file(mesh, path); }
+
+}  // namespace tetsmooth

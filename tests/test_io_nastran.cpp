@@ -1,0 +1,337 @@
+// Nastran bulk data: entries in small, large and free field, regions from
+// PIDs, pins from constraints, loads and rigid elements, the deck written
+// back with only moved GRIDs changed, new decks that read back as written,
+// Nastran's real numbers, and errors naming file:line.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/mesh_io.hpp"
+#include "mesh/io/nastran_fields.hpp"
+#include "mesh/io/nastran_io.hpp"
+#include "mesh/io/writable_check.hpp"
+#include "mesh/second_order.hpp"
+#include "support/input_error.hpp"
+#include "support/test_meshes.hpp"
+
+namespace tetsmooth {
+namespace {
+
+TetMesh read_text(const std::string& text) {
+  std::istringstream in(text);
+  return read_nastran(in, "t.bdf");
+}
+
+std::string write_text(const TetMesh& mesh) {
+  std::ostringstream out;
+  write_nastran(mesh, out);
+  return out.str();
+}
+
+std::string read_error(const std::string& text) {
+  return testing::input_error_message([&] { read_text(text); }, "read_nastran:\n" + text);
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
+// A small-field line: each field left in its 8 columns.
+std::string small(const std::vector<std::string>& fields) {
+  std::string line;
+  for (const std::string& f : fields) line += f + std::string(8 - f.size(), ' ');
+  line.erase(line.find_last_not_of(' ') + 1);
+  return line + "\n";
+}
+
+// A large-field field: right in its 16 columns.
+std::string wide(const std::string& f) { return std::string(16 - f.size(), ' ') + f; }
+
+// Two tets of two properties and a triangle, in the three field formats,
+// after executive and case control (whose "SPC = 1" is no entry), with
+// Nastran's reals: an exponent without E, a leading point, a tab.
+const std::string kDeck =
+    "SOL 101\n"
+    "CEND\n"
+    "SPC = 1\n"
+    "BEGIN BULK\n"
+    "$ nodes\n" +
+    small({"GRID", "1", "", "0.", "0.", "0."}) + small({"GRID", "2", "0", "1.", "0.", "0."}) + "GRID*   " + wide("3") +
+    wide("") + wide("0.") + wide("1.") + "\n*       " + wide("0.") + "\n" +
+    "GRID,4,,0.,0.,1.\n"
+    "GRID    5               1.+0    10.-1\t1.0D0\n"
+    "GRID, 6, , .3, .3, .3\n" +
+    small({"CTETRA", "10", "1", "1", "2", "3", "4"}) + "CTETRA,11,2,2,3,4,5\n" +
+    small({"CTRIA3", "20", "7", "1", "2", "3"}) + small({"PSOLID", "1", "1"}) + small({"SPC1", "1", "123", "6"}) +
+    "ENDDATA\n"
+    "anything after ENDDATA\n";
+
+TEST(NastranIo, ReadsEntriesInEveryFieldFormat) {
+  const TetMesh mesh = read_text(kDeck);
+  EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1, 0.3, 0.3, 0.3}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 1, 2, 3, 4}));
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{1, 2, 3, 4, 5, 6}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{10, 11}));
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1, 2}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  const PassThroughBlock& skin = mesh.extras.blocks[0];
+  EXPECT_EQ(skin.kind, "triangle");
+  EXPECT_EQ(skin.connectivity, (std::vector<index_t>{0, 1, 2}));
+  EXPECT_EQ(skin.tags, (std::vector<int>{7}));
+  EXPECT_EQ(skin.element_tags, (std::vector<long long>{20}));
+  // The triangle's nodes, and node 6 that SPC1 names.
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 1}));
+  EXPECT_EQ(*raw_section(mesh.extras, "nastran:types"), "PSOLID, SPC1");
+  EXPECT_EQ(raw_section(mesh.extras, "nastran:uncarried"), nullptr);
+  EXPECT_EQ(*raw_section(mesh.extras, "nastran:deck"), "6 2");
+}
+
+TEST(NastranIo, WritesTheDeckBackChangingOnlyTheGridsOfMovedNodes) {
+  EXPECT_EQ(write_text(read_text(kDeck)), kDeck);
+  std::string crlf;
+  for (char c : kDeck) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  EXPECT_EQ(write_text(read_text(crlf)), kDeck);
+
+  TetMesh mesh = read_text(kDeck);
+  mesh.xyz[3 * 3 + 2] = 0.875;      // node 4, free field
+  mesh.xyz[3 * 4 + 0] = 1.0 / 3.0;  // node 5, small field with a tab
+  const std::string expected = replaced(
+      replaced(kDeck, "GRID,4,,0.,0.,1.\n",
+               "GRID*   " + wide("4") + wide("") + wide("0.") + wide("0.") + "\n*       " + wide(".875") + "\n"),
+      "GRID    5               1.+0    10.-1\t1.0D0\n",
+      "GRID*   " + wide("5") + wide("") + wide(".333333333333333") + wide("1.") + "\n*       " + wide("1.") + "\n");
+  EXPECT_EQ(write_text(mesh), expected);
+  // What the large field keeps reads back within its 15 digits.
+  const TetMesh back = read_text(expected);
+  EXPECT_EQ(back.xyz[3 * 3 + 2], 0.875);
+  EXPECT_NEAR(back.xyz[3 * 4], 1.0 / 3.0, 1e-15);
+}
+
+TEST(NastranIo, ADeckIsWrittenOnlyForTheMeshItWasReadWith) {
+  TetMesh mesh = read_text(kDeck);
+  mesh.tets.resize(4);
+  try {
+    write_text(mesh);
+    FAIL() << "a deck written for another mesh";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("the Nastran deck read with this mesh lists (nodes, tets) 6 2, and the mesh "
+                                         "has 6 1"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(NastranIo, ReadsADeckGmshWrote) {
+  // tests/data/gmsh_layers_make.py: two volumes (PIDs 1 and 2, their entity
+  // tags) and the bottom face's triangles, in small field, no BEGIN BULK.
+  const TetMesh mesh = read_nastran_file(testing::data_path("nastran_gmsh_layers.bdf"));
+  EXPECT_EQ(mesh.num_nodes(), 157u);
+  ASSERT_EQ(mesh.num_tets(), 470u);
+  EXPECT_EQ(std::count(mesh.extras.tet_tags.begin(), mesh.extras.tet_tags.end(), 1), 234);
+  EXPECT_EQ(std::count(mesh.extras.tet_tags.begin(), mesh.extras.tet_tags.end(), 2), 236);
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "triangle");
+  EXPECT_EQ(mesh.extras.blocks[0].connectivity.size(), 3u * 44u);
+  std::vector<std::uint8_t> pinned(mesh.num_nodes(), 0);
+  mark_element_nodes(mesh.extras.blocks, pinned);
+  EXPECT_EQ(mesh.fixed, pinned);
+  // Its coordinates are Gmsh's 8 columns, such as 0.00E+00 and 0.500000.
+  EXPECT_EQ(mesh.xyz[5], 0.5);
+}
+
+TEST(NastranIo, ConstraintsLoadsAndRigidElementsPinTheirGridPoints) {
+  std::string deck = "BEGIN BULK\n";
+  for (int i = 1; i <= 20; ++i)
+    deck += "GRID," + std::to_string(i) + ",," + std::to_string(i % 3) + ".," + std::to_string(i % 5) + ".," +
+            std::to_string(i) + ".\n";
+  deck +=
+      "GRID,21,,0.,0.,0.,,123\n"  // PS: a permanent constraint
+      "CTETRA,1,1,1,2,3,4\n"
+      "SPC1,1,123,2,THRU,3\n"  // 2, 3
+      "SPC,1,5,1,0.,6,2,0.\n"  // 5, 6
+      "FORCE,2,7,,1.,0.,0.,1.\n"
+      "MPC,3,8,1,1.,,,,,+\n"
+      "+,,9,1,-1.,10,1,1.\n"           // 8, 9, 10
+      "RBE2,50,11,123456,12,13,0.5\n"  // 11, 12, 13; 0.5 is ALPHA
+      "RBE3,51,,14,123,1.,123,15,16,+\n"
+      "+,2.5,1,17,UM,18,1\n"   // 14, 15, 16, 17 and 18
+      "CELAS2,52,1.,19,1,0\n"  // 19 to the ground
+      "$TETSMOOTH PINNED 20\n"
+      "ENDDATA\n";
+  const TetMesh mesh = read_text(deck);
+  std::vector<std::uint8_t> expected(21, 1);
+  expected[0] = expected[3] = 0;  // nodes 1 and 4
+  EXPECT_EQ(mesh.fixed, expected);
+  EXPECT_EQ(*raw_section(mesh.extras, "nastran:uncarried"), "RBE2, RBE3, CELAS2");
+  EXPECT_EQ(*raw_section(mesh.extras, "nastran:types"), "SPC1, SPC, FORCE, MPC");
+  EXPECT_TRUE(mesh.extras.blocks.empty());
+}
+
+TEST(NastranIo, SecondOrderTetsAndOtherShapes) {
+  // A 10-node CTETRA on two lines (a blank first field goes on), its
+  // midside nodes in kTetEdges order; a CHEXA with corners only passes
+  // through, one with midside nodes only pins.
+  std::string deck = "BEGIN BULK\n";
+  const double corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (int i = 0; i < 4; ++i)
+    deck += "GRID*," + std::to_string(i + 1) + ",," + std::to_string(corners[i][0]) + "," +
+            std::to_string(corners[i][1]) + "\n*," + std::to_string(corners[i][2]) + "\n";
+  for (int e = 0; e < 6; ++e) {
+    const int a = kTetEdges[e][0], b = kTetEdges[e][1];
+    deck += "GRID," + std::to_string(5 + e) + ",";
+    for (int c = 0; c < 3; ++c) deck += "," + std::to_string(0.5 * (corners[a][c] + corners[b][c]));
+    deck += "\n";
+  }
+  deck += small({"CTETRA", "1", "3", "1", "2", "3", "4", "5", "6"}) + small({"", "7", "8", "9", "10"}) +
+          "CHEXA,2,4,1,2,3,4,5,6,+\n+,7,8\n"
+          "CHEXA,3,4,1,2,3,4,5,6,+\n+,7,8,9\n"
+          "ENDDATA\n";
+  const TetMesh mesh = read_text(deck);
+  ASSERT_EQ(mesh.num_tets(), 1u);
+  EXPECT_EQ(mesh.midsides, (std::vector<index_t>{4, 5, 6, 7, 8, 9}));
+  EXPECT_EQ(testing::largest_midside_offset(mesh), 0.0);
+  ASSERT_EQ(mesh.extras.blocks.size(), 1u);
+  EXPECT_EQ(mesh.extras.blocks[0].kind, "hexahedron");
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{4}));
+  EXPECT_EQ(*raw_section(mesh.extras, "nastran:uncarried"), "CHEXA");
+  EXPECT_EQ(read_error(replaced(deck, small({"", "7", "8", "9", "10"}), small({"", "7", "8", "9"}))),
+            "t.bdf:16: CTETRA 1 lists 9 grid points: a CTETRA has 4, or 10 with its midside nodes");
+}
+
+TEST(NastranIo, ANewDeckReadsBackAsWritten) {
+  TetMesh mesh = testing::with_midsides(testing::cube_grid(2, 0.2, 11));
+  mesh.extras.tet_tags.assign(mesh.num_tets(), 3);
+  mesh.extras.tet_tags[0] = 0;
+  mesh.extras.tet_tags[1] = -2;
+  mesh.extras.node_tags.resize(mesh.num_nodes());
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags[i] = 1000 + 7 * static_cast<long long>(i);
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2}, {5}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"vertex", 1, {8}, {}, {}, {}});
+  mesh.fixed.assign(mesh.num_nodes(), 0);
+  for (std::size_t i = 0; i < mesh.num_nodes(); i += 3) mesh.fixed[i] = 1;
+  mark_element_nodes(mesh.extras.blocks, mesh.fixed);
+  const std::string text = write_text(mesh);
+  EXPECT_EQ(text.substr(0, 34), "$ written by tetsmooth\nBEGIN BULK\n");
+  EXPECT_NE(text.find("\n$TETSMOOTH PINNED 1021 1042 1063 1084 1105 1126\n$TETSMOOTH PINNED "), std::string::npos);
+  const TetMesh back = read_text(text);
+  ASSERT_EQ(back.num_nodes(), mesh.num_nodes());
+  for (std::size_t k = 0; k < mesh.xyz.size(); ++k) EXPECT_NEAR(back.xyz[k], mesh.xyz[k], 1e-14) << k;
+  EXPECT_EQ(back.tets, mesh.tets);
+  EXPECT_EQ(back.midsides, mesh.midsides);
+  EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
+  // 0 as a blank PID, -2 as the next id after the largest tag.
+  std::vector<int> tags = mesh.extras.tet_tags;
+  tags[1] = 6;
+  EXPECT_EQ(back.extras.tet_tags, tags);
+  ASSERT_EQ(back.extras.blocks.size(), 2u);
+  EXPECT_EQ(back.extras.blocks[0].tags, (std::vector<int>{5}));
+  EXPECT_EQ(back.extras.blocks[1].kind, "vertex");
+  EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
+TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
+  const std::pair<const char*, double> forms[] = {{"7.0", 7},   {".7E1", 7},  {"0.7+1", 7},        {".70+1", 7},
+                                                  {"7.E+0", 7}, {"70.-1", 7}, {"-1.5-3", -1.5e-3}, {"1.5D+2", 150},
+                                                  {"2", 2},     {"+.5", 0.5}};
+  for (const auto& [text, value] : forms) {
+    double v = 0;
+    EXPECT_TRUE(nastran::parse_real_field(text, v)) << text;
+    EXPECT_DOUBLE_EQ(v, value) << text;
+  }
+  for (const char* bad : {"", "1.5E", "abc", "1.5-", "-", "1.5+3x", "inf", "nan"}) {
+    double v = 0;
+    EXPECT_FALSE(nastran::parse_real_field(bad, v)) << bad;
+  }
+  // Values whose shortest form fits come back exactly; others as close as
+  // the width allows, always with a decimal point.
+  EXPECT_EQ(nastran::real_field(0.25, 8), ".25");
+  EXPECT_EQ(nastran::real_field(-0.25, 8), "-.25");
+  EXPECT_EQ(nastran::real_field(3, 8), "3.");
+  EXPECT_EQ(nastran::real_field(1.5e-7, 8), "1.5E-7");
+  EXPECT_EQ(nastran::real_field(1e20, 8), "1.E20");
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> mantissa(-1, 1);
+  std::uniform_int_distribution<int> power(-30, 30);
+  for (int i = 0; i < 2000; ++i) {
+    const double value = mantissa(rng) * std::pow(10.0, power(rng));
+    for (std::size_t width : {8u, 16u}) {
+      const std::string text = nastran::real_field(value, width);
+      double back = 0;
+      ASSERT_LE(text.size(), width) << value;
+      ASSERT_TRUE(nastran::parse_real_field(text, back)) << text;
+      EXPECT_NE(text.find('.'), std::string::npos) << text;
+      EXPECT_LE(std::fabs(back - value), std::fabs(value) * (width == 16 ? 6e-10 : 6e-2)) << value << " " << text;
+    }
+  }
+}
+
+TEST(NastranIo, ErrorsNameTheFileAndLine) {
+  const std::pair<std::string, std::string> cases[] = {
+      {replaced(kDeck, "GRID,4,,", "GRID,4,2,"),
+       "t.bdf:10: GRID 4 is given in coordinate system 2: nodes in other coordinate systems than the basic one are "
+       "not read"},
+      {replaced(kDeck, "$ nodes\n", "INCLUDE 'mesh.bdf'\n"),
+       "t.bdf:5: INCLUDE is not read: merge the included file into the deck"},
+      {replaced(kDeck, "BEGIN BULK", "BEGIN BULK SUPER=2"),
+       "t.bdf:4: superelements are not read: give the model as one bulk data section"},
+      {replaced(kDeck, "$ nodes\n", "$ nodes\n+ABC    1\n"), "t.bdf:6: a continuation line with no entry before it"},
+      {replaced(kDeck, "CTETRA,11,2,2,3,4,5", "CTETRA,11,2,2,3,4,9"),
+       "t.bdf:14: element 11 names grid point 9, which no GRID defines"},
+      {replaced(kDeck, "GRID, 6,", "GRID, 5,"), "t.bdf:12: grid point 5 is defined a second time"},
+      {replaced(kDeck, "CTRIA3  20", "CTRIA3  10"), "t.bdf:15: element id 10 is used a second time"},
+      {replaced(kDeck, "GRID, 6, , .3,", "GRID, 6, , .3x,"),
+       "t.bdf:12: GRID 6: expected a finite coordinate, found '.3x'"},
+      {replaced(kDeck, "CTETRA,11,2,2,3,4,5", "CTETRA,11,2,2,3,4,5,6,7,8,9,10,11"),
+       "t.bdf:14: a free-field line of small fields holds 8 data fields and a continuation marker, and this one has 12 "
+       "fields after its first"},
+      {replaced(kDeck, small({"SPC1", "1", "123", "6"}), small({"SPC1", "1", "123", "66"})),
+       "t.bdf:17: grid point 66 is not defined"},
+      {replaced(kDeck, "CTETRA,11,2,", "CTETRA,11,x,"), "t.bdf:14: expected a property id (PID), found 'x'"},
+      {"BEGIN BULK\nGRID,1,,0.,0.,0.\nENDDATA\n", "t.bdf: no CTETRA elements: a volume mesh of tets is needed"},
+      {"SOL 101\nCEND\n", "t.bdf: no GRID entries: not a Nastran mesh"},
+  };
+  for (const auto& [deck, message] : cases) EXPECT_EQ(read_error(deck), message);
+}
+
+TEST(NastranIo, FormatByNameAndWhatOtherFormatsLose) {
+  EXPECT_EQ(format_from_path("model.BDF"), MeshFormat::Nastran);
+  EXPECT_EQ(format_from_path("model.nas"), MeshFormat::Nastran);
+  EXPECT_EQ(parse_format("bdf"), MeshFormat::Nastran);
+  EXPECT_STREQ(format_name(MeshFormat::Nastran), "nastran");
+  const TetMesh mesh = read_text(kDeck);
+  EXPECT_TRUE(output_losses(mesh, "out.bdf").empty());
+  const std::vector<std::string> to_vtu = output_losses(mesh, "out.vtu");
+  ASSERT_EQ(to_vtu.size(), 2u);
+  EXPECT_EQ(to_vtu[0], "the Nastran element ids will not be written: vtu numbers them by position");
+  EXPECT_EQ(to_vtu[1], "the rest of the Nastran deck (PSOLID, SPC1) will not be written: vtu holds the mesh alone");
+  // MSH keeps the ids, not the pin of node 6, which no element holds.
+  const std::vector<std::string> to_msh = output_losses(mesh, "out.msh");
+  ASSERT_EQ(to_msh.size(), 2u);
+  EXPECT_EQ(to_msh[0], "1 pinned node will not be pinned in the msh41 output, so a later run may move it");
+  TetMesh lines = testing::cube_grid(1);
+  lines.extras.blocks.push_back(PassThroughBlock{"line3", 3, {}, {}, {}, {}});
+  try {
+    check_writable(lines, "out.bdf");
+    FAIL() << "a 3-node line block written to Nastran";
+  } catch (const OutputError& e) {
+    EXPECT_NE(std::string(e.what()).find("Nastran output cannot hold the pass-through 'line3' block"),
+              std::string::npos);
+  }
+  TetMesh renumbered = testing::cube_grid(1);
+  renumbered.extras.node_tags.assign(renumbered.num_nodes(), 5);
+  const std::vector<std::string> notes = output_losses(renumbered, "out.nas");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0],
+            "the node numbers of the file cannot all be kept (each must be positive and distinct, at most "
+            "99,999,999): nastran numbers them 1, 2, ... instead");
+}
+
+}  // namespace
+}  // namespace tetsmooth

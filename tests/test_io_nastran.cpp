@@ -282,6 +282,7 @@ TEST(NastranIo, ErrorsNameTheFileAndLine) {
       {replaced(kDeck, "BEGIN BULK", "BEGIN BULK SUPER=2"),
        "t.bdf:4: superelements are not read: give the model as one bulk data section"},
       {replaced(kDeck, "$ nodes\n", "$ nodes\n+ABC    1\n"), "t.bdf:6: a continuation line with no entry before it"},
+      {replaced(kDeck, "GRID, 6,", "=, *1,"), "t.bdf:12: replicated entries ('=' lines) are not read: write each entry out"},
       {replaced(kDeck, "CTETRA,11,2,2,3,4,5", "CTETRA,11,2,2,3,4,9"),
        "t.bdf:14: element 11 names grid point 9, which no GRID defines"},
       {replaced(kDeck, "GRID, 6,", "GRID, 5,"), "t.bdf:12: grid point 5 is defined a second time"},

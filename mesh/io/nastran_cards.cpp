@@ -36,6 +36,7 @@ std::string_view data_part(const std::string& line) { return std::string_view(li
 
 // Tabs to the next multiple of 8 columns, as fixed-format fields are laid.
 std::string tabs_expanded(std::string_view line) {
+  if (line.find('\t') == std::string_view::npos) return std::string(line);
   std::string out;
   for (char c : line) {
     if (c != '\t') {
@@ -53,7 +54,7 @@ std::string first_field(const std::string& line) {
   const std::string_view data = data_part(line);
   const std::size_t comma = data.find(',');
   if (comma != std::string_view::npos) return upper(trimmed(data.substr(0, comma)));
-  return upper(trimmed(tabs_expanded(data).substr(0, 8)));
+  return upper(trimmed(tabs_expanded(data.substr(0, 8)).substr(0, 8)));
 }
 
 // A line that goes on with the entry before it.
@@ -167,6 +168,8 @@ BulkCards::Kind BulkCards::next_bulk() {
     fail(line.number, "'" + text_excerpt(trimmed(line.text)) +
                           "' after bulk data: superelements and parts are not read, and BEGIN BULK comes once, "
                           "before the first entry");
+  if (starts_with(name, "="))
+    fail(line.number, "replicated entries ('=' lines) are not read: write each entry out");
   if (continuation(line.text)) fail(line.number, "a continuation line with no entry before it");
   start_card(line);
   std::vector<Line> held;  // comments and blank lines that may fall inside the entry

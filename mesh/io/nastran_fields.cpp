@@ -70,18 +70,28 @@ std::string real_field(double value, std::size_t width) {
   return best;
 }
 
-void write_entry(std::ostream& out, std::string_view name, const std::vector<std::string>& fields, bool large) {
+void write_entry(std::ostream& out, std::string_view name, const std::vector<std::string>& fields, bool large,
+                 long long id) {
   const std::size_t per_line = large ? 4 : 8, width = large ? 16 : 8;
   std::size_t used = fields.size();
   while (used > 0 && fields[used - 1].empty()) --used;
+  // "+" and the id in base 36 (at most 7 characters for ids of 8 digits).
+  std::string marker;
+  for (long long rest = id; rest > 0; rest /= 36)
+    marker.insert(marker.begin(), "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ"[rest % 36]);
+  marker.insert(marker.begin(), '+');
   std::string line(name);
   if (large) line += '*';
   for (std::size_t i = 0; i == 0 || i < used; i += per_line) {
-    if (i > 0) line = large ? "*" : "+";
+    if (i > 0) line = large ? "*" : marker;
     line.resize(8, ' ');
     for (std::size_t k = i; k < std::min(i + per_line, used); ++k) {
       line.append(width - std::min(width, fields[k].size()), ' ');  // right-justified, as numbers are
       line += fields[k];
+    }
+    if (!large && i + per_line < used) {
+      line.resize(72, ' ');
+      line += marker;
     }
     out << line << '\n';
   }

@@ -22,9 +22,12 @@ std::string real_field(double value, std::size_t width);
 
 // Writes one entry: small field (8 columns) or large field (a '*' after the
 // name, 16 columns, 4 fields a line), `fields` being the data fields
-// (Nastran's fields 2..9 of each logical line; each must fit its width),
-// continued on lines that start with '+' (small) or '*' (large). Trailing
-// blank fields are left out.
-void write_entry(std::ostream& out, std::string_view name, const std::vector<std::string>& fields, bool large);
+// (Nastran's fields 2..9 of each logical line; each must fit its width).
+// A large-field entry goes on on lines that start with '*'; a small-field
+// one on lines whose first field is the marker "+<id in base 36>", which
+// also ends the line before (Gmsh reads a second line without one as
+// another entry). Trailing blank fields are left out.
+void write_entry(std::ostream& out, std::string_view name, const std::vector<std::string>& fields, bool large,
+                 long long id);
 
 }  // namespace tetsmooth::nastran

@@ -35,7 +35,8 @@
 //    "$TETSMOOTH PINNED <id> ..." that the writer leaves for pins nothing
 //    else keeps. Entries of other types are kept and not read.
 //  * Refused with the file's line: INCLUDE (merge the file into the deck),
-//    superelements (BEGIN SUPER, BEGIN BULK SUPER=), CP other than 0, ids
+//    superelements (BEGIN SUPER, BEGIN BULK SUPER=), replicated entries
+//    ('=' lines), CP other than 0, ids
 //    defined twice, grid points that no GRID defines, CTETRA with other than
 //    4 or 10 grid points.
 //  * The deck is kept in FileExtras::raw_sections, in order: "nastran:text"

@@ -46,7 +46,7 @@ void write_grid(std::ostream& out, const nastran::Card& card, const double* xyz)
   }
   std::vector<std::string> fields(card.fields.begin(), card.fields.begin() + 8);
   for (std::size_t c = 0; c < 3; ++c) fields[2 + c] = real_field(xyz[c], kLargeWidth);
-  write_entry(out, "GRID", fields, true);
+  write_entry(out, "GRID", fields, true, 0);  // large field: no marker
 }
 
 void write_deck(const TetMesh& mesh, std::ostream& out) {
@@ -97,10 +97,10 @@ std::string pid_text(int tag, const std::map<int, int>& renumbered) {
 }
 
 // An element entry in small field where every field fits, else large.
-void write_element(std::ostream& out, const char* name, const std::vector<std::string>& fields) {
+void write_element(std::ostream& out, const char* name, long long id, const std::vector<std::string>& fields) {
   const bool large =
       std::any_of(fields.begin(), fields.end(), [](const std::string& f) { return f.size() > kSmallWidth; });
-  write_entry(out, name, fields, large);
+  write_entry(out, name, fields, large, id);
 }
 
 void check_new_deck(const TetMesh& mesh) {
@@ -138,7 +138,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
     std::vector<std::string> fields{text_of(node_ids[i]), ""};
     for (std::size_t c = 0; c < 3; ++c) fields.push_back(real_field(mesh.xyz[3 * i + c], kLargeWidth));
-    write_entry(out, "GRID", fields, true);
+    write_entry(out, "GRID", fields, true, node_ids[i]);
   }
   const bool ten = !mesh.midsides.empty();
   const std::vector<int>& tags = mesh.extras.tet_tags;
@@ -152,7 +152,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
       std::copy_n(&mesh.tets[4 * t], 4, nodes);
     for (std::size_t k = 0; k < (ten ? 10u : 4u); ++k)
       fields.push_back(text_of(node_ids[static_cast<std::size_t>(nodes[k])]));
-    write_element(out, "CTETRA", fields);
+    write_element(out, "CTETRA", ids[t], fields);
   }
   std::size_t first = mesh.num_tets();
   for (const PassThroughBlock& b : mesh.extras.blocks) {
@@ -163,7 +163,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
       if (entry.pid) fields.push_back(b.tags.size() == elements_in(b) ? pid_text(b.tags[e], renumbered) : "");
       for (std::size_t k = 0; k < n; ++k)
         fields.push_back(text_of(node_ids[static_cast<std::size_t>(b.connectivity[e * n + k])]));
-      write_element(out, entry.name, fields);
+      write_element(out, entry.name, ids[first + e], fields);
     }
     first += elements_in(b);
   }

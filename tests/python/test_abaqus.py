@@ -16,7 +16,7 @@ import meshio
 import numpy as np
 
 from test_cli import EXIT_INPUT, radius_ratio, run
-from test_independent_readers import GmshScratchCase, boundary_nodes, gmsh_session
+from test_independent_readers import GmshScratchCase, boundary_nodes, gmsh_session, two_layers
 
 NODE_LINE = re.compile(r"^\d+, [^,]+, [^,]+, [^,]+$")
 # The midside nodes of a C3D10, after its corners: kTetEdges, VTK's order.
@@ -65,9 +65,7 @@ class GmshDecks(GmshScratchCase):
         with gmsh_session(gmsh):
             # Two layers of soil in a 2 x 2 x 2 block, meshed finely enough to
             # have interior nodes in both.
-            lower = gmsh.model.occ.addBox(0, 0, 0, 2, 2, 1)
-            upper = gmsh.model.occ.addBox(0, 0, 1, 2, 2, 1)
-            gmsh.model.occ.fragment([(3, lower)], [(3, upper)])
+            lower, upper = two_layers(gmsh)
             gmsh.model.occ.synchronize()
             gmsh.model.addPhysicalGroup(3, [lower], 11)
             gmsh.model.addPhysicalGroup(3, [upper], 12)

@@ -84,6 +84,16 @@ def gmsh_session(gmsh):
         gmsh.finalize()
 
 
+def two_layers(gmsh):
+    """Two 2 x 2 x 1 boxes stacked in z, fragmented so that they share the
+    face z = 1, as two volumes (two soil layers); their tags (lower, upper).
+    The caller synchronizes the model, after any OCC entities of its own."""
+    lower = gmsh.model.occ.addBox(0, 0, 0, 2, 2, 1)
+    upper = gmsh.model.occ.addBox(0, 0, 1, 2, 2, 1)
+    gmsh.model.occ.fragment([(3, lower)], [(3, upper)])
+    return lower, upper
+
+
 def physical_groups(gmsh):
     """{(dim, tag): number of elements} of the model in the session."""
     counts = {}

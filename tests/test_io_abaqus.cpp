@@ -295,7 +295,7 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   for (int k = 0; k < 66; ++k)
     std::ofstream(dir.file("n" + std::to_string(k) + ".inp")) << "*INCLUDE, INPUT=n" << k + 1 << ".inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("n0.inp")); }, "n0.inp")
-                .find("n64.inp:1: *INCLUDE nested more than 64 files deep"),
+                .find("n64.inp:1: *INCLUDE: nested more than 64 files deep"),
             std::string::npos);
   std::ofstream(dir.file("device.inp")) << "*INCLUDE, INPUT=/dev/null\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("device.inp")); }, "device.inp")

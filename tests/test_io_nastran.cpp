@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
@@ -17,6 +19,7 @@
 #include "mesh/io/writable_check.hpp"
 #include "mesh/second_order.hpp"
 #include "support/input_error.hpp"
+#include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
 
 namespace tetsmooth {
@@ -236,6 +239,42 @@ TEST(NastranIo, ANewDeckReadsBackAsWritten) {
   EXPECT_EQ(back.fixed, mesh.fixed);
 }
 
+TEST(NastranIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
+  testing::ScratchDir dir("nastran_include");
+  std::filesystem::create_directory(dir.file("mesh"));
+  {
+    // Relative paths start from the job's directory, in a nested file too;
+    // '\' is read as '/'; a quoted name may go on on the next line.
+    std::ofstream(dir.file("mesh/grids.bdf")) << "GRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,0.,1.,0.\n"
+                                                 "GRID,4,,0.,0.,1.\n";
+    std::ofstream(dir.file("mesh/model.bdf")) << "include 'mesh\\grids.bdf'\nCTETRA,1,1,1,2,3,4\n";
+    std::ofstream(dir.file("case.dat")) << "SUBCASE 1\n";
+    std::ofstream(dir.file("job.bdf")) << "SOL 101\nCEND\nINCLUDE 'case.dat'\nBEGIN BULK\nINCLUDE 'me\n  sh/model.bdf'\n"
+                                          "SPC1,1,123,1\nENDDATA\n";
+  }
+  const TetMesh mesh = read_nastran_file(dir.file("job.bdf"));
+  EXPECT_EQ(mesh.num_nodes(), 4u);
+  EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 0, 0, 0}));
+  EXPECT_EQ(write_text(mesh),
+            "SOL 101\nCEND\nSUBCASE 1\nBEGIN BULK\nGRID,1,,0.,0.,0.\nGRID,2,,1.,0.,0.\nGRID,3,,0.,1.,0.\n"
+            "GRID,4,,0.,0.,1.\nCTETRA,1,1,1,2,3,4\nSPC1,1,123,1\nENDDATA\n");
+  const std::vector<std::string> notes = output_losses(mesh, "out.bdf");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "the INCLUDE files (" + dir.file("case.dat") + ", " + dir.file("mesh/model.bdf") + ", " +
+                          dir.file("mesh/grids.bdf") + ") will be written inline, in the one output deck");
+  // Errors name the line of the included file.
+  std::ofstream(dir.file("mesh/grids.bdf")) << "GRID,1,,0.,0.,0.\nGRID,1,,1.,0.,0.\n";
+  EXPECT_EQ(testing::input_error_message([&] { read_nastran_file(dir.file("job.bdf")); }, "job.bdf"),
+            dir.file("mesh/grids.bdf") + ":2: grid point 1 is defined a second time");
+  std::ofstream(dir.file("lost.bdf")) << "BEGIN BULK\nINCLUDE 'missing.bdf'\n";
+  EXPECT_NE(testing::input_error_message([&] { read_nastran_file(dir.file("lost.bdf")); }, "lost.bdf")
+                .find(dir.file("lost.bdf") + ":2: INCLUDE: " + dir.file("missing.bdf") + ": cannot open"),
+            std::string::npos);
+  std::ofstream(dir.file("open.bdf")) << "BEGIN BULK\nINCLUDE 'never\n";
+  EXPECT_EQ(testing::input_error_message([&] { read_nastran_file(dir.file("open.bdf")); }, "open.bdf"),
+            dir.file("open.bdf") + ":2: INCLUDE: the file name's closing quote is missing");
+}
+
 TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
   const std::pair<const char*, double> forms[] = {{"7.0", 7},   {".7E1", 7},  {"0.7+1", 7},        {".70+1", 7},
                                                   {"7.E+0", 7}, {"70.-1", 7}, {"-1.5-3", -1.5e-3}, {"1.5D+2", 150},
@@ -277,8 +316,6 @@ TEST(NastranIo, ErrorsNameTheFileAndLine) {
       {replaced(kDeck, "GRID,4,,", "GRID,4,2,"),
        "t.bdf:10: GRID 4 is given in coordinate system 2: nodes in other coordinate systems than the basic one are "
        "not read"},
-      {replaced(kDeck, "$ nodes\n", "INCLUDE 'mesh.bdf'\n"),
-       "t.bdf:5: INCLUDE is not read: merge the included file into the deck"},
       {replaced(kDeck, "BEGIN BULK", "BEGIN BULK SUPER=2"),
        "t.bdf:4: superelements are not read: give the model as one bulk data section"},
       {replaced(kDeck, "$ nodes\n", "$ nodes\n+ABC    1\n"), "t.bdf:6: a continuation line with no entry before it"},

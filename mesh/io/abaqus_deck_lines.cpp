@@ -1,20 +1,13 @@
 #include "mesh/io/abaqus_deck_lines.hpp"
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 #include <stdexcept>
 
 #include "mesh/errors.hpp"
-#include "mesh/io/input_file.hpp"
 
 namespace tetsmooth::abaqus {
 namespace {
-
-// Deeper *INCLUDE nesting is refused, whatever the files.
-constexpr std::size_t kMaxIncludeDepth = 64;
 
 // The keywords the reader interprets (or refuses), each with the parameters
 // it reads, in full and normalized: the names an abbreviation may stand for.
@@ -83,11 +76,6 @@ std::vector<std::string_view> split_quoted(std::string_view line) {
   if (quoted) throw std::invalid_argument("a quote that does not close");
   parts.push_back(line.substr(start));
   return parts;
-}
-
-std::string directory_of(const std::string& path) {
-  const std::size_t slash = path.rfind('/');
-  return slash == std::string::npos ? "" : path.substr(0, slash + 1);
 }
 
 }  // namespace
@@ -169,67 +157,21 @@ bool ends_with_comma(std::string_view line) {
   return !t.empty() && t.back() == ',';
 }
 
-DeckLines::DeckLines(std::istream& in, std::string source) : directory_(directory_of(source)) {
-  stack_.push_back(Source{&in, nullptr, std::move(source)});
-  new_stretch();
-}
+DeckLines::DeckLines(std::istream& in, std::string source) : lines_(in, std::move(source)) {}
 
 DeckLines::~DeckLines() = default;
-
-void DeckLines::new_stretch() {
-  if (!stack_.empty()) stretches_.push_back(Stretch{lines_read_ + 1, stack_.back().path, stack_.back().line + 1});
-}
-
-bool DeckLines::raw_line(std::string& out) {
-  while (!stack_.empty()) {
-    Source& s = stack_.back();
-    if (std::getline(*s.in, out)) {
-      ++s.line;
-      ++lines_read_;
-      if (s.line == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);  // a UTF-8 byte order mark
-      if (!out.empty() && out.back() == '\r') out.pop_back();
-      return true;
-    }
-    if (s.in->bad()) throw InputError(s.path, "read error");
-    stack_.pop_back();
-    new_stretch();
-  }
-  return false;
-}
 
 void DeckLines::include(const Keyword& kw) {
   const std::string* input = kw.param("INPUT");
   std::string file = input == nullptr ? "" : unquoted(*input);
   if (file.empty()) fail("*INCLUDE without INPUT=file");
-  std::replace(file.begin(), file.end(), '\\', '/');
-  const std::string path = file.front() == '/' ? file : directory_ + file;
-  if (stack_.size() > kMaxIncludeDepth)
-    fail("*INCLUDE nested more than " + std::to_string(kMaxIncludeDepth) + " files deep");
-  std::error_code ec;
-  const auto canonical = std::filesystem::weakly_canonical(path, ec);
-  for (const Source& s : stack_)
-    if (!ec && std::filesystem::weakly_canonical(s.path, ec) == canonical && !ec)
-      fail("*INCLUDE: " + path + " includes itself, through the files that include it");
-  // A device or a pipe (/dev/zero, say) might never end.
-  struct stat st {};
-  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
-    fail("*INCLUDE: " + path + " is not a regular file");
-  try {
-    auto in = std::make_unique<std::ifstream>(open_input(path));
-    std::istream* raw = in.get();
-    stack_.push_back(Source{raw, std::move(in), path});
-  } catch (const InputError& e) {
-    fail(std::string("*INCLUDE: ") + e.what() +
-         (file.front() == '/' ? "" : " (a relative path starts from the job's directory, that of the deck first read)"));
-  }
-  new_stretch();
-  if (std::find(included_.begin(), included_.end(), path) == included_.end()) included_.push_back(path);
+  lines_.include(std::move(file), "*INCLUDE");
 }
 
 bool DeckLines::next() {
   for (;;) {
     if (!raw_line(text_)) return false;
-    mark_ = lines_read_;
+    mark_ = lines_.mark();
     if (is_comment(text_)) {
       kind_ = Kind::Comment;
       return true;
@@ -242,8 +184,8 @@ bool DeckLines::next() {
     // file, which must be no keyword line.
     std::string more;
     while (ends_with_comma(text_)) {
-      const std::size_t depth = stack_.size();
-      if (!raw_line(more) || stack_.size() != depth)
+      const std::size_t depth = lines_.depth();
+      if (!raw_line(more) || lines_.depth() != depth)
         fail("the keyword line ends with a comma, and its file ends after it");
       if (is_keyword(more)) fail("the keyword line ends with a comma, and the next line is a keyword line");
       text_ += '\n';
@@ -261,14 +203,6 @@ bool DeckLines::next() {
     kind_ = Kind::Keyword;
     return true;
   }
-}
-
-std::string DeckLines::where_of(std::uint32_t mark) const {
-  const auto after = std::upper_bound(stretches_.begin(), stretches_.end(), mark,
-                                      [](std::uint32_t m, const Stretch& s) { return m < s.first; });
-  if (after == stretches_.begin()) return "";
-  const Stretch& s = *(after - 1);
-  return s.path + ":" + std::to_string(s.line + (mark - s.first));
 }
 
 std::string DeckLines::where() const { return where_of(mark_); }

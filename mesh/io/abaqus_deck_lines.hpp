@@ -10,13 +10,13 @@
 // relative path taken from the directory of the deck first read (the job's
 // directory, from which Abaqus resolves it), '\' read as '/'.
 #include <cstdint>
-#include <fstream>
 #include <istream>
-#include <memory>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "mesh/io/included_lines.hpp"
 
 namespace tetsmooth::abaqus {
 
@@ -84,37 +84,20 @@ class DeckLines {
   // The place of the current line, 4 bytes to keep per item read (a node, an
   // element) for a message once the whole deck is read, and its "file:line".
   std::uint32_t mark() const { return mark_; }
-  std::string where_of(std::uint32_t mark) const;
+  std::string where_of(std::uint32_t mark) const { return lines_.where_of(mark); }
 
   // The files *INCLUDE read, each once, in the order met.
-  const std::vector<std::string>& included() const { return included_; }
+  const std::vector<std::string>& included() const { return lines_.included(); }
 
  private:
-  struct Source {
-    std::istream* in;
-    std::unique_ptr<std::ifstream> owned;
-    std::string path;
-    std::size_t line = 0;
-  };
-  // From line `first` of the deck on (counted over every file), lines come
-  // from `path`, its line `first` being line `line` of the file.
-  struct Stretch {
-    std::uint32_t first;
-    std::string path;
-    std::size_t line;
-  };
-  bool raw_line(std::string& out);
+  bool raw_line(std::string& out) { return lines_.next(out); }
   void include(const Keyword& kw);
-  void new_stretch();
 
-  std::vector<Source> stack_;
-  std::string directory_;  // of the deck first read, for relative *INCLUDE paths
+  IncludedLines lines_;
   std::string text_;
   Keyword keyword_;
   Kind kind_ = Kind::Data;
-  std::uint32_t lines_read_ = 0, mark_ = 0;
-  std::vector<Stretch> stretches_;
-  std::vector<std::string> included_;
+  std::uint32_t mark_ = 0;
 };
 
 }  // namespace tetsmooth::abaqus

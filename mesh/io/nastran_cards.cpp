@@ -71,9 +71,9 @@ const std::string& Card::field(std::size_t d) const {
   return d < fields.size() ? fields[d] : none;
 }
 
-BulkCards::BulkCards(std::istream& in, std::string source) : in_(in), source_(std::move(source)) {}
+BulkCards::BulkCards(std::istream& in, std::string source) : lines_(in, std::move(source)) {}
 
-void BulkCards::fail(std::size_t line, const std::string& what) const { throw InputError(where(line), what); }
+void BulkCards::fail(std::uint32_t mark, const std::string& what) const { throw InputError(where(mark), what); }
 
 bool BulkCards::read_line(Line& line) {
   if (!ahead_.empty()) {
@@ -81,19 +81,31 @@ bool BulkCards::read_line(Line& line) {
     ahead_.pop_front();
     return true;
   }
-  if (!std::getline(in_, line.text)) {
-    if (in_.bad()) throw InputError(source_, "read error after line " + std::to_string(line_no_));
-    return false;
-  }
-  if (!line.text.empty() && line.text.back() == '\r') line.text.pop_back();
-  line.number = ++line_no_;
+  if (!lines_.next(line.text)) return false;
+  line.mark = lines_.mark();
   return true;
+}
+
+void BulkCards::include(const Line& line) {
+  // INCLUDE 'file', the quoted name going on over the next lines of the
+  // file until its closing quote; or INCLUDE file.
+  const std::size_t word = upper(line.text).find("INCLUDE");
+  std::string name = trimmed(std::string_view(line.text).substr(word + 7));
+  if (!name.empty() && name.front() == '\'') {
+    std::string more;
+    while (name.find('\'', 1) == std::string::npos) {
+      if (!lines_.next(more)) fail(line.mark, "INCLUDE: the file name's closing quote is missing");
+      name += trimmed(more);
+    }
+    name = name.substr(1, name.find('\'', 1) - 1);
+  }
+  lines_.include(name, "INCLUDE");
 }
 
 BulkCards::Kind BulkCards::take_text(Line line, bool bulk_comment) {
   text_ = std::move(line.text);
   text_ += '\n';
-  text_line_ = line.number;
+  text_mark_ = line.mark;
   bulk_comment_ = bulk_comment;
   return Kind::Text;
 }
@@ -123,9 +135,9 @@ BulkCards::Kind BulkCards::next_undecided() {
     if (starts_with(name, "BEGIN")) {
       const std::string all = upper(line.text);
       if (all.find("SUPER") != std::string::npos)
-        fail(line.number, "superelements are not read: give the model as one bulk data section");
+        fail(line.mark, "superelements are not read: give the model as one bulk data section");
       if (all.find("BULK") == std::string::npos)
-        fail(line.number, "'" + text_excerpt(trimmed(line.text)) + "': only BEGIN BULK is read");
+        fail(line.mark, "'" + text_excerpt(trimmed(line.text)) + "': only BEGIN BULK is read");
       // What came before was executive and case control: kept, not read.
       header_ = std::move(undecided_);
       undecided_.clear();
@@ -133,7 +145,10 @@ BulkCards::Kind BulkCards::next_undecided() {
       part_ = Part::Bulk;
       return next();
     }
-    if (name == "INCLUDE") fail(line.number, "INCLUDE is not read: merge the included file into the deck");
+    if (name == "INCLUDE") {
+      include(line);
+      continue;
+    }
     if (!comment(line.text) && is_mesh_entry(name)) {
       // No BEGIN BULK: the deck is bulk data from its first line.
       ahead_.push_front(std::move(line));
@@ -154,6 +169,10 @@ BulkCards::Kind BulkCards::next_undecided() {
 BulkCards::Kind BulkCards::next_bulk() {
   Line line;
   if (!read_line(line)) return Kind::End;
+  while (first_field(line.text) == "INCLUDE") {
+    include(line);
+    if (!read_line(line)) return Kind::End;
+  }
   if (blank(line.text) || comment(line.text)) {
     const bool is_comment = comment(line.text);
     return take_text(std::move(line), is_comment);
@@ -163,14 +182,13 @@ BulkCards::Kind BulkCards::next_bulk() {
     part_ = Part::After;
     return take_text(std::move(line), false);
   }
-  if (name == "INCLUDE") fail(line.number, "INCLUDE is not read: merge the included file into the deck");
   if (starts_with(name, "BEGIN"))
-    fail(line.number, "'" + text_excerpt(trimmed(line.text)) +
+    fail(line.mark, "'" + text_excerpt(trimmed(line.text)) +
                           "' after bulk data: superelements and parts are not read, and BEGIN BULK comes once, "
                           "before the first entry");
   if (starts_with(name, "="))
-    fail(line.number, "replicated entries ('=' lines) are not read: write each entry out");
-  if (continuation(line.text)) fail(line.number, "a continuation line with no entry before it");
+    fail(line.mark, "replicated entries ('=' lines) are not read: write each entry out");
+  if (continuation(line.text)) fail(line.mark, "a continuation line with no entry before it");
   start_card(line);
   std::vector<Line> held;  // comments and blank lines that may fall inside the entry
   Line next_line;
@@ -196,7 +214,7 @@ void BulkCards::start_card(const Line& line) {
   card_.name.clear();
   card_.fields.clear();
   card_.text.clear();
-  card_.line = line.number;
+  card_.mark = line.mark;
   half_line_ = false;
   add_line(line, true);
 }
@@ -219,7 +237,7 @@ void BulkCards::add_line(const Line& line, bool first) {
     large = first ? !head.empty() && head.back() == '*' : starts_with(head, "*");
     const std::size_t capacity = large ? 4 : 8;
     if (fields.size() > capacity + 1)
-      fail(line.number, "a free-field line of " + std::string(large ? "large" : "small") + " fields holds " +
+      fail(line.mark, "a free-field line of " + std::string(large ? "large" : "small") + " fields holds " +
                             std::to_string(capacity) + " data fields and a continuation marker, and this one has " +
                             std::to_string(fields.size()) + " fields after its first");
     fields.resize(capacity);  // drops the continuation marker

@@ -5,19 +5,23 @@
 // (2..9, Nastran's numbering) of logical line L is data field
 // 8 * (L - 1) + k - 2. A large-field line holds half a logical line. The
 // first field (the name, or a continuation marker) and the tenth (a marker)
-// are not data.
+// are not data. INCLUDE statements are followed (included_lines.hpp): the
+// included lines come in their place.
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <istream>
 #include <string>
 #include <vector>
+
+#include "mesh/io/included_lines.hpp"
 
 namespace tetsmooth::nastran {
 
 struct Card {
   std::string name;                 // upper case, without a large field's '*'
   std::vector<std::string> fields;  // data fields without their blanks ("" for a blank one)
-  std::size_t line = 0;             // its first line
+  std::uint32_t mark = 0;           // its first line (IncludedLines::mark)
   std::string text;                 // its lines as read (comments between them too), each ending in '\n'
 
   // Data field d, or "" past the end.
@@ -35,18 +39,20 @@ class BulkCards {
   const Card& card() const { return card_; }
   // A Text line, ending in '\n'.
   const std::string& text() const { return text_; }
-  // Whether the last Text line is a comment of the bulk data, and its line.
+  // Whether the last Text line is a comment of the bulk data, and its mark.
   bool bulk_comment() const { return bulk_comment_; }
-  std::size_t text_line() const { return text_line_; }
+  std::uint32_t text_mark() const { return text_mark_; }
 
-  // "source:line", and InputError there.
-  std::string where(std::size_t line) const { return source_ + ":" + std::to_string(line); }
-  [[noreturn]] void fail(std::size_t line, const std::string& what) const;
+  // "file:line" of a mark, and InputError there.
+  std::string where(std::uint32_t mark) const { return lines_.where_of(mark); }
+  [[noreturn]] void fail(std::uint32_t mark, const std::string& what) const;
+  // The files INCLUDE read, each once, in the order met.
+  const std::vector<std::string>& included() const { return lines_.included(); }
 
  private:
   struct Line {
     std::string text;  // without its line end
-    std::size_t number = 0;
+    std::uint32_t mark = 0;
   };
   enum class Part { Undecided, Bulk, After };
 
@@ -57,10 +63,9 @@ class BulkCards {
   void start_card(const Line& line);
   void add_line(const Line& line, bool first);
   void finish_card();
+  void include(const Line& line);
 
-  std::istream& in_;
-  std::string source_;
-  std::size_t line_no_ = 0;
+  IncludedLines lines_;
   Part part_ = Part::Undecided;
   std::deque<Line> ahead_;  // lines read but not yet taken
   // Lines before BEGIN BULK or the first mesh entry, whichever comes first.
@@ -71,7 +76,7 @@ class BulkCards {
   bool half_line_ = false;  // the card's last logical line has only a large-field half
   std::string text_;
   bool bulk_comment_ = false;
-  std::size_t text_line_ = 0;
+  std::uint32_t text_mark_ = 0;
 };
 
 }  // namespace tetsmooth::nastran

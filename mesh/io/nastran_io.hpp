@@ -7,7 +7,9 @@
 // Entries (nastran_cards.hpp): small field (8 columns), large field (a name
 // ending in '*', 16 columns, continued on a line that starts with '*') and
 // free field (commas), continued on lines that start with '+', '*', ',' or a
-// blank; '$' starts a comment. Lines before BEGIN BULK (executive and case
+// blank; '$' starts a comment. INCLUDE 'file' is read in place (a relative
+// path from the deck's directory; included_lines.hpp). Lines before BEGIN
+// BULK (executive and case
 // control) and after ENDDATA are kept and not read; a file without BEGIN
 // BULK is bulk data throughout (Gmsh writes so). Reals take every Nastran
 // form ("1.5", ".5", "5.", "1.5E-3", "1.5-3", "1.5D-3"), and whole numbers
@@ -34,11 +36,10 @@
 //    PLOAD, DAREA, SUPORT, SUPORT1 and MPC; and the comment lines
 //    "$TETSMOOTH PINNED <id> ..." that the writer leaves for pins nothing
 //    else keeps. Entries of other types are kept and not read.
-//  * Refused with the file's line: INCLUDE (merge the file into the deck),
-//    superelements (BEGIN SUPER, BEGIN BULK SUPER=), replicated entries
-//    ('=' lines), CP other than 0, ids
-//    defined twice, grid points that no GRID defines, CTETRA with other than
-//    4 or 10 grid points.
+//  * Refused with the file's line: superelements (BEGIN SUPER, BEGIN BULK
+//    SUPER=), replicated entries ('=' lines), CP other than 0, ids defined
+//    twice, grid points that no GRID defines, CTETRA with other than 4 or 10
+//    grid points, and included files that cannot be read.
 //  * The deck is kept in FileExtras::raw_sections, in order: "nastran:text"
 //    bodies as read (lines end in '\n') and "nastran:grids" bodies, the
 //    text of runs of GRID entries (with the comments between them); then
@@ -46,7 +47,7 @@
 //    "nastran:types" (the deck's entry types other than GRID and the
 //    elements, for a note when another format drops them) and
 //    "nastran:uncarried" (the element types that only pin, for the same
-//    note).
+//    note) and "nastran:includes" (the files INCLUDE read).
 //
 // Writing: a mesh read from a deck is written as that deck, line for line,
 // but for the GRID entries of nodes whose coordinates changed: those are
@@ -54,7 +55,8 @@
 // SEID as read and each coordinate in 16 characters, the closest of its
 // decimal forms that fit (14 significant digits or more for sizes from 1 to
 // 1e13, 10 or more where the exponent has two digits). A node that did
-// not move keeps its GRID text byte for byte. Line ends become '\n'. The
+// not move keeps its GRID text byte for byte. Line ends become '\n', and
+// included files are written in place of their INCLUDE lines. The
 // mesh must still have the deck's node and tet counts.
 // Any other mesh is written as a new deck: "BEGIN BULK", GRID* entries,
 // CTETRA (PID = region tag; 0 as blank, negative tags as new positive ids),

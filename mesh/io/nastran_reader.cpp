@@ -54,13 +54,13 @@ struct Others {
   bool tagged = false;  // the type has a PID
   std::vector<long long> ids, grids;
   std::vector<int> pids;
-  std::vector<std::size_t> lines;
+  std::vector<std::uint32_t> marks;  // each element's line
 };
 
 // Grid points that a load, a constraint or an element that only pins names.
 struct PinRef {
   long long first, last;
-  std::size_t line;
+  std::uint32_t mark;  // its line
 };
 
 class DeckReader {
@@ -74,7 +74,7 @@ class DeckReader {
   void tet(const Card& card);
   void element(const EntryType& type, const Card& card);
   void pinned_comment(const std::string& line);
-  index_t node_of(long long id, const IdIndex& nodes, std::size_t line, long long element) const;
+  index_t node_of(long long id, const IdIndex& nodes, std::uint32_t mark, long long element) const;
   void resolve();
   void resolve_pins(const IdIndex& nodes);
 
@@ -83,12 +83,13 @@ class DeckReader {
   TetMesh mesh_;
   std::string kept_;         // the deck's text since the last change between GRID runs and the rest
   bool kept_grids_ = false;  // whether kept_ is a run of GRID entries
-  std::vector<std::size_t> node_lines_;
+  // Marks of the lines that define each node and element (BulkCards::where).
+  std::vector<std::uint32_t> node_marks_;
   std::vector<std::uint8_t> ps_pinned_;
   std::vector<long long> element_ids_;  // every element, for repeats
-  std::vector<std::size_t> element_lines_;
+  std::vector<std::uint32_t> element_marks_;
   std::vector<long long> tet_grids_;
-  std::vector<std::size_t> tet_lines_;
+  std::vector<std::uint32_t> tet_marks_;
   int tet_nodes_each_ = 0;
   std::vector<Others> others_;
   std::vector<PinRef> pin_refs_;
@@ -105,7 +106,7 @@ void DeckReader::keep(const std::string& text, bool grid) {
 }
 
 void DeckReader::grid(const Card& card) {
-  const std::string where = cards_.where(card.line);
+  const std::string where = cards_.where(card.mark);
   const long long id = id_field(card.field(0), "a grid point id", where);
   if (const std::string& cp = card.field(1); !cp.empty() && cp != "0")
     throw InputError(where, "GRID " + std::to_string(id) + " is given in coordinate system " + text_excerpt(cp) +
@@ -119,13 +120,13 @@ void DeckReader::grid(const Card& card) {
     mesh_.xyz.push_back(v);
   }
   mesh_.extras.node_tags.push_back(id);
-  node_lines_.push_back(card.line);
+  node_marks_.push_back(card.mark);
   const std::string& ps = card.field(6);
   ps_pinned_.push_back(!ps.empty() && ps != "0");
 }
 
 void DeckReader::tet(const Card& card) {
-  const std::string where = cards_.where(card.line);
+  const std::string where = cards_.where(card.mark);
   const long long id = id_field(card.field(0), "an element id", where);
   int listed = 0;
   for (std::size_t k = 0; k < 10; ++k) listed += !card.field(2 + k).empty();
@@ -140,16 +141,16 @@ void DeckReader::tet(const Card& card) {
     tet_grids_.push_back(id_field(card.field(2 + k), "a grid point id", where));
   mesh_.extras.tet_element_tags.push_back(id);
   mesh_.extras.tet_tags.push_back(pid_field(card.field(1), where));
-  tet_lines_.push_back(card.line);
+  tet_marks_.push_back(card.mark);
   element_ids_.push_back(id);
-  element_lines_.push_back(card.line);
+  element_marks_.push_back(card.mark);
 }
 
 void DeckReader::element(const EntryType& type, const Card& card) {
-  const std::string where = cards_.where(card.line);
+  const std::string where = cards_.where(card.mark);
   const long long id = id_field(card.field(0), "an element id", where);
   element_ids_.push_back(id);
-  element_lines_.push_back(card.line);
+  element_marks_.push_back(card.mark);
   // A shape other formats have: its first shape_grids fields given, no more.
   bool shaped = type.kind != nullptr;
   for (int k = 0; shaped && k < type.count; ++k)
@@ -157,7 +158,7 @@ void DeckReader::element(const EntryType& type, const Card& card) {
   if (!shaped) {
     add_once(uncarried_, type.name);
     for (const auto& [first, last] : grid_ranges(type, card, where))
-      pin_refs_.push_back(PinRef{first, last, card.line});
+      pin_refs_.push_back(PinRef{first, last, card.mark});
     return;
   }
   auto it = std::find_if(others_.begin(), others_.end(), [&](const Others& o) { return o.kind == type.kind; });
@@ -168,7 +169,7 @@ void DeckReader::element(const EntryType& type, const Card& card) {
   for (int k = 0; k < type.shape_grids; ++k)
     it->grids.push_back(id_field(card.field(static_cast<std::size_t>(type.first + k)), "a grid point id", where));
   it->pids.push_back(type.has_pid ? pid_field(card.field(1), where) : 0);
-  it->lines.push_back(card.line);
+  it->marks.push_back(card.mark);
 }
 
 void DeckReader::pinned_comment(const std::string& line) {
@@ -178,17 +179,17 @@ void DeckReader::pinned_comment(const std::string& line) {
   const std::size_t at = head.find_first_not_of(" \t");
   if (at == std::string::npos || head.compare(at, kPinnedComment.size(), kPinnedComment) != 0) return;
   std::istringstream ids(head.substr(at + kPinnedComment.size()));
-  const std::string where = cards_.where(cards_.text_line());
+  const std::string where = cards_.where(cards_.text_mark());
   for (std::string token; ids >> token;) {
     const long long id = id_field(token, "a grid point id", where);
-    pin_refs_.push_back(PinRef{id, id, cards_.text_line()});
+    pin_refs_.push_back(PinRef{id, id, cards_.text_mark()});
   }
 }
 
-index_t DeckReader::node_of(long long id, const IdIndex& nodes, std::size_t line, long long element) const {
+index_t DeckReader::node_of(long long id, const IdIndex& nodes, std::uint32_t mark, long long element) const {
   const long long n = nodes.find(id);
   if (n < 0)
-    throw InputError(cards_.where(line), "element " + std::to_string(element) + " names grid point " +
+    throw InputError(cards_.where(mark), "element " + std::to_string(element) + " names grid point " +
                                              std::to_string(id) + ", which no GRID defines");
   return static_cast<index_t>(n);
 }
@@ -201,7 +202,7 @@ void DeckReader::resolve_pins(const IdIndex& nodes) {
     if (ref.first == ref.last) {
       const long long n = nodes.find(ref.first);
       if (n < 0)
-        throw InputError(cards_.where(ref.line), "grid point " + std::to_string(ref.first) + " is not defined");
+        throw InputError(cards_.where(ref.mark), "grid point " + std::to_string(ref.first) + " is not defined");
       pinned[static_cast<std::size_t>(n)] = 1;
       continue;
     }
@@ -216,16 +217,16 @@ void DeckReader::resolve() {
   FileExtras& e = mesh_.extras;
   const IdIndex nodes(e.node_tags), elements(element_ids_);
   if (const auto twice = nodes.repeated())
-    throw InputError(cards_.where(node_lines_[*twice]),
+    throw InputError(cards_.where(node_marks_[*twice]),
                      "grid point " + std::to_string(e.node_tags[*twice]) + " is defined a second time");
   if (const auto twice = elements.repeated())
-    throw InputError(cards_.where(element_lines_[*twice]),
+    throw InputError(cards_.where(element_marks_[*twice]),
                      "element id " + std::to_string(element_ids_[*twice]) + " is used a second time");
   const auto each = static_cast<std::size_t>(tet_nodes_each_);
   index_t tet[10];
-  for (std::size_t t = 0; t < tet_lines_.size(); ++t) {
+  for (std::size_t t = 0; t < tet_marks_.size(); ++t) {
     for (std::size_t k = 0; k < each; ++k)
-      tet[k] = node_of(tet_grids_[each * t + k], nodes, tet_lines_[t], e.tet_element_tags[t]);
+      tet[k] = node_of(tet_grids_[each * t + k], nodes, tet_marks_[t], e.tet_element_tags[t]);
     append_file_tet(mesh_, tet, each == 10, kMidsidePlaces);
   }
   for (const Others& o : others_) {
@@ -237,7 +238,7 @@ void DeckReader::resolve() {
     const auto n = static_cast<std::size_t>(o.nodes);
     for (std::size_t i = 0; i < o.ids.size(); ++i)
       for (std::size_t k = 0; k < n; ++k)
-        block.connectivity.push_back(node_of(o.grids[i * n + k], nodes, o.lines[i], o.ids[i]));
+        block.connectivity.push_back(node_of(o.grids[i * n + k], nodes, o.marks[i], o.ids[i]));
   }
   resolve_pins(nodes);
 }
@@ -267,17 +268,18 @@ TetMesh DeckReader::read() {
     }
     add_once(types_, text_excerpt(card.name));
     if (type != nullptr)
-      for (const auto& [first, last] : grid_ranges(*type, card, cards_.where(card.line)))
-        pin_refs_.push_back(PinRef{first, last, card.line});
+      for (const auto& [first, last] : grid_ranges(*type, card, cards_.where(card.mark)))
+        pin_refs_.push_back(PinRef{first, last, card.mark});
   }
   keep("", !kept_grids_);  // the last piece
   if (mesh_.num_nodes() == 0) throw InputError(source_, "no GRID entries: not a Nastran mesh");
-  if (tet_lines_.empty()) throw InputError(source_, "no CTETRA elements: a volume mesh of tets is needed");
+  if (tet_marks_.empty()) throw InputError(source_, "no CTETRA elements: a volume mesh of tets is needed");
   resolve();
   FileExtras& e = mesh_.extras;
   stamp_kept_deck(mesh_, "nastran");
   if (!types_.empty()) e.raw_sections.emplace_back("nastran:types", joined(types_));
   if (!uncarried_.empty()) e.raw_sections.emplace_back("nastran:uncarried", joined(uncarried_));
+  if (!cards_.included().empty()) e.raw_sections.emplace_back("nastran:includes", joined(cards_.included()));
   validate_mesh(mesh_, source_);
   return std::move(mesh_);
 }

@@ -271,6 +271,8 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                     " numbers them 1, 2, ... instead");
   if (const std::string* files = raw_section(e, "abaqus:includes"); files != nullptr && f == MeshFormat::Abaqus)
     notes.push_back("the *INCLUDE files (" + *files + ") will be written inline, in the one output deck");
+  if (const std::string* files = raw_section(e, "nastran:includes"); files != nullptr && f == MeshFormat::Nastran)
+    notes.push_back("the INCLUDE files (" + *files + ") will be written inline, in the one output deck");
   if (const std::string* keywords = raw_section(e, "abaqus:keywords"); keywords != nullptr && f != MeshFormat::Abaqus)
     notes.push_back("the rest of the Abaqus deck (" + *keywords + ") will not be written: " + name +
                     " holds the mesh alone");

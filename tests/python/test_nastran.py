@@ -11,9 +11,9 @@ read; a node that did not move (on the boundary, on the CTRIA3/CTRIA6
 elements, on the interface between the two volumes, named by SPC1 or FORCE,
 or with a PS) keeps its GRID text byte for byte; the worst radius ratio does
 not fall; midside nodes move with their edges' midpoints. Decks that
-tetsmooth does not read (CP other than 0, INCLUDE, superelements, ids defined
-twice, undefined grid points) are refused with their file and line, and
-nothing is written.
+tetsmooth does not read (CP other than 0, an INCLUDE of a file that is not
+there, superelements, ids defined twice, undefined grid points) are refused
+with their file and line, and nothing is written.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import os

@@ -229,14 +229,20 @@ TEST(NastranIo, ANewDeckReadsBackAsWritten) {
   EXPECT_EQ(back.tets, mesh.tets);
   EXPECT_EQ(back.midsides, mesh.midsides);
   EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
-  // 0 as a blank PID, -2 as the next id after the largest tag.
+  // 0 and -2 as the next ids after the largest tag (the triangle's 5).
   std::vector<int> tags = mesh.extras.tet_tags;
-  tags[1] = 6;
+  tags[0] = 6;
+  tags[1] = 7;
   EXPECT_EQ(back.extras.tet_tags, tags);
   ASSERT_EQ(back.extras.blocks.size(), 2u);
   EXPECT_EQ(back.extras.blocks[0].tags, (std::vector<int>{5}));
   EXPECT_EQ(back.extras.blocks[1].kind, "vertex");
   EXPECT_EQ(back.fixed, mesh.fixed);
+  EXPECT_EQ(output_losses(mesh, "out.bdf"),
+            (std::vector<std::string>{"region tags of 0 and below are written as new PIDs (-2 as 7, 0 as 6): Nastran's "
+                                      "PIDs are positive"}));
+  // A mesh without regions gets PID 1, which Gmsh needs.
+  EXPECT_NE(write_text(testing::cube_grid(1)).find("CTETRA         1       1"), std::string::npos);
 }
 
 TEST(NastranIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
@@ -273,6 +279,113 @@ TEST(NastranIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   std::ofstream(dir.file("open.bdf")) << "BEGIN BULK\nINCLUDE 'never\n";
   EXPECT_EQ(testing::input_error_message([&] { read_nastran_file(dir.file("open.bdf")); }, "open.bdf"),
             dir.file("open.bdf") + ":2: INCLUDE: the file name's closing quote is missing");
+}
+
+// Four tets around one interior node, 5.
+const std::string kStar = "BEGIN BULK\n" + small({"GRID", "1", "", "0.", "0.", "0."}) +
+                          small({"GRID", "2", "", "1.", "0.", "0."}) + small({"GRID", "3", "", "0.", "1.", "0."}) +
+                          small({"GRID", "4", "", "0.", "0.", "1."}) + small({"GRID", "5", "", ".3", ".2", ".1"}) +
+                          small({"CTETRA", "1", "1", "5", "2", "3", "4"}) +
+                          small({"CTETRA", "2", "1", "1", "5", "3", "4"}) +
+                          small({"CTETRA", "3", "1", "1", "2", "5", "4"}) +
+                          small({"CTETRA", "4", "1", "1", "2", "3", "5"}) + "ENDDATA\n";
+
+bool node5_pinned(const std::string& entries) {
+  const TetMesh mesh = read_text(replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\n" + entries));
+  return !mesh.fixed.empty() && mesh.fixed[4] == 1;
+}
+
+TEST(NastranIo, PointsThatGiveDirectionsOrSetsApartArePinned) {
+  EXPECT_FALSE(node5_pinned(""));
+  for (const std::string& entries : {
+           small({"FORCE1", "1", "4", "100.", "5", "4"}),             // the direction's G1
+           small({"FORCE2", "1", "4", "100.", "1", "2", "5", "3"}),   // G3
+           small({"MOMENT1", "1", "4", "100.", "4", "5"}),            // G2
+           small({"CBAR", "101", "1", "1", "2", "5"}),                // the orientation node G0
+           small({"CBUSH", "101", "1", "1", "2", "5"}),
+           small({"CORD1R", "7", "1", "2", "5"}),                     // a system defined by points
+           small({"RFORCE", "1", "5", "", "100.", "0.", "0.", "1."}),  // the centre of rotation
+           small({"SPC1", "1", "123", "1", "THRU", "3", "5"}),        // a list after a range
+           small({"ASET1", "3", "4", "THRU", "6"}),                   // analysis sets
+           small({"ASET", "4", "3", "5", "3"}),
+           small({"CMASS2", "9", "1.", "5", "1"}),
+           small({"PLOTEL", "9", "1", "5"}),
+           small({"RBE1", "9", "1", "123", "2", "123", "3", "123"}) + small({"", "UM", "5", "123"}),
+           small({"GRDSET", "", "", "", "", "", "", "3"}),            // a PS for blank ones
+       })
+    EXPECT_TRUE(node5_pinned(entries)) << entries;
+  // A CBAR's orientation as a vector names no point; a GRID's own PS wins
+  // over GRDSET's.
+  EXPECT_FALSE(node5_pinned(small({"CBAR", "101", "1", "1", "2", "1.", "0.", "0."})));
+  const TetMesh own_ps =
+      read_text(replaced(replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\n" + small({"GRDSET", "", "", "", "", "", "", "3"})),
+                         small({"GRID", "5", "", ".3", ".2", ".1"}), small({"GRID", "5", "", ".3", ".2", ".1", "", "0"})));
+  EXPECT_EQ(own_ps.fixed[4], 0);
+  // Scalar points are no grid points, and no error.
+  const TetMesh scalar = read_text(replaced(
+      kStar, "BEGIN BULK\n",
+      "BEGIN BULK\n" + small({"SPOINT", "101", "THRU", "103"}) + small({"CELAS2", "9", "1.", "4", "1", "102"}) +
+          small({"SPC", "1", "101", "0", "0."})));
+  EXPECT_EQ(scalar.fixed, (std::vector<std::uint8_t>{0, 0, 0, 1, 0}));
+  // Entries that name grid points in ways not read are said.
+  const TetMesh welded = read_text(replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\nCWELD,9,1,5\n"));
+  ASSERT_EQ(welded.extras.read_notes.size(), 1u);
+  EXPECT_EQ(welded.extras.read_notes[0].substr(0, 70),
+            "the deck's CWELD entries name grid points that tetsmooth does not read");
+}
+
+TEST(NastranIo, LeftHandedTetsAreTurnedRound) {
+  const std::string deck = replaced(kStar, small({"CTETRA", "1", "1", "5", "2", "3", "4"}),
+                                    small({"CTETRA", "1", "1", "2", "5", "3", "4"}));
+  const TetMesh mesh = read_text(deck);
+  EXPECT_EQ(std::vector<index_t>(mesh.tets.begin(), mesh.tets.begin() + 4), (std::vector<index_t>{1, 2, 4, 3}));
+  ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
+  EXPECT_EQ(mesh.extras.read_notes[0], "1 of the 4 CTETRA list their grid points left-handed, which Nastran takes: "
+                                       "they are read turned round (G2 and G3 swapped), and the deck keeps them as "
+                                       "written");
+  EXPECT_EQ(write_text(mesh), deck);
+  // With midside nodes, which turn with their edges.
+  TetMesh ten = testing::with_midsides(testing::cube_grid(1));
+  for (std::size_t t = 0; t < ten.num_tets(); t += 2) {
+    std::swap(ten.tets[4 * t + 1], ten.tets[4 * t + 2]);
+    std::swap(ten.midsides[6 * t + 0], ten.midsides[6 * t + 2]);
+    std::swap(ten.midsides[6 * t + 4], ten.midsides[6 * t + 5]);
+  }
+  std::ostringstream left;
+  write_nastran(ten, left);
+  const TetMesh back = read_text(left.str());
+  EXPECT_EQ(testing::largest_midside_offset(back), 0.0);
+  EXPECT_EQ(back.tets, testing::with_midsides(testing::cube_grid(1)).tets);
+  EXPECT_EQ(back.midsides, testing::with_midsides(testing::cube_grid(1)).midsides);
+}
+
+TEST(NastranIo, DataPastAnEntrysFieldsIsRefusedNotDropped) {
+  const std::string large = "GRID*   " + wide("5") + wide("") + wide(".3") + wide(".2") + "\n+       .1\n";
+  EXPECT_EQ(read_error(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}), large)),
+            "t.bdf:6: GRID 5 has '.1' past its last field (field 2 of its line 2): a large-field entry goes on on "
+            "lines that start with '*', and each line of an entry holds 8 fields");
+  EXPECT_EQ(read_error(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}), "GRID,5,,.3,.2\n,.1\n")),
+            "t.bdf:6: GRID 5 has '.1' past its last field (field 2 of its line 2): a large-field entry goes on on "
+            "lines that start with '*', and each line of an entry holds 8 fields");
+  // A UTF-8 byte order mark before the first entry, and meshio's CTETRA_.
+  const TetMesh marked = read_text("\xEF\xBB\xBF" + kStar.substr(11));
+  EXPECT_EQ(marked.num_nodes(), 5u);
+  const TetMesh meshio = read_text(replaced(kStar, "CTETRA  1 ", "CTETRA_ 1 "));
+  ASSERT_EQ(meshio.extras.read_notes.size(), 1u);
+  EXPECT_EQ(meshio.extras.read_notes[0],
+            "CTETRA_ entries (meshio 5's name for 10-node tets, which Nastran does not know) were read as CTETRA");
+}
+
+TEST(NastranIo, AMovedGridKeepsItsComments) {
+  TetMesh mesh = read_text(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}),
+                                    "GRID*   " + wide("5") + wide("") + wide(".3") + wide(".2") +
+                                        "\n$ between\n*       " + wide(".1") + "   $ monitor point\n"));
+  mesh.xyz[3 * 4] = 0.25;
+  const std::string text = write_text(mesh);
+  EXPECT_NE(text.find("$ between\n$ monitor point\nGRID*   " + wide("5") + wide("") + wide(".25") + wide(".2") +
+                      "\n*       " + wide(".1") + "\n"),
+            std::string::npos)
+      << text;
 }
 
 TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
@@ -330,7 +443,7 @@ TEST(NastranIo, ErrorsNameTheFileAndLine) {
        "t.bdf:14: a free-field line of small fields holds 8 data fields and a continuation marker, and this one has 12 "
        "fields after its first"},
       {replaced(kDeck, small({"SPC1", "1", "123", "6"}), small({"SPC1", "1", "123", "66"})),
-       "t.bdf:17: grid point 66 is not defined"},
+       "t.bdf:17: SPC1 names grid point 66, which no GRID defines"},
       {replaced(kDeck, "CTETRA,11,2,", "CTETRA,11,x,"), "t.bdf:14: expected a property id (PID), found 'x'"},
       {"BEGIN BULK\nGRID,1,,0.,0.,0.\nENDDATA\n", "t.bdf: no CTETRA elements: a volume mesh of tets is needed"},
       {"SOL 101\nCEND\n", "t.bdf: no GRID entries: not a Nastran mesh"},

@@ -1,6 +1,7 @@
 // The Nastran entries the deck reader reads (nastran_entry_types.hpp).
 #include "mesh/io/nastran_entry_types.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <iterator>
 
@@ -23,10 +24,12 @@ const EntryType kTypes[] = {
     {"CROD", kElement, "line", 2, kPid, Grids::Run, 2, 2},
     {"CTUBE", kElement, "line", 2, kPid, Grids::Run, 2, 2},
     {"CVISC", kElement, "line", 2, kPid, Grids::Run, 2, 2},
-    {"CGAP", kElement, "line", 2, kPid, Grids::Run, 2, 2},
-    {"CBAR", kElement, "line", 2, kPid, Grids::Run, 2, 2},
-    {"CBEAM", kElement, "line", 2, kPid, Grids::Run, 2, 2},
-    {"CBUSH", kElement, "line", 2, kPid, Grids::Run, 2, 2},
+    {"CBUSH1D", kElement, "line", 2, kPid, Grids::Run, 2, 2},
+    {"CBUSH2D", kElement, "line", 2, kPid, Grids::Run, 2, 2},
+    {"CGAP", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
+    {"CBAR", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
+    {"CBEAM", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
+    {"CBUSH", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
     {"CONROD", kElement, "line", 2, kNoPid, Grids::Run, 1, 2},
     {"CONM1", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
     {"CONM2", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
@@ -37,29 +40,63 @@ const EntryType kTypes[] = {
     {"CPYRA", kElement, "pyramid", 5, kPid, Grids::Run, 2, 13},
     // Elements that only pin.
     {"CQUAD8", kElement, nullptr, 0, kPid, Grids::Run, 2, 8},
-    {"CELAS1", kElement, nullptr, 0, kPid, Grids::Listed, 0, 0, {2, 4, -1, -1}},
-    {"CDAMP1", kElement, nullptr, 0, kPid, Grids::Listed, 0, 0, {2, 4, -1, -1}},
-    {"CELAS2", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 4, -1, -1}},
-    {"CDAMP2", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 4, -1, -1}},
-    {"RBAR", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1}},
+    {"CQUAD", kElement, nullptr, 0, kPid, Grids::Run, 2, 9},
+    {"CTRIAX6", kElement, nullptr, 0, kNoPid, Grids::Run, 2, 6},
+    {"CELAS1", kElement, nullptr, 0, kPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
+    {"CDAMP1", kElement, nullptr, 0, kPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
+    {"CMASS1", kElement, nullptr, 0, kPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
+    {"CELAS2", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
+    {"CDAMP2", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
+    {"CMASS2", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
+    {"PLOTEL", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
+    {"RBAR", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
+    {"RROD", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
+    {"RJOINT", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
+    {"RTRPLT", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, -1, -1, -1}},
+    {"RBE1", kElement, nullptr, 0, kNoPid, Grids::Pairs},
     {"RBE2", kElement, nullptr, 0, kNoPid, Grids::Rbe2},
     {"RBE3", kElement, nullptr, 0, kNoPid, Grids::Rbe3},
-    // Loads and constraints.
-    {"SPC", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1}},
-    {"SPCD", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1}},
-    {"SPC1", kLoad, nullptr, 0, kNoPid, Grids::Spc1},
-    {"FORCE", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1}},
-    {"FORCE1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1}},
-    {"FORCE2", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1}},
-    {"MOMENT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1}},
-    {"MOMENT1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1}},
-    {"MOMENT2", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1}},
-    {"PLOAD", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 3, 4, 5}},
-    {"DAREA", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1}},
-    {"SUPORT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6}},
-    {"SUPORT1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 5, -1}},
+    // Loads, constraints, and the points that give a load or a coordinate
+    // system its direction.
+    {"SPC", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"SPCD", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"SPC1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 2},
+    {"FORCE", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"MOMENT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"FORCE1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, -1, -1, -1}},
+    {"MOMENT1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, -1, -1, -1}},
+    {"FORCE2", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
+    {"MOMENT2", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
+    {"RFORCE", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"PLOAD", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 3, 4, 5, -1, -1}},
+    {"DAREA", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"ACCEL1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 8},
+    {"SUPORT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"SUPORT1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 5, -1, -1, -1}},
     {"MPC", kLoad, nullptr, 0, kNoPid, Grids::EveryLine},
+    {"CORD1R", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
+    {"CORD1C", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
+    {"CORD1S", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
+    // Degrees of freedom an analysis sets apart (often a test's measured
+    // points): ASET ID1 C1 ID2 C2 ..., ASET1 C G1 G2 ... (THRU too).
+    {"ASET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"BSET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"CSET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"QSET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"OMIT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"ASET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"BSET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"CSET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"QSET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"OMIT1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
 };
+
+const EntryType kScalarPoints{"SPOINT", kLoad, nullptr, 0, kNoPid, Grids::IdList, 0};
+
+// Entries that name grid points in layouts the reader does not follow.
+const char* const kUnread[] = {"CWELD",  "CFAST",  "CSEAM",  "RSPLINE", "GENEL",  "DMIG",    "BCGRID",
+                               "TEMPBC", "CHBDYG", "CHBDYP", "CIFHEX",  "CIFPENT", "CHEXCZ", "CPENTCZ",
+                               "SPCR",   "RBE3D",  "CTRAX3", "CTRAX6",  "CQUADX", "CTRIAX"};
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -79,6 +116,12 @@ const EntryType* entry_type(const std::string& name) {
   return nullptr;
 }
 
+const EntryType& scalar_point_type() { return kScalarPoints; }
+
+bool names_grids_unread(const std::string& name) {
+  return std::find(std::begin(kUnread), std::end(kUnread), name) != std::end(kUnread);
+}
+
 bool is_mesh_entry(const std::string& name) {
   if (name == "GRID" || name == "GRID*" || name == "CTETRA" || name == "CTETRA*") return true;
   const std::string bare = !name.empty() && name.back() == '*' ? name.substr(0, name.size() - 1) : name;
@@ -86,22 +129,23 @@ bool is_mesh_entry(const std::string& name) {
   return type != nullptr && type->element;
 }
 
-long long id_field(const std::string& field, const char* what, const std::string& where, bool blank_ok) {
+long long id_field(const std::string& field, const char* what, const Place& at, bool blank_ok) {
   if (field.empty() && blank_ok) return 0;
   long long id = 0;
   if (!parse_integer(field, id) || id <= 0)
-    throw InputError(where, std::string("expected ") + what + " (a positive whole number), found " +
+    throw InputError(at.where(), std::string("expected ") + what + " (a positive whole number), found " +
                                 (field.empty() ? std::string("a blank field") : quoted_token(field)));
   return id;
 }
 
 std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, const Card& card,
-                                                         const std::string& where) {
+                                                         const BulkCards& cards) {
+  const Place at{cards, card.mark};
   std::vector<std::pair<long long, long long>> ranges;
   const auto add = [&](std::size_t d) {
     const std::string& f = card.field(d);
     if (f.empty() || f == "0") return;  // no grid point (a grounded spring, a blank MPC term)
-    const long long id = id_field(f, "a grid point id", where);
+    const long long id = id_field(f, "a grid point id", at);
     ranges.emplace_back(id, id);
   };
   const std::size_t fields = card.fields.size();
@@ -117,15 +161,30 @@ std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, 
       for (std::size_t d = 0; d < fields; ++d)
         if (d % 8 == 1 || d % 8 == 4) add(d);
       break;
-    case Grids::Spc1:
-      if (upper(card.field(3)) == "THRU") {
-        const long long first = id_field(card.field(2), "a grid point id", where);
-        const long long last = id_field(card.field(4), "a grid point id", where);
-        if (last < first) throw InputError(where, "a THRU range that ends before it starts");
-        ranges.emplace_back(first, last);
-        break;
+    case Grids::IdList:
+      for (std::size_t d = static_cast<std::size_t>(type.first); d < fields; ++d) {
+        if (upper(card.field(d)) != "THRU") {
+          add(d);
+          continue;
+        }
+        // G1 THRU G2: G1, the field before, was added as one id; the range
+        // takes its place.
+        long long first = 0;
+        if (d > static_cast<std::size_t>(type.first)) parse_integer(card.field(d - 1), first);
+        if (first <= 0 || ranges.empty() || ranges.back() != std::make_pair(first, first))
+          throw InputError(at.where(), "THRU without a grid point id before it");
+        const long long last = id_field(card.field(d + 1), "a grid point id after THRU", at);
+        if (last < first) throw InputError(at.where(), "a THRU range that ends before it starts");
+        ranges.back().second = last;
+        ++d;
       }
-      for (std::size_t d = 2; d < fields; ++d) add(d);
+      break;
+    case Grids::Pairs:
+      for (std::size_t d = 0; d < fields; ++d) {
+        const std::string f = upper(card.field(d));
+        if (f == "ALPHA" || f == "TREF") break;
+        if (d % 8 == 1 || d % 8 == 3 || d % 8 == 5) add(d);
+      }
       break;
     case Grids::Rbe2:
       // EID GN CM GM1 GM2 ...: the dependent grids run to the first field

@@ -4,6 +4,7 @@
 // must keep unless they are tets, and loads and constraints, whose grid
 // points it must keep. Where each names its grid points is given in data
 // fields (nastran_cards.hpp: 0 for Nastran's field 2 of the first line).
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,7 +17,8 @@ enum class Grids {
   Run,        // data fields first .. first + count - 1 (elements' connectivity)
   Listed,     // the data fields in `at`
   EveryLine,  // data fields 1 and 4 of each logical line (MPC's terms)
-  Spc1,       // data fields 2 on, or "G1 THRU G2" there
+  IdList,     // every field from `first` on, "G1 THRU G2" ranges among them (SPC1, ASET1, ...)
+  Pairs,      // fields 1, 3 and 5 of each logical line, past "UM" too, up to ALPHA or TREF (RBE1)
   Rbe2,       // field 1, then the whole numbers from field 3 on
   Rbe3,       // field 2, then each weight's grids and those after UM
 };
@@ -28,13 +30,25 @@ struct EntryType {
   int shape_grids;         // the shape's node count: more grids (a higher-order solid) only pin
   bool has_pid;            // data field 1 is its PID
   Grids grids;
-  int first = 0, count = 0;  // Run
-  int at[4] = {-1, -1, -1, -1};  // Listed; -1 ends
+  int first = 0, count = 0;  // Run; IdList: first
+  int at[6] = {-1, -1, -1, -1, -1, -1};  // Listed; -1 ends
+  // A data field that names a grid point too where it holds a whole number
+  // (the orientation node G0 of a bar, beam, bush or gap), or -1.
+  int orientation = -1;
 };
 
 // The type of an entry name (upper case, as Card::name), or nullptr when
 // the reader does not read it (GRID and CTETRA are read on their own).
 const EntryType* entry_type(const std::string& name);
+
+// SPOINT and EPOINT: ids of scalar points, which loads, constraints and
+// scalar elements name beside grid points.
+const EntryType& scalar_point_type();
+
+// Entry types that name grid points in ways the reader does not read
+// (welds, fasteners, splines, heat transfer boundaries, ...): their nodes
+// are not pinned, which the reader says.
+bool names_grids_unread(const std::string& name);
 
 // Whether an entry of this name is part of a mesh (GRID, CTETRA, another
 // element): none comes before BEGIN BULK, so a deck that opens with one
@@ -45,12 +59,21 @@ bool is_mesh_entry(const std::string& name);
 // last) (a single id is (id, id)); blank fields and 0 (no grid point, as in
 // a grounded spring) are left out. InputError at the card's line for a
 // field that is not an id.
+// Scalar points (SPOINT, EPOINT) are read with the IdList layout from field
+// 0 (scalar_point_type()); grid_ranges gives their ids.
 std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, const Card& card,
-                                                         const std::string& where);
+                                                         const BulkCards& cards);
+
+// A line of the deck, for a message made only when one is needed.
+struct Place {
+  const BulkCards& cards;
+  std::uint32_t mark;
+  std::string where() const { return cards.where(mark); }
+};
 
 // A field that must hold a positive id (an element or grid point id);
-// InputError at `where` naming `what` otherwise. A blank field is 0 where
+// InputError at `at` naming `what` otherwise. A blank field is 0 where
 // `blank_ok`.
-long long id_field(const std::string& field, const char* what, const std::string& where, bool blank_ok = false);
+long long id_field(const std::string& field, const char* what, const Place& at, bool blank_ok = false);
 
 }  // namespace tetsmooth::nastran

@@ -9,62 +9,78 @@
 // free field (commas), continued on lines that start with '+', '*', ',' or a
 // blank; '$' starts a comment. INCLUDE 'file' is read in place (a relative
 // path from the deck's directory; included_lines.hpp). Lines before BEGIN
-// BULK (executive and case
-// control) and after ENDDATA are kept and not read; a file without BEGIN
-// BULK is bulk data throughout (Gmsh writes so). Reals take every Nastran
-// form ("1.5", ".5", "5.", "1.5E-3", "1.5-3", "1.5D-3"), and whole numbers
-// too, as Gmsh writes some coordinates.
+// BULK (executive and case control) and after ENDDATA are kept and not read;
+// a file without BEGIN BULK is bulk data throughout (Gmsh writes so). Reals
+// take every Nastran form ("1.5", ".5", "5.", "1.5E-3", "1.5-3", "1.5D-3"),
+// and whole numbers too, as Gmsh writes some coordinates.
 //
 // Reading:
 //  * GRID ID CP X1 X2 X3 CD PS SEID: ids any positive whole numbers, kept as
-//    FileExtras::node_tags; blank coordinates are 0. CP must be blank or 0
-//    (nodes in other coordinate systems are refused); a node with a PS
-//    (permanent single-point constraint) is pinned.
+//    FileExtras::node_tags; blank coordinates are 0. CP must be 0 (blank
+//    takes GRDSET's CP, which must then be 0 too: nodes in other coordinate
+//    systems are refused); a node with a PS (its own, or GRDSET's where its
+//    own is blank: a permanent single-point constraint) is pinned.
 //  * CTETRA EID PID G1..G4, or G1..G10 with the midside nodes in kTetEdges
-//    order (Nastran's, as VTK's). Ids kept as tet_element_tags; the PID is
-//    the region tag (FileExtras::tet_tags; a blank PID is 0).
+//    order (Nastran's, as VTK's); meshio 5's CTETRA_ too, with a note. Ids
+//    kept as tet_element_tags; the PID is the region tag
+//    (FileExtras::tet_tags; a blank PID is 0). Nastran takes a tet's grid
+//    points in either handedness: one listed left-handed is read with G2
+//    and G3 swapped (and its midside nodes with them), with a note.
 //  * Other elements pin their grid points. Those with a shape in other
 //    formats pass through (PassThroughBlock, tag = PID where they have one):
 //    CTRIA3/CTRIAR (triangle), CTRIA6 (triangle6), CQUAD4/CQUADR/CSHEAR
-//    (quad), CROD/CTUBE/CBAR/CBEAM/CBUSH/CGAP/CVISC/CONROD (line),
-//    CONM1/CONM2 (vertex), CHEXA, CPENTA, CPYRAM/CPYRA with corner nodes only
-//    (hexahedron, wedge, pyramid). The others only pin and stay in the deck:
-//    CQUAD8, higher-order CHEXA/CPENTA/CPYRAM, CELAS1/2, CDAMP1/2, RBAR, RBE2,
-//    RBE3.
-//  * Loads and constraints pin the grid points they name: SPC, SPC1 (with
-//    THRU ranges), SPCD, FORCE, FORCE1, FORCE2, MOMENT, MOMENT1, MOMENT2,
-//    PLOAD, DAREA, SUPORT, SUPORT1 and MPC; and the comment lines
-//    "$TETSMOOTH PINNED <id> ..." that the writer leaves for pins nothing
-//    else keeps. Entries of other types are kept and not read.
+//    (quad), CROD/CTUBE/CBAR/CBEAM/CBUSH/CBUSH1D/CBUSH2D/CGAP/CVISC/CONROD
+//    (line; the orientation node G0 of a bar, beam, bush or gap is pinned
+//    too), CONM1/CONM2 (vertex), CHEXA, CPENTA, CPYRAM/CPYRA with corner
+//    nodes only (hexahedron, wedge, pyramid). The others only pin and stay
+//    in the deck: CQUAD8, CQUAD, CTRIAX6, higher-order solids,
+//    CELAS1/2, CDAMP1/2, CMASS1/2, PLOTEL, RBAR, RROD, RJOINT, RTRPLT,
+//    RBE1, RBE2, RBE3 (nastran_entry_types.cpp lays out where each names
+//    its grid points).
+//  * Loads, constraints and the points that give them a direction pin the
+//    grid points they name: SPC, SPC1 (with THRU ranges), SPCD, FORCE,
+//    FORCE1/2 and MOMENT, MOMENT1/2 (with their direction's points),
+//    RFORCE, PLOAD, DAREA, ACCEL1, SUPORT, SUPORT1, MPC, CORD1R/C/S, the
+//    analysis sets ASET, BSET, CSET, QSET, OMIT and their ...1 forms; and
+//    the comment lines "$TETSMOOTH PINNED <id> ..." that the writer leaves
+//    for pins nothing else keeps. Scalar points (SPOINT, EPOINT) that these
+//    name are no grid points and pin nothing. Entries of other types are
+//    kept and not read; of those, the ones known to name grid points
+//    (CWELD, CFAST, RSPLINE, GENEL, ...) get a note that their nodes may
+//    move.
 //  * Refused with the file's line: superelements (BEGIN SUPER, BEGIN BULK
-//    SUPER=), replicated entries ('=' lines), CP other than 0, ids defined
-//    twice, grid points that no GRID defines, CTETRA with other than 4 or 10
-//    grid points, and included files that cannot be read.
+//    SUPER=), replicated entries ('=' lines), CP other than 0, a value past
+//    the last field of a GRID or CTETRA (a line laid out wrong: a
+//    large-field GRID continued in small field), ids defined twice, grid
+//    points that no GRID defines, CTETRA with other than 4 or 10 grid
+//    points, and included files that cannot be read.
 //  * The deck is kept in FileExtras::raw_sections, in order: "nastran:text"
 //    bodies as read (lines end in '\n') and "nastran:grids" bodies, the
-//    text of runs of GRID entries (with the comments between them); then
-//    "nastran:deck" ("<nodes> <tets>", what the deck describes),
-//    "nastran:types" (the deck's entry types other than GRID and the
-//    elements, for a note when another format drops them) and
-//    "nastran:uncarried" (the element types that only pin, for the same
-//    note) and "nastran:includes" (the files INCLUDE read).
+//    text of runs of GRID entries; then "nastran:deck" ("<nodes> <tets>",
+//    what the deck describes), "nastran:types" (the deck's entry types other
+//    than GRID and the elements, for a note when another format drops
+//    them), "nastran:uncarried" (the element types that only pin, for the
+//    same note) and "nastran:includes" (the files INCLUDE read).
 //
 // Writing: a mesh read from a deck is written as that deck, line for line,
 // but for the GRID entries of nodes whose coordinates changed: those are
 // written in large field (GRID* and a '*' line) with their CP, CD, PS and
-// SEID as read and each coordinate in 16 characters, the closest of its
-// decimal forms that fit (14 significant digits or more for sizes from 1 to
-// 1e13, 10 or more where the exponent has two digits). A node that did
-// not move keeps its GRID text byte for byte. Line ends become '\n', and
-// included files are written in place of their INCLUDE lines. The
-// mesh must still have the deck's node and tet counts.
+// SEID as read, after the entry's comments (inline ones as lines of their
+// own), and each coordinate in 16 characters, the closest of its decimal
+// forms that fit (14 significant digits or more for sizes from 1 to 1e13,
+// 10 or more where the exponent has two digits). A node that did not move
+// keeps its GRID text byte for byte. Line ends become '\n', and included
+// files are written in place of their INCLUDE lines. The mesh must still
+// have the deck's node and tet counts.
 // Any other mesh is written as a new deck: "BEGIN BULK", GRID* entries,
-// CTETRA (PID = region tag; 0 as blank, negative tags as new positive ids),
-// the pass-through elements (CTRIA3, CTRIA6, CQUAD4, CROD, CONM2, CHEXA,
-// CPENTA, CPYRAM), "$TETSMOOTH PINNED" lines for pinned nodes that no element
-// pins, and ENDDATA. Node and element ids are the file's where they are
-// positive, distinct and at most 99,999,999, else 1, 2, ... in order.
+// CTETRA (PID = region tag; tags of 0 and below, and tets without one, as
+// new positive ids: nastran_new_pids), the pass-through elements (CTRIA3,
+// CTRIA6, CQUAD4, CROD, CONM2, CHEXA, CPENTA, CPYRAM), "$TETSMOOTH PINNED"
+// lines for pinned nodes that no element pins, and ENDDATA. Node and
+// element ids are the file's where they are positive, distinct and at most
+// 99,999,999, else 1, 2, ... in order.
 #include <iosfwd>
+#include <map>
 #include <string>
 
 #include "mesh/tet_mesh.hpp"
@@ -77,6 +93,11 @@ TetMesh read_nastran_file(const std::string& path);
 
 void write_nastran(const TetMesh& mesh, std::ostream& out);
 void write_nastran_file(const TetMesh& mesh, const std::string& path);
+
+// The PIDs a new deck gives region tags of 0 and below, and elements
+// without one (as tag 0): new ids above the largest tag, 0 first, then -1,
+// -2, ... (Nastran's PIDs are positive).
+std::map<int, int> nastran_new_pids(const TetMesh& mesh);
 
 // The file's own numbers that a new deck for `mesh` cannot keep (see
 // file_numbers.hpp): "node", "element", "node and element", or "".

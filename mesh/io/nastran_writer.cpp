@@ -2,13 +2,13 @@
 // comes back as it was read, the GRID entries of moved nodes rewritten; any
 // other mesh gets a new deck of its nodes, elements and pins.
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <ostream>
 #include <sstream>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/file_numbers.hpp"
-#include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/nastran_cards.hpp"
 #include "mesh/io/nastran_fields.hpp"
@@ -44,6 +44,11 @@ void write_grid(std::ostream& out, const nastran::Card& card, const double* xyz)
     out << card.text;
     return;
   }
+  // The entry's comments, those between its lines and those after its
+  // data, stay before it.
+  std::istringstream lines(card.text);
+  for (std::string line; std::getline(lines, line);)
+    if (const std::size_t dollar = line.find('$'); dollar != std::string::npos) out << line.substr(dollar) << '\n';
   std::vector<std::string> fields(card.fields.begin(), card.fields.begin() + 8);
   for (std::size_t c = 0; c < 3; ++c) fields[2 + c] = real_field(xyz[c], kLargeWidth);
   write_entry(out, "GRID", fields, true, 0);  // large field: no marker
@@ -89,10 +94,9 @@ const EntryName* entry_name_of(const std::string& kind) {
 
 std::string text_of(long long v) { return std::to_string(v); }
 
-// The PID of a region tag: blank for 0, a new positive id for a negative
-// tag (gmsh::negative_tag_renumbering, as MSH output numbers them).
+// The PID of a region tag: the tag where positive, else its new id
+// (nastran_new_pids).
 std::string pid_text(int tag, const std::map<int, int>& renumbered) {
-  if (tag == 0) return "";
   return text_of(tag > 0 ? tag : renumbered.at(tag));
 }
 
@@ -133,7 +137,7 @@ void write_pinned_comment(std::ostream& out, const TetMesh& mesh, const std::vec
 void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   const std::vector<long long> node_ids = numbers_or_positions(mesh.extras.node_tags, mesh.num_nodes(), kLargestId);
   const std::vector<long long> ids = element_numbers(mesh, kLargestId);
-  const std::map<int, int> renumbered = gmsh::negative_tag_renumbering(mesh.extras);
+  const std::map<int, int> renumbered = nastran_new_pids(mesh);
   out << "$ written by tetsmooth\nBEGIN BULK\n";
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
     std::vector<std::string> fields{text_of(node_ids[i]), ""};
@@ -144,8 +148,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   const std::vector<int>& tags = mesh.extras.tet_tags;
   index_t nodes[10];
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
-    std::vector<std::string> fields{text_of(ids[t]),
-                                    tags.size() == mesh.num_tets() ? pid_text(tags[t], renumbered) : ""};
+    std::vector<std::string> fields{text_of(ids[t]), pid_text(tags.size() == mesh.num_tets() ? tags[t] : 0, renumbered)};
     if (ten)
       file_tet10(mesh, t, kMidsidePlaces, nodes);
     else
@@ -160,7 +163,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
     const auto n = static_cast<std::size_t>(b.nodes_per_element);
     for (std::size_t e = 0; e < elements_in(b); ++e) {
       std::vector<std::string> fields{text_of(ids[first + e])};
-      if (entry.pid) fields.push_back(b.tags.size() == elements_in(b) ? pid_text(b.tags[e], renumbered) : "");
+      if (entry.pid) fields.push_back(pid_text(b.tags.size() == elements_in(b) ? b.tags[e] : 0, renumbered));
       for (std::size_t k = 0; k < n; ++k)
         fields.push_back(text_of(node_ids[static_cast<std::size_t>(b.connectivity[e * n + k])]));
       write_element(out, entry.name, ids[first + e], fields);
@@ -174,6 +177,26 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
 constexpr DeckWriter kWriter{"nastran", "Nastran", check_new_deck, write_deck, write_new_deck};
 
 }  // namespace
+
+std::map<int, int> nastran_new_pids(const TetMesh& mesh) {
+  long long largest = 0;
+  std::vector<int> others;  // tags of 0 and below; 0 for elements without one
+  const auto visit = [&](const std::vector<int>& tags, std::size_t elements) {
+    if (elements > 0 && tags.size() != elements) others.push_back(0);
+    for (int tag : tags) {
+      largest = std::max<long long>(largest, tag);
+      if (tag <= 0) others.push_back(tag);
+    }
+  };
+  visit(mesh.extras.tet_tags, mesh.num_tets());
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (entry_name_of(b.kind) != nullptr && entry_name_of(b.kind)->pid) visit(b.tags, elements_in(b));
+  std::sort(others.begin(), others.end(), std::greater<int>());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  std::map<int, int> renumbered;
+  for (int tag : others) renumbered[tag] = static_cast<int>(std::min<long long>(++largest, kLargestId));
+  return renumbered;
+}
 
 std::string nastran_numbers_lost(const TetMesh& mesh) {
   return has_kept_deck(mesh, "nastran") ? "" : numbers_lost(mesh, kLargestId);

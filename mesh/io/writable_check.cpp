@@ -305,6 +305,16 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back("negative region tags are written as new positive ones (" + pairs +
                     "): MSH physical tags are positive");
   }
+  if (f == MeshFormat::Nastran && !nastran) {
+    bool explicit_tag = std::any_of(e.tet_tags.begin(), e.tet_tags.end(), [](int t) { return t <= 0; });
+    for (const PassThroughBlock& b : e.blocks)
+      explicit_tag = explicit_tag || std::any_of(b.tags.begin(), b.tags.end(), [](int t) { return t <= 0; });
+    std::string pairs;
+    for (const auto& [from, to] : nastran_new_pids(mesh))
+      pairs += (pairs.empty() ? "" : ", ") + std::to_string(from) + " as " + std::to_string(to);
+    if (explicit_tag)
+      notes.push_back("region tags of 0 and below are written as new PIDs (" + pairs + "): Nastran's PIDs are positive");
+  }
   if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
     const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));
     notes.push_back(f == MeshFormat::Msh22

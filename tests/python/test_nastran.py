@@ -294,6 +294,14 @@ class GmshDecks(NastranCase):
                 np.testing.assert_allclose(np.array([nodes[n] for n in xyz]), np.array(list(xyz.values())),
                                            rtol=0, atol=2e-10)
 
+    def test_gmsh_reads_a_new_deck_of_a_mesh_without_regions(self):
+        # Gmsh 4.8 misreads a CTETRA with a blank PID: such tets get one.
+        out = self.path("lattice.bdf")
+        run("generate", "lattice-3", "-o", out)
+        nodes, elements = gmsh_read(self.gmsh, out)
+        self.assertEqual(elements, {4: 6 * 3 ** 3})
+        self.assertEqual(len(nodes), 4 ** 3)
+
 
 class HandWrittenDecks(NastranCase):
     SCRATCH_PREFIX = "tetsmooth_test_nastran_hand_"

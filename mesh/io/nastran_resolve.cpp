@@ -1,0 +1,126 @@
+// The Nastran deck reader's second half (nastran_reader.hpp): once every
+// entry is read, ids become indices, and the mesh gets its tets (turned
+// right-handed), pass-through blocks, regions and pins, by the rules of
+// nastran_io.hpp.
+#include <algorithm>
+#include <array>
+
+#include "mesh/errors.hpp"
+#include "mesh/second_order.hpp"
+#include "mesh/tet_quality.hpp"
+#include "mesh/io/nastran_reader.hpp"
+
+namespace tetsmooth::nastran {
+namespace {
+
+// CTETRA lists its midside nodes in kTetEdges order, after the corners.
+constexpr MidsidePlaces kMidsidePlaces = {4, 5, 6, 7, 8, 9};
+
+// A tet turned round by swapping corners 1 and 2 has its edges 0 and 2, and
+// 4 and 5, swapped (kTetEdges).
+constexpr std::array<int, 6> kTurnedEdges = {2, 1, 0, 3, 5, 4};
+
+bool blank_or_zero(const std::string& field) { return field.empty() || field == "0"; }
+
+}  // namespace
+
+index_t DeckReader::node_of(long long id, const IdIndex& nodes, std::uint32_t mark, long long element) const {
+  const long long n = nodes.find(id);
+  if (n < 0)
+    throw InputError(cards_.where(mark), "element " + std::to_string(element) + " names grid point " +
+                                             std::to_string(id) + ", which no GRID defines");
+  return static_cast<index_t>(n);
+}
+
+bool DeckReader::scalar_point(long long id) const {
+  return std::any_of(scalar_points_.begin(), scalar_points_.end(),
+                     [id](const auto& range) { return range.first <= id && id <= range.second; });
+}
+
+std::size_t DeckReader::orient_tets() {
+  // Nastran takes a CTETRA's grid points in either order: one listed
+  // left-handed is turned round, as the mesh's tets are right-handed.
+  std::size_t turned = 0;
+  const auto at = [&](index_t n) {
+    const double* p = &mesh_.xyz[3 * static_cast<std::size_t>(n)];
+    return Vec3<double>{p[0], p[1], p[2]};
+  };
+  for (std::size_t t = 0; t < mesh_.num_tets(); ++t) {
+    index_t* c = &mesh_.tets[4 * t];
+    if (signed_volume6(at(c[0]), at(c[1]), at(c[2]), at(c[3])) >= 0) continue;
+    std::swap(c[1], c[2]);
+    if (!mesh_.midsides.empty()) {
+      std::array<index_t, 6> m;
+      std::copy_n(&mesh_.midsides[6 * t], 6, m.begin());
+      for (std::size_t e = 0; e < 6; ++e) mesh_.midsides[6 * t + e] = m[static_cast<std::size_t>(kTurnedEdges[e])];
+    }
+    ++turned;
+  }
+  return turned;
+}
+
+void DeckReader::resolve_pins(const IdIndex& nodes) {
+  // GRDSET's PS stands for a blank one.
+  const bool grdset_pins = !blank_or_zero(grdset_ps_);
+  std::vector<std::uint8_t> pinned(mesh_.num_nodes(), 0);
+  for (std::size_t i = 0; i < pinned.size(); ++i)
+    pinned[i] = (grid_bits_[i] & kPsGiven) != 0 || (grdset_pins && (grid_bits_[i] & kPsBlank) != 0);
+  mark_element_nodes(mesh_.extras.blocks, pinned);
+  std::vector<std::size_t> in_range;
+  for (const PinRef& ref : pin_refs_) {
+    if (ref.first == ref.last) {
+      const long long n = nodes.find(ref.first);
+      if (n >= 0)
+        pinned[static_cast<std::size_t>(n)] = 1;
+      else if (!scalar_point(ref.first))
+        throw InputError(cards_.where(ref.mark), std::string(ref.entry) + " names grid point " +
+                                                     std::to_string(ref.first) + ", which no GRID defines");
+      continue;
+    }
+    in_range.clear();  // THRU: grid points the range holds, those defined
+    nodes.append_range(ref.first, ref.last, 1, in_range);
+    for (std::size_t n : in_range) pinned[n] = 1;
+  }
+  if (std::find(pinned.begin(), pinned.end(), 1) != pinned.end()) mesh_.fixed = std::move(pinned);
+}
+
+void DeckReader::resolve() {
+  FileExtras& e = mesh_.extras;
+  if (!blank_or_zero(grdset_cp_) &&
+      std::any_of(grid_bits_.begin(), grid_bits_.end(), [](std::uint8_t b) { return (b & kCpBlank) != 0; }))
+    throw InputError(cards_.where(grdset_mark_),
+                     "GRDSET gives the GRIDs without a CP coordinate system " + grdset_cp_ +
+                         ": nodes in other coordinate systems than the basic one are not read");
+  const IdIndex nodes(e.node_tags), elements(element_ids_);
+  if (const auto twice = nodes.repeated())
+    throw InputError(cards_.where(node_marks_[*twice]),
+                     "grid point " + std::to_string(e.node_tags[*twice]) + " is defined a second time");
+  if (const auto twice = elements.repeated())
+    throw InputError(cards_.where(element_marks_[*twice]),
+                     "element id " + std::to_string(element_ids_[*twice]) + " is used a second time");
+  const auto each = static_cast<std::size_t>(tet_nodes_each_);
+  index_t tet[10];
+  for (std::size_t t = 0; t < tet_marks_.size(); ++t) {
+    for (std::size_t k = 0; k < each; ++k)
+      tet[k] = node_of(tet_grids_[each * t + k], nodes, tet_marks_[t], e.tet_element_tags[t]);
+    append_file_tet(mesh_, tet, each == 10, kMidsidePlaces);
+  }
+  if (const std::size_t turned = orient_tets(); turned > 0)
+    e.read_notes.push_back(std::to_string(turned) + " of the " + std::to_string(mesh_.num_tets()) +
+                           " CTETRA list their grid points left-handed, which Nastran takes: they are read turned "
+                           "round (G2 and G3 swapped), and the deck keeps them as written");
+  for (const Others& o : others_) {
+    PassThroughBlock& block = e.blocks.emplace_back();
+    block.kind = o.kind;
+    block.nodes_per_element = o.nodes;
+    block.element_tags = o.ids;
+    if (o.tagged) block.tags = o.pids;
+    const auto n = static_cast<std::size_t>(o.nodes);
+    for (std::size_t i = 0; i < o.ids.size(); ++i)
+      for (std::size_t k = 0; k < n; ++k)
+        block.connectivity.push_back(node_of(o.grids[i * n + k], nodes, o.marks[i], o.ids[i]));
+  }
+  resolve_pins(nodes);
+}
+
+}  // namespace tetsmooth::nastran

@@ -301,6 +301,11 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("device.inp")); }, "device.inp")
                 .find("device.inp:1: *INCLUDE: /dev/null is not a regular file"),
             std::string::npos);
+  // An error names the keyword's first line.
+  std::ofstream(dir.file("split.inp")) << "*HEADING\n*INCLUDE,\n INPUT=missing.inp\n";
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("split.inp")); }, "split.inp")
+                .find("split.inp:2: *INCLUDE: "),
+            std::string::npos);
   std::ofstream(dir.file("lost.inp")) << "*HEADING\n*INCLUDE, INPUT=missing.inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("lost.inp")); }, "lost.inp")
                 .find("lost.inp:2: *INCLUDE: " + dir.file("missing.inp") +

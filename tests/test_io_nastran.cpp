@@ -5,9 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 #include <sstream>
 #include <string>
@@ -205,7 +207,10 @@ TEST(NastranIo, SecondOrderTetsAndOtherShapes) {
   EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{4}));
   EXPECT_EQ(*raw_section(mesh.extras, "nastran:uncarried"), "CHEXA");
   EXPECT_EQ(read_error(replaced(deck, small({"", "7", "8", "9", "10"}), small({"", "7", "8", "9"}))),
-            "t.bdf:16: CTETRA 1 lists 9 grid points: a CTETRA has 4, or 10 with its midside nodes");
+            "t.bdf:16: CTETRA 1 lists 9 grid points: a CTETRA has G1 to G4, or G1 to G10 with its midside nodes");
+  EXPECT_EQ(read_error("BEGIN BULK\nCTETRA,1,1,1,2,3,,4\n"),
+            "t.bdf:2: CTETRA 1 lists 4 grid points with a gap before G4: a CTETRA has G1 to G4, or G1 to G10 with its "
+            "midside nodes");
 }
 
 TEST(NastranIo, ANewDeckReadsBackAsWritten) {
@@ -239,8 +244,13 @@ TEST(NastranIo, ANewDeckReadsBackAsWritten) {
   EXPECT_EQ(back.extras.blocks[1].kind, "vertex");
   EXPECT_EQ(back.fixed, mesh.fixed);
   EXPECT_EQ(output_losses(mesh, "out.bdf"),
-            (std::vector<std::string>{"region tags of 0 and below are written as new PIDs (-2 as 7, 0 as 6): Nastran's "
-                                      "PIDs are positive"}));
+            (std::vector<std::string>{"region tags that are no PIDs are written as new ones (-2 as 7, 0 as 6): "
+                                      "Nastran's PIDs are positive, of at most 8 digits"}));
+  // New ids are ids no tag holds, past the largest id from 1 on; tags past
+  // it get new ones too.
+  TetMesh big = testing::cube_grid(1);
+  big.extras.tet_tags = {99999999, 0, -1, 1, 2147483647, 3};
+  EXPECT_EQ(nastran_new_pids(big), (std::map<int, int>{{0, 2}, {-1, 4}, {2147483647, 5}}));
   // A mesh without regions gets PID 1, which Gmsh needs.
   EXPECT_NE(write_text(testing::cube_grid(1)).find("CTETRA         1       1"), std::string::npos);
 }
@@ -276,6 +286,12 @@ TEST(NastranIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   EXPECT_NE(testing::input_error_message([&] { read_nastran_file(dir.file("lost.bdf")); }, "lost.bdf")
                 .find(dir.file("lost.bdf") + ":2: INCLUDE: " + dir.file("missing.bdf") + ": cannot open"),
             std::string::npos);
+  // An INCLUDE right after an entry and a comment, indented, and without a
+  // space before its name.
+  std::ofstream(dir.file("mesh/model.bdf")) << "GRID,1,,0.,0.,0.\n$ the rest\n  INCLUDE'grids2.bdf'\n"
+                                               "CTETRA,1,1,1,2,3,4\n";
+  std::ofstream(dir.file("grids2.bdf")) << "GRID,2,,1.,0.,0.\nGRID,3,,0.,1.,0.\nGRID,4,,0.,0.,1.\n";
+  EXPECT_EQ(read_nastran_file(dir.file("job.bdf")).num_nodes(), 4u);
   std::ofstream(dir.file("open.bdf")) << "BEGIN BULK\nINCLUDE 'never\n";
   EXPECT_EQ(testing::input_error_message([&] { read_nastran_file(dir.file("open.bdf")); }, "open.bdf"),
             dir.file("open.bdf") + ":2: INCLUDE: the file name's closing quote is missing");
@@ -310,7 +326,11 @@ TEST(NastranIo, PointsThatGiveDirectionsOrSetsApartArePinned) {
            small({"ASET", "4", "3", "5", "3"}),
            small({"CMASS2", "9", "1.", "5", "1"}),
            small({"PLOTEL", "9", "1", "5"}),
-           small({"RBE1", "9", "1", "123", "2", "123", "3", "123"}) + small({"", "UM", "5", "123"}),
+           small({"RBE1", "9", "1", "123", "2", "123", "3", "123"}) + small({"", "UM", "5", "123", "1.-5"}),
+           small({"RBE1", "9", "1", "123456"}) + small({"", "UM", "5", "123", "1.-5"}),  // ALPHA after the pairs
+           small({"RBE3", "9", "", "4", "123", "1.", "123", "1", "2"}) + small({"", "5", "ALPHA", "1.-5"}),
+           small({"USET1", "U1", "123", "5"}),
+           small({"RBAR1", "9", "1", "5", "123"}),
            small({"GRDSET", "", "", "", "", "", "", "3"}),            // a PS for blank ones
        })
     EXPECT_TRUE(node5_pinned(entries)) << entries;
@@ -376,6 +396,24 @@ TEST(NastranIo, DataPastAnEntrysFieldsIsRefusedNotDropped) {
             "CTETRA_ entries (meshio 5's name for 10-node tets, which Nastran does not know) were read as CTETRA");
 }
 
+TEST(NastranIo, GridFieldsTheWriterCopiesAreChecked) {
+  EXPECT_EQ(read_error(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}), "GRID,5,,.3,.2,.1,,12x\n")),
+            "t.bdf:6: GRID 5: expected the components of a permanent constraint (PS: digits 1 to 6), found '12x'");
+  EXPECT_EQ(read_error(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}), "GRID,5,,.3,.2,.1,1.5\n")),
+            "t.bdf:6: GRID 5: expected a coordinate system id (CD), found '1.5'");
+  // Ids with leading zeros, longer than a field, are written plain.
+  TetMesh mesh = read_text(
+      replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}), "GRID,0000000000000000005,,.3,.2,.1,0000000000000000007\n"));
+  mesh.xyz[3 * 4] = 0.25;
+  const TetMesh back = read_text(write_text(mesh));
+  EXPECT_EQ(back.xyz[3 * 4], 0.25);
+  EXPECT_TRUE(back.fixed.empty());
+  // Stray carriage returns are blanks, not entries that take the next line.
+  const TetMesh spc = read_text(replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\nSPC1    1       123     5\r\r\n\r\r\n"));
+  EXPECT_EQ(spc.fixed[4], 1);
+  EXPECT_EQ(write_text(spc), replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\nSPC1    1       123     5\n\n"));
+}
+
 TEST(NastranIo, AMovedGridKeepsItsComments) {
   TetMesh mesh = read_text(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}),
                                     "GRID*   " + wide("5") + wide("") + wide(".3") + wide(".2") +
@@ -386,6 +424,13 @@ TEST(NastranIo, AMovedGridKeepsItsComments) {
                       "\n*       " + wide(".1") + "\n"),
             std::string::npos)
       << text;
+  // A comment inside the entry that would read as a pin line on its own is
+  // marked off.
+  mesh = read_text(replaced(kStar, small({"GRID", "5", "", ".3", ".2", ".1"}),
+                            "GRID,5,,.3,.2,.1 $TETSMOOTH PINNED 0.\n"));
+  mesh.xyz[3 * 4] = 0.25;
+  EXPECT_NE(write_text(mesh).find("\n$$TETSMOOTH PINNED 0.\nGRID*"), std::string::npos);
+  EXPECT_TRUE(read_text(write_text(mesh)).fixed.empty());
 }
 
 TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
@@ -408,19 +453,28 @@ TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
   EXPECT_EQ(nastran::real_field(3, 8), "3.");
   EXPECT_EQ(nastran::real_field(1.5e-7, 8), "1.5E-7");
   EXPECT_EQ(nastran::real_field(1e20, 8), "1.E20");
+  // Any double fits, the largest and the smallest too; the relative error
+  // bounds of nastran_fields.hpp hold.
+  const auto check = [](double value, std::size_t width, double relative) {
+    const std::string text = nastran::real_field(value, width);
+    double back = 0;
+    ASSERT_LE(text.size(), width) << value;
+    ASSERT_TRUE(nastran::parse_real_field(text, back)) << value << " as '" << text << "'";
+    EXPECT_NE(text.find('.'), std::string::npos) << text;
+    EXPECT_LE(std::fabs(back - value), std::fabs(value) * relative) << value << " " << text;
+  };
+  for (double extreme : {DBL_MAX, -DBL_MAX, DBL_MIN, -DBL_MIN, 4.9e-324, -4.9e-324, 1.2345678901234567e300}) {
+    check(extreme, 8, 0.5);
+    check(extreme, 16, 5e-9);
+  }
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> mantissa(-1, 1);
-  std::uniform_int_distribution<int> power(-30, 30);
-  for (int i = 0; i < 2000; ++i) {
-    const double value = mantissa(rng) * std::pow(10.0, power(rng));
-    for (std::size_t width : {8u, 16u}) {
-      const std::string text = nastran::real_field(value, width);
-      double back = 0;
-      ASSERT_LE(text.size(), width) << value;
-      ASSERT_TRUE(nastran::parse_real_field(text, back)) << text;
-      EXPECT_NE(text.find('.'), std::string::npos) << text;
-      EXPECT_LE(std::fabs(back - value), std::fabs(value) * (width == 16 ? 6e-10 : 6e-2)) << value << " " << text;
-    }
+  std::uniform_real_distribution<double> mantissa(-10, 10);
+  std::uniform_int_distribution<int> power(-300, 300);
+  for (int i = 0; i < 4000; ++i) {
+    const int p = i % 2 == 0 ? power(rng) : power(rng) / 30;  // half of them near 1
+    const double value = mantissa(rng) * std::pow(10.0, p);
+    check(value, 16, std::abs(p) < 13 && std::fabs(value) >= 1 ? 5e-14 : std::abs(p) < 99 ? 5e-10 : 5e-9);
+    check(value, 8, std::abs(p) < 99 ? 5e-2 : 0.5);
   }
 }
 
@@ -466,6 +520,7 @@ TEST(NastranIo, FormatByNameAndWhatOtherFormatsLose) {
   const std::vector<std::string> to_msh = output_losses(mesh, "out.msh");
   ASSERT_EQ(to_msh.size(), 2u);
   EXPECT_EQ(to_msh[0], "1 pinned node will not be pinned in the msh41 output, so a later run may move it");
+  EXPECT_EQ(to_msh[1], "the rest of the Nastran deck (PSOLID, SPC1) will not be written: msh41 holds the mesh alone");
   TetMesh lines = testing::cube_grid(1);
   lines.extras.blocks.push_back(PassThroughBlock{"line3", 3, {}, {}, {}, {}});
   try {

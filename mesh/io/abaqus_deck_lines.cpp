@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::abaqus {
 namespace {
@@ -86,12 +87,6 @@ std::string unquoted(std::string_view value) {
   return std::string(value);
 }
 
-std::string upper_case(std::string_view text) {
-  std::string out(text);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
 std::string normalized(std::string_view name) {
   std::string out = upper_case(name);
   out.erase(std::remove_if(out.begin(), out.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }),
@@ -165,7 +160,7 @@ void DeckLines::include(const Keyword& kw) {
   const std::string* input = kw.param("INPUT");
   std::string file = input == nullptr ? "" : unquoted(*input);
   if (file.empty()) fail("*INCLUDE without INPUT=file");
-  lines_.include(std::move(file), "*INCLUDE");
+  lines_.include(std::move(file), "*INCLUDE", mark_);
 }
 
 bool DeckLines::next() {

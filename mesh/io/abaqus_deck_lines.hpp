@@ -47,9 +47,6 @@ std::vector<std::string_view> split_fields(std::string_view line);
 // Whether a data line ends with a comma (an element line that goes on).
 bool ends_with_comma(std::string_view line);
 
-// Upper case, as Abaqus compares names and as its manuals write them.
-std::string upper_case(std::string_view text);
-
 // How Abaqus compares keyword and parameter names: upper case, spaces
 // removed.
 std::string normalized(std::string_view name);

@@ -1,6 +1,7 @@
 #include "mesh/io/abaqus_element_types.hpp"
 
 #include "mesh/io/abaqus_deck_lines.hpp"
+#include "mesh/io/text_lines.hpp"
 
 #include <cctype>
 #include <string_view>

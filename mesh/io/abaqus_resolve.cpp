@@ -18,11 +18,6 @@ namespace {
 // The set of the node pins that the writer leaves (abaqus_io.hpp).
 constexpr const char* kPinnedSet = "TETSMOOTH_PINNED";
 
-std::string joined(const std::vector<std::string>& items) {
-  std::string list;
-  for (const std::string& item : items) list += (list.empty() ? "" : ", ") + item;
-  return list;
-}
 
 }  // namespace
 

@@ -13,6 +13,7 @@
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/number_text.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -49,7 +50,7 @@ constexpr long long kLargestNumber = std::numeric_limits<long long>::max();
 // The ELSET= name of elements of one tag: REGION_4, TRIANGLE_5, REGION_M2
 // for -2 (abaqus_regions reads the number back).
 std::string element_set_name(const std::string& prefix, int tag) {
-  return abaqus::upper_case(prefix) +
+  return upper_case(prefix) +
          (tag < 0 ? "_M" + std::to_string(-static_cast<long long>(tag)) : "_" + std::to_string(tag));
 }
 

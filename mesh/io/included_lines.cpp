@@ -39,7 +39,7 @@ bool IncludedLines::next(std::string& out) {
       ++s.line;
       ++lines_read_;
       if (s.line == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);  // a UTF-8 byte order mark
-      if (!out.empty() && out.back() == '\r') out.pop_back();
+      while (!out.empty() && out.back() == '\r') out.pop_back();
       return true;
     }
     if (s.in->bad()) throw InputError(s.path, "read error");
@@ -49,8 +49,8 @@ bool IncludedLines::next(std::string& out) {
   return false;
 }
 
-void IncludedLines::include(std::string file, const char* statement) {
-  const std::string at = where();
+void IncludedLines::include(std::string file, const char* statement, std::uint32_t mark) {
+  const std::string at = where_of(mark);
   const auto fail = [&](const std::string& what) { throw InputError(at, std::string(statement) + ": " + what); };
   if (file.empty()) fail("no file named");
   std::replace(file.begin(), file.end(), '\\', '/');

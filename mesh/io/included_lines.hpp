@@ -2,8 +2,8 @@
 // The lines of a solver's input deck and of the files it includes (Abaqus's
 // *INCLUDE, Nastran's INCLUDE), in reading order, each with a 4-byte mark
 // that gives back its "file:line" for a message once the deck is read (not
-// a public API). Line ends ("\n", "\r\n") and a UTF-8 byte order mark at the
-// start of a file are not part of a line.
+// a public API). Line ends ("\n", "\r\n", and any more '\r' before them) and
+// a UTF-8 byte order mark at the start of a file are not part of a line.
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -26,10 +26,11 @@ class IncludedLines {
   bool next(std::string& out);
   // Lines come from `file` (as the deck writes it; '\\' read as '/') until
   // it ends, then from the file that named it again. `statement` names the
-  // include in messages ("*INCLUDE"). InputError at the current line for a
-  // file that cannot be opened, is no regular file, includes itself
-  // through the files that include it, or is nested more than 64 deep.
-  void include(std::string file, const char* statement);
+  // include in messages ("*INCLUDE"), `mark` its (first) line. InputError
+  // there for a file that cannot be opened, is no regular file, includes
+  // itself through the files that include it, or is nested more than 64
+  // deep.
+  void include(std::string file, const char* statement, std::uint32_t mark);
 
   // The mark of the line next() gave last, and the "file:line" of a mark.
   std::uint32_t mark() const { return lines_read_; }

@@ -13,22 +13,31 @@ namespace {
 
 constexpr std::size_t kFixedColumns = 80;  // Nastran ignores what a fixed-format line has past column 80
 
+// Blanks: a stray '\r' (a line end of another system) among them.
+constexpr const char* kBlanks = " \t\r";
+
 std::string trimmed(std::string_view s) {
-  const std::size_t first = s.find_first_not_of(" \t");
+  const std::size_t first = s.find_first_not_of(kBlanks);
   if (first == std::string_view::npos) return "";
-  return std::string(s.substr(first, s.find_last_not_of(" \t") + 1 - first));
+  return std::string(s.substr(first, s.find_last_not_of(kBlanks) + 1 - first));
 }
 
-std::string upper(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return s;
-}
-
-bool blank(const std::string& line) { return line.find_first_not_of(" \t") == std::string::npos; }
+bool blank(const std::string& line) { return line.find_first_not_of(kBlanks) == std::string::npos; }
 
 bool comment(const std::string& line) {
-  const std::size_t first = line.find_first_not_of(" \t");
+  const std::size_t first = line.find_first_not_of(kBlanks);
   return first != std::string::npos && line[first] == '$';
+}
+
+// Where the text after an INCLUDE statement's first word starts, or npos
+// for a line that is no INCLUDE (recognized by its first word, however
+// indented, as Nastran reads it).
+std::size_t include_name_at(const std::string& line) {
+  const std::size_t first = line.find_first_not_of(kBlanks);
+  if (first == std::string::npos || upper_case(std::string_view(line).substr(first, 7)) != "INCLUDE") return std::string::npos;
+  const std::size_t after = first + 7;
+  const bool word_ends = after == line.size() || !std::isalnum(static_cast<unsigned char>(line[after]));
+  return word_ends ? after : std::string::npos;
 }
 
 // A line's text before an inline '$' comment.
@@ -53,8 +62,8 @@ std::string tabs_expanded(std::string_view line) {
 std::string first_field(const std::string& line) {
   const std::string_view data = data_part(line);
   const std::size_t comma = data.find(',');
-  if (comma != std::string_view::npos) return upper(trimmed(data.substr(0, comma)));
-  return upper(trimmed(tabs_expanded(data.substr(0, 8)).substr(0, 8)));
+  if (comma != std::string_view::npos) return upper_case(trimmed(data.substr(0, comma)));
+  return upper_case(trimmed(tabs_expanded(data.substr(0, 8)).substr(0, 8)));
 }
 
 // A line that goes on with the entry before it.
@@ -89,8 +98,7 @@ bool BulkCards::read_line(Line& line) {
 void BulkCards::include(const Line& line) {
   // INCLUDE 'file', the quoted name going on over the next lines of the
   // file until its closing quote; or INCLUDE file.
-  const std::size_t word = upper(line.text).find("INCLUDE");
-  std::string name = trimmed(std::string_view(line.text).substr(word + 7));
+  std::string name = trimmed(std::string_view(line.text).substr(include_name_at(line.text)));
   if (!name.empty() && name.front() == '\'') {
     std::string more;
     while (name.find('\'', 1) == std::string::npos) {
@@ -99,7 +107,7 @@ void BulkCards::include(const Line& line) {
     }
     name = name.substr(1, name.find('\'', 1) - 1);
   }
-  lines_.include(name, "INCLUDE");
+  lines_.include(name, "INCLUDE", line.mark);
 }
 
 BulkCards::Kind BulkCards::take_text(Line line, bool bulk_comment) {
@@ -133,7 +141,7 @@ BulkCards::Kind BulkCards::next_undecided() {
   while (read_line(line)) {
     const std::string name = first_field(line.text);
     if (starts_with(name, "BEGIN")) {
-      const std::string all = upper(line.text);
+      const std::string all = upper_case(line.text);
       if (all.find("SUPER") != std::string::npos)
         fail(line.mark, "superelements are not read: give the model as one bulk data section");
       if (all.find("BULK") == std::string::npos)
@@ -145,7 +153,7 @@ BulkCards::Kind BulkCards::next_undecided() {
       part_ = Part::Bulk;
       return next();
     }
-    if (name == "INCLUDE") {
+    if (include_name_at(line.text) != std::string::npos) {
       include(line);
       continue;
     }
@@ -169,7 +177,7 @@ BulkCards::Kind BulkCards::next_undecided() {
 BulkCards::Kind BulkCards::next_bulk() {
   Line line;
   if (!read_line(line)) return Kind::End;
-  while (first_field(line.text) == "INCLUDE") {
+  while (include_name_at(line.text) != std::string::npos) {
     include(line);
     if (!read_line(line)) return Kind::End;
   }
@@ -197,7 +205,7 @@ BulkCards::Kind BulkCards::next_bulk() {
       held.push_back(std::move(next_line));
       continue;
     }
-    if (!continuation(next_line.text)) {
+    if (!continuation(next_line.text) || include_name_at(next_line.text) != std::string::npos) {
       ahead_.push_front(std::move(next_line));
       break;
     }
@@ -232,7 +240,7 @@ void BulkCards::add_line(const Line& line, bool first) {
       if (comma == std::string_view::npos) break;
       start = comma + 1;
     }
-    head = upper(fields.front());
+    head = upper_case(fields.front());
     fields.erase(fields.begin());
     large = first ? !head.empty() && head.back() == '*' : starts_with(head, "*");
     const std::size_t capacity = large ? 4 : 8;
@@ -245,7 +253,7 @@ void BulkCards::add_line(const Line& line, bool first) {
     std::string fixed = tabs_expanded(data);
     if (fixed.size() > kFixedColumns) fixed.resize(kFixedColumns);
     fixed.resize(kFixedColumns, ' ');
-    head = upper(trimmed(fixed.substr(0, 8)));
+    head = upper_case(trimmed(fixed.substr(0, 8)));
     large = first ? !head.empty() && head.back() == '*' : starts_with(head, "*");
     const std::size_t width = large ? 16 : 8;
     for (std::size_t k = 0; k < (large ? 4u : 8u); ++k) fields.push_back(trimmed(fixed.substr(8 + k * width, width)));

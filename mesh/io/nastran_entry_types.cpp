@@ -11,7 +11,9 @@
 namespace tetsmooth::nastran {
 namespace {
 
-constexpr bool kElement = true, kLoad = false, kPid = true, kNoPid = false;
+// An element, or an entry that only names grid points (a load, a
+// constraint, a set, a coordinate system).
+constexpr bool kElement = true, kNamesPoints = false, kPid = true, kNoPid = false;
 
 const EntryType kTypes[] = {
     // Elements whose shape other formats have.
@@ -31,8 +33,8 @@ const EntryType kTypes[] = {
     {"CBEAM", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
     {"CBUSH", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
     {"CONROD", kElement, "line", 2, kNoPid, Grids::Run, 1, 2},
-    {"CONM1", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
     {"CONM2", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
+    {"CONM1", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
     // Solids: their corners have a shape; with midside nodes they only pin.
     {"CHEXA", kElement, "hexahedron", 8, kPid, Grids::Run, 2, 20},
     {"CPENTA", kElement, "wedge", 6, kPid, Grids::Run, 2, 15},
@@ -50,6 +52,7 @@ const EntryType kTypes[] = {
     {"CMASS2", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
     {"PLOTEL", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
     {"RBAR", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
+    {"RBAR1", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
     {"RROD", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
     {"RJOINT", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, -1, -1, -1, -1}},
     {"RTRPLT", kElement, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, -1, -1, -1}},
@@ -58,50 +61,48 @@ const EntryType kTypes[] = {
     {"RBE3", kElement, nullptr, 0, kNoPid, Grids::Rbe3},
     // Loads, constraints, and the points that give a load or a coordinate
     // system its direction.
-    {"SPC", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
-    {"SPCD", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
-    {"SPC1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 2},
-    {"FORCE", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
-    {"MOMENT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
-    {"FORCE1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, -1, -1, -1}},
-    {"MOMENT1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, -1, -1, -1}},
-    {"FORCE2", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
-    {"MOMENT2", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
-    {"RFORCE", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
-    {"PLOAD", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 3, 4, 5, -1, -1}},
-    {"DAREA", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
-    {"ACCEL1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 8},
-    {"SUPORT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
-    {"SUPORT1", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 5, -1, -1, -1}},
-    {"MPC", kLoad, nullptr, 0, kNoPid, Grids::EveryLine},
-    {"CORD1R", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
-    {"CORD1C", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
-    {"CORD1S", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
+    {"SPC", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"SPCD", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"SPC1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 2},
+    {"FORCE", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"MOMENT", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"FORCE1", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, -1, -1, -1}},
+    {"MOMENT1", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, -1, -1, -1}},
+    {"FORCE2", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
+    {"MOMENT2", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
+    {"RFORCE", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"PLOAD", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 3, 4, 5, -1, -1}},
+    {"DAREA", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"ACCEL1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 8},
+    {"SUPORT", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"SUPORT1", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 5, -1, -1, -1}},
+    {"MPC", kNamesPoints, nullptr, 0, kNoPid, Grids::EveryLine},
+    {"CORD1R", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
+    {"CORD1C", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
+    {"CORD1S", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 2, 3, 5, 6, 7}},
     // Degrees of freedom an analysis sets apart (often a test's measured
     // points): ASET ID1 C1 ID2 C2 ..., ASET1 C G1 G2 ... (THRU too).
-    {"ASET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
-    {"BSET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
-    {"CSET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
-    {"QSET", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
-    {"OMIT", kLoad, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
-    {"ASET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
-    {"BSET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
-    {"CSET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
-    {"QSET1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
-    {"OMIT1", kLoad, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"ASET", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"BSET", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"CSET", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"QSET", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"OMIT", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {0, 2, 4, 6, -1, -1}},
+    {"ASET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"BSET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"CSET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"QSET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"OMIT1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"USET", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 5, -1, -1, -1}},
+    {"USET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 2},
+    {"TIC", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
 };
 
-const EntryType kScalarPoints{"SPOINT", kLoad, nullptr, 0, kNoPid, Grids::IdList, 0};
+const EntryType kScalarPoints{"SPOINT", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 0};
 
 // Entries that name grid points in layouts the reader does not follow.
 const char* const kUnread[] = {"CWELD",  "CFAST",  "CSEAM",  "RSPLINE", "GENEL",  "DMIG",    "BCGRID",
                                "TEMPBC", "CHBDYG", "CHBDYP", "CIFHEX",  "CIFPENT", "CHEXCZ", "CPENTCZ",
-                               "SPCR",   "RBE3D",  "CTRAX3", "CTRAX6",  "CQUADX", "CTRIAX"};
-
-std::string upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
+                               "SPCR",   "RBE3D",  "CTRAX3", "CTRAX6",  "CQUADX", "CTRIAX", "RSSCON"};
 
 bool whole_number(const std::string& field) {
   long long v = 0;
@@ -117,6 +118,22 @@ const EntryType* entry_type(const std::string& name) {
 }
 
 const EntryType& scalar_point_type() { return kScalarPoints; }
+
+std::optional<std::string> pinned_comment_ids(const std::string& line) {
+  constexpr std::string_view kWords = "TETSMOOTH PINNED";
+  const std::size_t dollar = line.find_first_not_of(" \t");
+  if (dollar == std::string::npos || line[dollar] != '$') return std::nullopt;
+  const std::size_t start = line.find_first_not_of(" \t", dollar + 1);
+  if (start == std::string::npos || upper_case(std::string_view(line).substr(start, kWords.size())) != kWords)
+    return std::nullopt;
+  return line.substr(start + kWords.size());
+}
+
+const EntryType* entry_type_of_kind(const std::string& kind) {
+  for (const EntryType& t : kTypes)
+    if (t.kind != nullptr && kind == t.kind) return &t;
+  return nullptr;
+}
 
 bool names_grids_unread(const std::string& name) {
   return std::find(std::begin(kUnread), std::end(kUnread), name) != std::end(kUnread);
@@ -139,13 +156,13 @@ long long id_field(const std::string& field, const char* what, const Place& at, 
 }
 
 std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, const Card& card,
-                                                         const BulkCards& cards) {
+                                                         const BulkCards& cards, const char* what) {
   const Place at{cards, card.mark};
   std::vector<std::pair<long long, long long>> ranges;
   const auto add = [&](std::size_t d) {
     const std::string& f = card.field(d);
     if (f.empty() || f == "0") return;  // no grid point (a grounded spring, a blank MPC term)
-    const long long id = id_field(f, "a grid point id", at);
+    const long long id = id_field(f, what, at);
     ranges.emplace_back(id, id);
   };
   const std::size_t fields = card.fields.size();
@@ -163,7 +180,7 @@ std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, 
       break;
     case Grids::IdList:
       for (std::size_t d = static_cast<std::size_t>(type.first); d < fields; ++d) {
-        if (upper(card.field(d)) != "THRU") {
+        if (upper_case(card.field(d)) != "THRU") {
           add(d);
           continue;
         }
@@ -172,17 +189,20 @@ std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, 
         long long first = 0;
         if (d > static_cast<std::size_t>(type.first)) parse_integer(card.field(d - 1), first);
         if (first <= 0 || ranges.empty() || ranges.back() != std::make_pair(first, first))
-          throw InputError(at.where(), "THRU without a grid point id before it");
-        const long long last = id_field(card.field(d + 1), "a grid point id after THRU", at);
+          throw InputError(at.where(), std::string("THRU without ") + what + " before it");
+        const long long last = id_field(card.field(d + 1), what, at);
         if (last < first) throw InputError(at.where(), "a THRU range that ends before it starts");
         ranges.back().second = last;
         ++d;
       }
       break;
     case Grids::Pairs:
-      for (std::size_t d = 0; d < fields; ++d) {
-        const std::string f = upper(card.field(d));
-        if (f == "ALPHA" || f == "TREF") break;
+      // Up to the first field that is no whole number: ALPHA's value after
+      // the last pair (or the word ALPHA or TREF, as some write it).
+      for (std::size_t d = 1; d < fields; ++d) {
+        const std::string& f = card.field(d);
+        if (f.empty() || upper_case(f) == "UM") continue;
+        if (!whole_number(f)) break;
         if (d % 8 == 1 || d % 8 == 3 || d % 8 == 5) add(d);
       }
       break;
@@ -202,7 +222,7 @@ std::vector<std::pair<long long, long long>> grid_ranges(const EntryType& type, 
       add(2);
       enum { Weight, Component, Grid, UmGrid, UmComponent } next = Weight;
       for (std::size_t d = 4; d < fields; ++d) {
-        const std::string f = upper(card.field(d));
+        const std::string f = upper_case(card.field(d));
         if (f.empty()) continue;
         if (f == "UM") {
           next = UmGrid;

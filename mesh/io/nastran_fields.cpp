@@ -26,10 +26,13 @@ std::string nastran_form(std::string s) {
   return s + exponent;
 }
 
+// `value` as std::to_chars writes it in `format`, in Nastran's form; ""
+// where it does not fit the buffer (fixed notation of a huge value).
 template <typename... Format>
 std::string to_text(double value, Format... format) {
   char buf[64];
   const auto result = std::to_chars(buf, buf + sizeof buf, value, format...);
+  if (result.ec != std::errc()) return "";
   return nastran_form(std::string(buf, result.ptr));
 }
 
@@ -50,22 +53,36 @@ bool parse_real_field(std::string_view field, double& value) {
 }
 
 std::string real_field(double value, std::size_t width) {
-  std::string best = to_text(value);
-  if (best.size() <= width) return best;  // exact
+  const std::string shortest = to_text(value);
+  if (!shortest.empty() && shortest.size() <= width) return shortest;  // exact
+  std::string best;
   double best_error = INFINITY;
-  best.clear();
   const auto consider = [&](const std::string& candidate) {
     double back = 0;
-    if (candidate.size() > width || !parse_real_field(candidate, back)) return;
+    if (candidate.empty() || candidate.size() > width || !parse_real_field(candidate, back)) return;
     const double error = std::fabs(back - value);
     if (error < best_error || (error == best_error && candidate.size() < best.size())) {
       best_error = error;
       best = candidate;
     }
   };
-  for (int digits = 17; digits >= 0; --digits) {
-    consider(to_text(value, std::chars_format::scientific, digits));
-    consider(to_text(value, std::chars_format::fixed, digits));
+  // In each notation the most digits that fit, and one fewer where rounding
+  // lengthens the number (9.96E9 to 1.0E10 with one digit).
+  const auto most_digits = [&](auto format, int bare) {
+    const int digits = static_cast<int>(width) - bare;
+    for (int d = std::min(digits, 17); d >= std::max(digits - 1, 0); --d) consider(to_text(value, format, d));
+  };
+  // "d.E<exponent>", the sign: every double fits 8 columns so.
+  most_digits(std::chars_format::scientific, static_cast<int>(to_text(value, std::chars_format::scientific, 0).size()));
+  // The mantissa cut short instead of rounded, which never rounds past the
+  // largest double (1.8E308 would).
+  const std::string all = to_text(value, std::chars_format::scientific, 17);
+  if (const std::size_t e = all.find('E'); e != std::string::npos && all.size() - e < width)
+    consider(all.substr(0, width - (all.size() - e)) + all.substr(e));
+  if (std::fabs(value) < 1e15) {
+    // "123." or "0.", whose 0 goes where digits follow.
+    const std::string whole = to_text(value, std::chars_format::fixed, 0);
+    most_digits(std::chars_format::fixed, static_cast<int>(whole.size()) - (std::fabs(value) < 1 ? 1 : 0));
   }
   return best;
 }

@@ -34,14 +34,15 @@
 //    too), CONM1/CONM2 (vertex), CHEXA, CPENTA, CPYRAM/CPYRA with corner
 //    nodes only (hexahedron, wedge, pyramid). The others only pin and stay
 //    in the deck: CQUAD8, CQUAD, CTRIAX6, higher-order solids,
-//    CELAS1/2, CDAMP1/2, CMASS1/2, PLOTEL, RBAR, RROD, RJOINT, RTRPLT,
+//    CELAS1/2, CDAMP1/2, CMASS1/2, PLOTEL, RBAR, RBAR1, RROD, RJOINT, RTRPLT,
 //    RBE1, RBE2, RBE3 (nastran_entry_types.cpp lays out where each names
 //    its grid points).
 //  * Loads, constraints and the points that give them a direction pin the
 //    grid points they name: SPC, SPC1 (with THRU ranges), SPCD, FORCE,
 //    FORCE1/2 and MOMENT, MOMENT1/2 (with their direction's points),
 //    RFORCE, PLOAD, DAREA, ACCEL1, SUPORT, SUPORT1, MPC, CORD1R/C/S, the
-//    analysis sets ASET, BSET, CSET, QSET, OMIT and their ...1 forms; and
+//    analysis sets ASET, BSET, CSET, QSET, OMIT, USET and their ...1 forms,
+//    TIC; and
 //    the comment lines "$TETSMOOTH PINNED <id> ..." that the writer leaves
 //    for pins nothing else keeps. Scalar points (SPOINT, EPOINT) that these
 //    name are no grid points and pin nothing. Entries of other types are
@@ -65,16 +66,16 @@
 // Writing: a mesh read from a deck is written as that deck, line for line,
 // but for the GRID entries of nodes whose coordinates changed: those are
 // written in large field (GRID* and a '*' line) with their CP, CD, PS and
-// SEID as read, after the entry's comments (inline ones as lines of their
-// own), and each coordinate in 16 characters, the closest of its decimal
-// forms that fit (14 significant digits or more for sizes from 1 to 1e13,
-// 10 or more where the exponent has two digits). A node that did not move
+// SEID as read (the reader checks them: ids, PS digits 1 to 6), after the
+// entry's comments (inline ones as lines of their own; one that would read
+// as a pin line marked off with another '$'), and each coordinate in 16
+// characters (nastran_fields.hpp: real_field). A node that did not move
 // keeps its GRID text byte for byte. Line ends become '\n', and included
 // files are written in place of their INCLUDE lines. The mesh must still
 // have the deck's node and tet counts.
 // Any other mesh is written as a new deck: "BEGIN BULK", GRID* entries,
-// CTETRA (PID = region tag; tags of 0 and below, and tets without one, as
-// new positive ids: nastran_new_pids), the pass-through elements (CTRIA3,
+// CTETRA (PID = region tag; tags that cannot be PIDs, and tets without
+// one, as new ids: nastran_new_pids), the pass-through elements (CTRIA3,
 // CTRIA6, CQUAD4, CROD, CONM2, CHEXA, CPENTA, CPYRAM), "$TETSMOOTH PINNED"
 // lines for pinned nodes that no element pins, and ENDDATA. Node and
 // element ids are the file's where they are positive, distinct and at most
@@ -94,9 +95,11 @@ TetMesh read_nastran_file(const std::string& path);
 void write_nastran(const TetMesh& mesh, std::ostream& out);
 void write_nastran_file(const TetMesh& mesh, const std::string& path);
 
-// The PIDs a new deck gives region tags of 0 and below, and elements
-// without one (as tag 0): new ids above the largest tag, 0 first, then -1,
-// -2, ... (Nastran's PIDs are positive).
+// The PIDs a new deck gives region tags that cannot be PIDs (0 and below,
+// and past 99,999,999), and elements without one (as tag 0): ids that no
+// tag holds, from above the largest tag kept on (then from 1 up), 0 first,
+// then -1, -2, ..., then the large tags in order (Nastran's PIDs are
+// positive, of at most 8 digits).
 std::map<int, int> nastran_new_pids(const TetMesh& mesh);
 
 // The file's own numbers that a new deck for `mesh` cannot keep (see

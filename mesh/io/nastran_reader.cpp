@@ -22,19 +22,12 @@ namespace tetsmooth {
 namespace nastran {
 namespace {
 
-// The comment that keeps pins no entry keeps (nastran_io.hpp), upper case.
-constexpr std::string_view kPinnedComment = "TETSMOOTH PINNED";
+// The comment that keeps pins no entry keeps (nastran_io.hpp), for messages.
 constexpr const char* kPinnedEntry = "$TETSMOOTH PINNED";
 
 // Data fields a GRID has (ID CP X1 X2 X3 CD PS SEID) and a CTETRA (EID PID
 // G1 .. G10).
 constexpr std::size_t kGridFields = 8, kTetFields = 12;
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string list;
-  for (const std::string& item : items) list += (list.empty() ? "" : ", ") + item;
-  return list;
-}
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
   if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
@@ -51,6 +44,15 @@ int pid_field(const std::string& field, const Place& at) {
 // Data a field past an entry's last would hold is not silently dropped: a
 // value there is a line laid out wrong (a large-field line continued in
 // small field, a short free-field line with a continuation).
+// A PS field: blank, 0, or distinct digits 1 to 6.
+bool components(const std::string& field) {
+  if (field.empty() || field == "0") return true;
+  std::string digits = field;
+  std::sort(digits.begin(), digits.end());
+  return digits.size() <= 6 && digits.front() >= '1' && digits.back() <= '6' &&
+         std::adjacent_find(digits.begin(), digits.end()) == digits.end();
+}
+
 void check_no_more(const Card& card, std::size_t fields, const std::string& what, const Place& at) {
   for (std::size_t d = fields; d < card.fields.size(); ++d)
     if (!card.fields[d].empty())
@@ -86,6 +88,15 @@ void DeckReader::grid(const Card& card) {
       throw InputError(at.where(), name + ": expected a finite coordinate, found " + quoted_token(f));
     mesh_.xyz.push_back(v);
   }
+  // What the writer copies when it rewrites the entry must be what Nastran
+  // reads there: CD and SEID ids, PS component digits.
+  for (const std::size_t d : {std::size_t{5}, std::size_t{7}})
+    if (long long v = 0; !card.field(d).empty() && (!parse_integer(card.field(d), v) || v < -1))
+      throw InputError(at.where(), name + ": expected " + (d == 5 ? "a coordinate system id (CD)" : "a SEID") +
+                                       ", found " + quoted_token(card.field(d)));
+  if (!components(card.field(6)))
+    throw InputError(at.where(), name + ": expected the components of a permanent constraint (PS: digits 1 to 6), "
+                                        "found " + quoted_token(card.field(6)));
   mesh_.extras.node_tags.push_back(id);
   node_marks_.push_back(card.mark);
   const std::string& ps = card.field(6);
@@ -103,7 +114,8 @@ void DeckReader::tet(const Card& card) {
                                                [](const std::string& f) { return !f.empty(); });
   if (!four && listed != 10)
     throw InputError(at.where(), "CTETRA " + std::to_string(id) + " lists " + std::to_string(listed) +
-                                     " grid points: a CTETRA has 4, or 10 with its midside nodes");
+                                     " grid points" + (listed == 4 ? " with a gap before G4" : "") +
+                                     ": a CTETRA has G1 to G4, or G1 to G10 with its midside nodes");
   if (tet_nodes_each_ != 0 && tet_nodes_each_ != listed) throw InputError(at.where(), mixed_tet_kinds(listed));
   tet_nodes_each_ = listed;
   for (std::size_t k = 0; k < static_cast<std::size_t>(listed); ++k)
@@ -149,12 +161,9 @@ void DeckReader::element(const EntryType& type, const Card& card) {
 }
 
 void DeckReader::pinned_comment(const std::string& line) {
-  std::string head = line.substr(line.find('$') + 1);
-  std::transform(head.begin(), head.end(), head.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  const std::size_t start = head.find_first_not_of(" \t");
-  if (start == std::string::npos || head.compare(start, kPinnedComment.size(), kPinnedComment) != 0) return;
-  std::istringstream ids(head.substr(start + kPinnedComment.size()));
+  const std::optional<std::string> listed = pinned_comment_ids(line);
+  if (!listed) return;
+  std::istringstream ids(*listed);
   const Place at{cards_, cards_.text_mark()};
   for (std::string token; ids >> token;) {
     const long long id = id_field(token, "a grid point id", at);
@@ -172,7 +181,7 @@ void DeckReader::entry(const Card& card) {
   add_once(types_, text_excerpt(card.name));
   if (type != nullptr) return pins(*type, card);
   if (card.name == "SPOINT" || card.name == "EPOINT") {
-    const std::vector<std::pair<long long, long long>> ids = grid_ranges(scalar_point_type(), card, cards_);
+    const std::vector<std::pair<long long, long long>> ids = grid_ranges(scalar_point_type(), card, cards_, "a scalar point id");
     scalar_points_.insert(scalar_points_.end(), ids.begin(), ids.end());
   } else if (card.name == "GRDSET") {
     grdset_cp_ = card.field(1);

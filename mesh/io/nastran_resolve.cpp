@@ -9,12 +9,10 @@
 #include "mesh/second_order.hpp"
 #include "mesh/tet_quality.hpp"
 #include "mesh/io/nastran_reader.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::nastran {
 namespace {
-
-// CTETRA lists its midside nodes in kTetEdges order, after the corners.
-constexpr MidsidePlaces kMidsidePlaces = {4, 5, 6, 7, 8, 9};
 
 // A tet turned round by swapping corners 1 and 2 has its edges 0 and 2, and
 // 4 and 5, swapped (kTetEdges).
@@ -89,7 +87,7 @@ void DeckReader::resolve() {
   if (!blank_or_zero(grdset_cp_) &&
       std::any_of(grid_bits_.begin(), grid_bits_.end(), [](std::uint8_t b) { return (b & kCpBlank) != 0; }))
     throw InputError(cards_.where(grdset_mark_),
-                     "GRDSET gives the GRIDs without a CP coordinate system " + grdset_cp_ +
+                     "GRDSET gives the GRIDs without a CP coordinate system " + text_excerpt(grdset_cp_) +
                          ": nodes in other coordinate systems than the basic one are not read");
   const IdIndex nodes(e.node_tags), elements(element_ids_);
   if (const auto twice = nodes.repeated())
@@ -103,7 +101,7 @@ void DeckReader::resolve() {
   for (std::size_t t = 0; t < tet_marks_.size(); ++t) {
     for (std::size_t k = 0; k < each; ++k)
       tet[k] = node_of(tet_grids_[each * t + k], nodes, tet_marks_[t], e.tet_element_tags[t]);
-    append_file_tet(mesh_, tet, each == 10, kMidsidePlaces);
+    append_file_tet(mesh_, tet, each == 10, kCtetraMidsides);
   }
   if (const std::size_t turned = orient_tets(); turned > 0)
     e.read_notes.push_back(std::to_string(turned) + " of the " + std::to_string(mesh_.num_tets()) +

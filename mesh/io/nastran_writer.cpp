@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <set>
 #include <ostream>
 #include <sstream>
 
@@ -11,9 +12,11 @@
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/nastran_cards.hpp"
+#include "mesh/io/nastran_entry_types.hpp"
 #include "mesh/io/nastran_fields.hpp"
 #include "mesh/io/nastran_io.hpp"
 #include "mesh/io/number_text.hpp"
+#include "mesh/io/text_lines.hpp"
 #include "mesh/second_order.hpp"
 
 namespace tetsmooth {
@@ -25,7 +28,6 @@ using nastran::write_entry;
 // Nastran ids have at most 8 digits.
 constexpr long long kLargestId = 99999999;
 constexpr std::size_t kLargeWidth = 16, kSmallWidth = 8;
-constexpr MidsidePlaces kMidsidePlaces = {4, 5, 6, 7, 8, 9};  // as the reader's
 // Pins a line of the "$TETSMOOTH PINNED" comment lists.
 constexpr std::size_t kPinsPerLine = 6;
 
@@ -45,11 +47,19 @@ void write_grid(std::ostream& out, const nastran::Card& card, const double* xyz)
     return;
   }
   // The entry's comments, those between its lines and those after its
-  // data, stay before it.
+  // data, stay before it; one that would read as a pin line of its own
+  // (which inside the entry it was not) is marked off.
   std::istringstream lines(card.text);
   for (std::string line; std::getline(lines, line);)
-    if (const std::size_t dollar = line.find('$'); dollar != std::string::npos) out << line.substr(dollar) << '\n';
+    if (const std::size_t dollar = line.find('$'); dollar != std::string::npos) {
+      const std::string comment = line.substr(dollar);
+      out << (nastran::pinned_comment_ids(comment) ? "$" : "") << comment << '\n';
+    }
+  // The other fields as read (the reader checked them), ids written plain
+  // so that they fit the wider columns whatever zeros they had.
   std::vector<std::string> fields(card.fields.begin(), card.fields.begin() + 8);
+  for (const std::size_t d : {std::size_t{0}, std::size_t{5}, std::size_t{7}})
+    if (long long v = 0; parse_integer(fields[d], v)) fields[d] = std::to_string(v);
   for (std::size_t c = 0; c < 3; ++c) fields[2 + c] = real_field(xyz[c], kLargeWidth);
   write_entry(out, "GRID", fields, true, 0);  // large field: no marker
 }
@@ -76,28 +86,12 @@ void write_deck(const TetMesh& mesh, std::ostream& out) {
 
 // --- A new deck -------------------------------------------------------------
 
-struct EntryName {
-  const char* kind;
-  const char* name;
-  bool pid;  // whether the entry has a PID field
-};
-constexpr EntryName kEntryNames[] = {
-    {"triangle", "CTRIA3", true}, {"triangle6", "CTRIA6", true}, {"quad", "CQUAD4", true},  {"line", "CROD", true},
-    {"vertex", "CONM2", false},   {"hexahedron", "CHEXA", true}, {"wedge", "CPENTA", true}, {"pyramid", "CPYRAM", true},
-};
-
-const EntryName* entry_name_of(const std::string& kind) {
-  for (const EntryName& e : kEntryNames)
-    if (kind == e.kind) return &e;
-  return nullptr;
-}
-
 std::string text_of(long long v) { return std::to_string(v); }
 
-// The PID of a region tag: the tag where positive, else its new id
-// (nastran_new_pids).
+// The PID of a region tag: the tag itself, or its new id (nastran_new_pids).
 std::string pid_text(int tag, const std::map<int, int>& renumbered) {
-  return text_of(tag > 0 ? tag : renumbered.at(tag));
+  const auto it = renumbered.find(tag);
+  return text_of(it == renumbered.end() ? tag : it->second);
 }
 
 // An element entry in small field where every field fits, else large.
@@ -110,7 +104,7 @@ void write_element(std::ostream& out, const char* name, long long id, const std:
 void check_new_deck(const TetMesh& mesh) {
   if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
   for (const PassThroughBlock& b : mesh.extras.blocks)
-    if (entry_name_of(b.kind) == nullptr)
+    if (nastran::entry_type_of_kind(b.kind) == nullptr)
       throw OutputError("Nastran output cannot hold the pass-through '" + b.kind + "' block (" +
                         std::to_string(b.nodes_per_element) + " nodes per element)");
   std::size_t elements = mesh.num_tets();
@@ -150,7 +144,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
     std::vector<std::string> fields{text_of(ids[t]), pid_text(tags.size() == mesh.num_tets() ? tags[t] : 0, renumbered)};
     if (ten)
-      file_tet10(mesh, t, kMidsidePlaces, nodes);
+      file_tet10(mesh, t, nastran::kCtetraMidsides, nodes);
     else
       std::copy_n(&mesh.tets[4 * t], 4, nodes);
     for (std::size_t k = 0; k < (ten ? 10u : 4u); ++k)
@@ -159,11 +153,11 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   }
   std::size_t first = mesh.num_tets();
   for (const PassThroughBlock& b : mesh.extras.blocks) {
-    const EntryName& entry = *entry_name_of(b.kind);
+    const nastran::EntryType& entry = *nastran::entry_type_of_kind(b.kind);
     const auto n = static_cast<std::size_t>(b.nodes_per_element);
     for (std::size_t e = 0; e < elements_in(b); ++e) {
       std::vector<std::string> fields{text_of(ids[first + e])};
-      if (entry.pid) fields.push_back(pid_text(b.tags.size() == elements_in(b) ? b.tags[e] : 0, renumbered));
+      if (entry.has_pid) fields.push_back(pid_text(b.tags.size() == elements_in(b) ? b.tags[e] : 0, renumbered));
       for (std::size_t k = 0; k < n; ++k)
         fields.push_back(text_of(node_ids[static_cast<std::size_t>(b.connectivity[e * n + k])]));
       write_element(out, entry.name, ids[first + e], fields);
@@ -179,22 +173,32 @@ constexpr DeckWriter kWriter{"nastran", "Nastran", check_new_deck, write_deck, w
 }  // namespace
 
 std::map<int, int> nastran_new_pids(const TetMesh& mesh) {
-  long long largest = 0;
-  std::vector<int> others;  // tags of 0 and below; 0 for elements without one
+  std::set<int> kept;       // tags that are PIDs as they are
+  std::vector<int> others;  // tags that are not; 0 for elements without one
   const auto visit = [&](const std::vector<int>& tags, std::size_t elements) {
     if (elements > 0 && tags.size() != elements) others.push_back(0);
-    for (int tag : tags) {
-      largest = std::max<long long>(largest, tag);
-      if (tag <= 0) others.push_back(tag);
-    }
+    for (int tag : tags)
+      if (tag > 0 && tag <= kLargestId)
+        kept.insert(tag);
+      else
+        others.push_back(tag);
   };
   visit(mesh.extras.tet_tags, mesh.num_tets());
   for (const PassThroughBlock& b : mesh.extras.blocks)
-    if (entry_name_of(b.kind) != nullptr && entry_name_of(b.kind)->pid) visit(b.tags, elements_in(b));
-  std::sort(others.begin(), others.end(), std::greater<int>());
+    if (const nastran::EntryType* entry = nastran::entry_type_of_kind(b.kind); entry != nullptr && entry->has_pid)
+      visit(b.tags, elements_in(b));
+  // 0 first, then -1, -2, ..., then the tags past the largest id, each the
+  // next id that no tag holds: above the largest kept, then from 1 up.
+  std::sort(others.begin(), others.end(), [](int a, int b) { return a <= 0 && b <= 0 ? a > b : a < b; });
   others.erase(std::unique(others.begin(), others.end()), others.end());
   std::map<int, int> renumbered;
-  for (int tag : others) renumbered[tag] = static_cast<int>(std::min<long long>(++largest, kLargestId));
+  long long next = kept.empty() ? 1 : *kept.rbegin() + 1;
+  for (int tag : others) {
+    if (next > kLargestId) next = 1;
+    while (kept.count(static_cast<int>(next)) != 0) ++next;
+    renumbered[tag] = static_cast<int>(next);
+    kept.insert(static_cast<int>(next++));
+  }
   return renumbered;
 }
 

@@ -27,6 +27,13 @@ bool parse_real(std::string_view token, double& value);
 std::string text_excerpt(std::string_view text);
 std::string quoted_token(std::string_view token);
 
+// ASCII upper case, as the formats whose names ignore case compare them
+// (legacy VTK keywords, Abaqus and Nastran names).
+std::string upper_case(std::string_view text);
+
+// "a, b, c": a list for a message or a note.
+std::string joined(const std::vector<std::string>& items);
+
 class TextLines {
  public:
   // comment: a character that starts a comment running to the end of the

@@ -17,12 +17,6 @@
 namespace tetsmooth {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
-
 // Undoes the writer's percent-encoding of names ("%20" for a space).
 std::string decode_name(std::string_view s) {
   std::string out;
@@ -44,7 +38,7 @@ class LegacyReader {
 
   TetMesh read() {
     header();
-    while (!lines_.at_end()) section(upper(lines_.next_token("a section keyword")));
+    while (!lines_.at_end()) section(upper_case(lines_.next_token("a section keyword")));
     if (!have_points_) lines_.fail("no POINTS section");
     if (!have_cells_) lines_.fail("no CELLS section");
     if (!have_types_) lines_.fail("no CELL_TYPES section");
@@ -122,8 +116,8 @@ class LegacyReader {
 
   void header() {
     lines_.require_line("the header \"# vtk DataFile Version x.y\"");
-    const bool ok = lines_.size() >= 5 && lines_.token(0, "") == "#" && upper(lines_.token(1, "")) == "VTK" &&
-                    upper(lines_.token(2, "")) == "DATAFILE" && upper(lines_.token(3, "")) == "VERSION";
+    const bool ok = lines_.size() >= 5 && lines_.token(0, "") == "#" && upper_case(lines_.token(1, "")) == "VTK" &&
+                    upper_case(lines_.token(2, "")) == "DATAFILE" && upper_case(lines_.token(3, "")) == "VERSION";
     if (!ok) lines_.fail("not a legacy VTK file: the first line must be \"# vtk DataFile Version x.y\"");
     long long major = 0;
     const std::string_view version = lines_.token(4, "version");
@@ -132,12 +126,12 @@ class LegacyReader {
     major_ = major;
     if (!lines_.next_raw_line()) lines_.fail("unexpected end of file, expected the title line");
     lines_.require_line("ASCII or BINARY");
-    const std::string mode = upper(lines_.token(0, "ASCII or BINARY"));
+    const std::string mode = upper_case(lines_.token(0, "ASCII or BINARY"));
     if (mode != "ASCII" && mode != "BINARY") lines_.fail("expected ASCII or BINARY, found " + quoted_token(mode));
     binary_ = mode == "BINARY";
     if (binary_) lines_.locate_by_byte();
-    if (upper(lines_.next_token("DATASET")) != "DATASET") lines_.fail("expected DATASET");
-    const std::string type = upper(arg("the dataset type"));
+    if (upper_case(lines_.next_token("DATASET")) != "DATASET") lines_.fail("expected DATASET");
+    const std::string type = upper_case(arg("the dataset type"));
     if (type != "UNSTRUCTURED_GRID")
       lines_.fail("DATASET " + quoted_token(type) + " is not supported, only UNSTRUCTURED_GRID");
   }
@@ -215,7 +209,7 @@ class LegacyReader {
       for (std::size_t i = 0; i < n; ++i) lines_.next_token(what);
       return;
     }
-    const bool bits = upper(type) == "BIT";
+    const bool bits = upper_case(type) == "BIT";
     const std::size_t size = bits ? 1 : binary_type(type, what).size;
     const std::size_t values = bits ? n / 8 + (n % 8 != 0) : n;
     for (std::size_t done = 0; done < values;) {  // a chunk at a time: values * size may not fit size_t
@@ -320,11 +314,11 @@ class LegacyReader {
     offsets_.clear();
     if (major_ >= 5) {
       // 5.x: "CELLS <#offsets> <#connectivity>", then OFFSETS and CONNECTIVITY arrays.
-      if (upper(lines_.next_token("OFFSETS")) != "OFFSETS") lines_.fail("expected OFFSETS");
+      if (upper_case(lines_.next_token("OFFSETS")) != "OFFSETS") lines_.fail("expected OFFSETS");
       const std::string offset_type(arg("offset type"));
       offsets_at_ = array_start("OFFSETS", binary_ ? binary_type(offset_type, "offset").size : 0);
       offsets_ = integers(first, offset_type, "offset");
-      if (upper(lines_.next_token("CONNECTIVITY")) != "CONNECTIVITY") lines_.fail("expected CONNECTIVITY");
+      if (upper_case(lines_.next_token("CONNECTIVITY")) != "CONNECTIVITY") lines_.fail("expected CONNECTIVITY");
       const std::string connectivity_type(arg("connectivity type"));
       connectivity_at_ = array_start("CONNECTIVITY", binary_ ? binary_type(connectivity_type, "node index").size : 0);
       connectivity_ = integers(second, connectivity_type, "node index");
@@ -367,7 +361,7 @@ class LegacyReader {
     const std::size_t components = lines_.line_has_more() ? count("component count") : 1;
     // Optional in ASCII; in BINARY the line must be there, since without it
     // the look for it has read into the data.
-    if (upper(lines_.peek_token()) == "LOOKUP_TABLE") {
+    if (upper_case(lines_.peek_token()) == "LOOKUP_TABLE") {
       lines_.next_token("LOOKUP_TABLE");
       arg("table name");
     } else if (binary_) {
@@ -385,7 +379,7 @@ class LegacyReader {
     const std::size_t arrays = count("array count");
     for (std::size_t a = 0; a < arrays; ++a) {
       const std::string name = decode_name(lines_.next_token("array name"));
-      if (upper(name) == "NULL_ARRAY") continue;
+      if (upper_case(name) == "NULL_ARRAY") continue;
       const std::string where = lines_.where();
       const std::size_t components = count("component count");
       const std::size_t tuples = count("tuple count");
@@ -396,7 +390,7 @@ class LegacyReader {
       } else {
         data_array(name, components, tuples, type, where);
       }
-      if (upper(lines_.peek_token()) == "METADATA") {
+      if (upper_case(lines_.peek_token()) == "METADATA") {
         lines_.next_token("METADATA");
         lines_.skip_past_blank_line();
       }

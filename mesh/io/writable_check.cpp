@@ -306,14 +306,16 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                     "): MSH physical tags are positive");
   }
   if (f == MeshFormat::Nastran && !nastran) {
-    bool explicit_tag = std::any_of(e.tet_tags.begin(), e.tet_tags.end(), [](int t) { return t <= 0; });
-    for (const PassThroughBlock& b : e.blocks)
-      explicit_tag = explicit_tag || std::any_of(b.tags.begin(), b.tags.end(), [](int t) { return t <= 0; });
+    // Tags the mesh has that are no PIDs; a mesh without tags has none to lose.
+    const auto no_pid = [](int t) { return t <= 0 || t > 99999999; };
+    bool tag_lost = std::any_of(e.tet_tags.begin(), e.tet_tags.end(), no_pid);
+    for (const PassThroughBlock& b : e.blocks) tag_lost = tag_lost || std::any_of(b.tags.begin(), b.tags.end(), no_pid);
     std::string pairs;
     for (const auto& [from, to] : nastran_new_pids(mesh))
       pairs += (pairs.empty() ? "" : ", ") + std::to_string(from) + " as " + std::to_string(to);
-    if (explicit_tag)
-      notes.push_back("region tags of 0 and below are written as new PIDs (" + pairs + "): Nastran's PIDs are positive");
+    if (tag_lost)
+      notes.push_back("region tags that are no PIDs are written as new ones (" + pairs +
+                      "): Nastran's PIDs are positive, of at most 8 digits");
   }
   if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
     const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));

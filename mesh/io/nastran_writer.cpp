@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <functional>
 #include <map>
-#include <set>
 #include <ostream>
+#include <set>
 #include <sstream>
 
 #include "mesh/errors.hpp"
@@ -15,7 +15,6 @@
 #include "mesh/io/nastran_entry_types.hpp"
 #include "mesh/io/nastran_fields.hpp"
 #include "mesh/io/nastran_io.hpp"
-#include "mesh/io/number_text.hpp"
 #include "mesh/io/text_lines.hpp"
 #include "mesh/second_order.hpp"
 

@@ -33,9 +33,12 @@ bool comment(const std::string& line) {
 // for a line that is no INCLUDE (recognized by its first word, however
 // indented, as Nastran reads it).
 std::size_t include_name_at(const std::string& line) {
+  constexpr std::string_view kWord = "INCLUDE";
   const std::size_t first = line.find_first_not_of(kBlanks);
-  if (first == std::string::npos || upper_case(std::string_view(line).substr(first, 7)) != "INCLUDE") return std::string::npos;
-  const std::size_t after = first + 7;
+  if (first == std::string::npos || line.size() - first < kWord.size()) return std::string::npos;
+  for (std::size_t k = 0; k < kWord.size(); ++k)
+    if (std::toupper(static_cast<unsigned char>(line[first + k])) != kWord[k]) return std::string::npos;
+  const std::size_t after = first + kWord.size();
   const bool word_ends = after == line.size() || !std::isalnum(static_cast<unsigned char>(line[after]));
   return word_ends ? after : std::string::npos;
 }

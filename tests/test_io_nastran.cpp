@@ -331,6 +331,11 @@ TEST(NastranIo, PointsThatGiveDirectionsOrSetsApartArePinned) {
            small({"RBE3", "9", "", "4", "123", "1.", "123", "1", "2"}) + small({"", "5", "ALPHA", "1.-5"}),
            small({"USET1", "U1", "123", "5"}),
            small({"RBAR1", "9", "1", "5", "123"}),
+           small({"BAROR", "", "1", "", "", "5"}) + small({"CBAR", "101", "1", "1", "2"}),  // G0 by default
+           small({"CBEAM3", "101", "1", "1", "2", "3", "5"}),
+           small({"RFORCE1", "1", "5", "", "100."}),
+           small({"BNDFIX1", "123", "4", "THRU", "6"}),
+           small({"NOLIN1", "1", "4", "1", "2.", "5", "1"}),
            small({"GRDSET", "", "", "", "", "", "", "3"}),            // a PS for blank ones
        })
     EXPECT_TRUE(node5_pinned(entries)) << entries;
@@ -408,7 +413,18 @@ TEST(NastranIo, GridFieldsTheWriterCopiesAreChecked) {
   const TetMesh back = read_text(write_text(mesh));
   EXPECT_EQ(back.xyz[3 * 4], 0.25);
   EXPECT_TRUE(back.fixed.empty());
-  // Stray carriage returns are blanks, not entries that take the next line.
+  // A carriage return inside a line (line ends "\n\r") would shift its
+  // columns: refused. Those at a line's end are line ends.
+  const std::string grid4 = small({"GRID", "4", "", "0.", "0.", "1."}), grid5 = small({"GRID", "5", "", ".3", ".2", ".1"});
+  EXPECT_EQ(read_error(replaced(kStar, grid4, "\r" + grid4)),
+            "t.bdf:5: a carriage return inside the line: the file mixes line ends (give it one kind, LF or CRLF)");
+  EXPECT_EQ(read_error(replaced(kStar, grid5, "GRID,123456789,,.3,.2,.1\n")),
+            "t.bdf:6: GRID 123456789: Nastran ids have at most 8 digits");
+  // A 4-node CTETRA may give its midside fields as 0.
+  EXPECT_EQ(read_text(replaced(kStar, small({"CTETRA", "4", "1", "1", "2", "3", "5"}),
+                               small({"CTETRA", "4", "1", "1", "2", "3", "5", "0", "0"}) + small({"", "0", "0", "0", "0"})))
+                .num_tets(),
+            4u);
   const TetMesh spc = read_text(replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\nSPC1    1       123     5\r\r\n\r\r\n"));
   EXPECT_EQ(spc.fixed[4], 1);
   EXPECT_EQ(write_text(spc), replaced(kStar, "BEGIN BULK\n", "BEGIN BULK\nSPC1    1       123     5\n\n"));
@@ -453,6 +469,8 @@ TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
   EXPECT_EQ(nastran::real_field(3, 8), "3.");
   EXPECT_EQ(nastran::real_field(1.5e-7, 8), "1.5E-7");
   EXPECT_EQ(nastran::real_field(1e20, 8), "1.E20");
+  // A number whose whole part rounds up a digit keeps every digit that fits.
+  EXPECT_EQ(nastran::real_field(-9.5456041617964971, 16), "-9.5456041617965");
   // Any double fits, the largest and the smallest too; the relative error
   // bounds of nastran_fields.hpp hold.
   const auto check = [](double value, std::size_t width, double relative) {

@@ -13,8 +13,7 @@ namespace {
 
 constexpr std::size_t kFixedColumns = 80;  // Nastran ignores what a fixed-format line has past column 80
 
-// Blanks: a stray '\r' (a line end of another system) among them.
-constexpr const char* kBlanks = " \t\r";
+constexpr const char* kBlanks = " \t";
 
 std::string trimmed(std::string_view s) {
   const std::size_t first = s.find_first_not_of(kBlanks);
@@ -95,6 +94,10 @@ bool BulkCards::read_line(Line& line) {
   }
   if (!lines_.next(line.text)) return false;
   line.mark = lines_.mark();
+  // Line ends of another system ("\n\r") would leave a carriage return at
+  // the start of a line, shifting its columns: refused, not guessed at.
+  if (line.text.find('\r') != std::string::npos)
+    fail(line.mark, "a carriage return inside the line: the file mixes line ends (give it one kind, LF or CRLF)");
   return true;
 }
 

@@ -32,6 +32,7 @@ const EntryType kTypes[] = {
     {"CBAR", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
     {"CBEAM", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
     {"CBUSH", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
+    {"CBEND", kElement, "line", 2, kPid, Grids::Run, 2, 2, {-1, -1, -1, -1, -1, -1}, 4},
     {"CONROD", kElement, "line", 2, kNoPid, Grids::Run, 1, 2},
     {"CONM2", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
     {"CONM1", kElement, "vertex", 1, kNoPid, Grids::Run, 1, 1},
@@ -42,6 +43,7 @@ const EntryType kTypes[] = {
     {"CPYRA", kElement, "pyramid", 5, kPid, Grids::Run, 2, 13},
     // Elements that only pin.
     {"CQUAD8", kElement, nullptr, 0, kPid, Grids::Run, 2, 8},
+    {"CBEAM3", kElement, nullptr, 0, kPid, Grids::Run, 2, 3, {-1, -1, -1, -1, -1, -1}, 5},
     {"CQUAD", kElement, nullptr, 0, kPid, Grids::Run, 2, 9},
     {"CTRIAX6", kElement, nullptr, 0, kNoPid, Grids::Run, 2, 6},
     {"CELAS1", kElement, nullptr, 0, kPid, Grids::Listed, 0, 0, {2, 4, -1, -1, -1, -1}},
@@ -71,6 +73,12 @@ const EntryType kTypes[] = {
     {"FORCE2", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
     {"MOMENT2", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 4, 5, 6, -1}},
     {"RFORCE", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"RFORCE1", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    {"NOLIN1", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
+    {"DVGRID", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
+    // The default orientation node G0 of bars and beams.
+    {"BAROR", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {-1, -1, -1, -1, -1, -1}, 4},
+    {"BEAMOR", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {-1, -1, -1, -1, -1, -1}, 4},
     {"PLOAD", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {2, 3, 4, 5, -1, -1}},
     {"DAREA", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 4, -1, -1, -1, -1}},
     {"ACCEL1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 8},
@@ -92,6 +100,8 @@ const EntryType kTypes[] = {
     {"CSET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
     {"QSET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
     {"OMIT1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"BNDFIX1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
+    {"SPCOFF1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 1},
     {"USET", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, 3, 5, -1, -1, -1}},
     {"USET1", kNamesPoints, nullptr, 0, kNoPid, Grids::IdList, 2},
     {"TIC", kNamesPoints, nullptr, 0, kNoPid, Grids::Listed, 0, 0, {1, -1, -1, -1, -1, -1}},
@@ -102,7 +112,7 @@ const EntryType kScalarPoints{"SPOINT", kNamesPoints, nullptr, 0, kNoPid, Grids:
 // Entries that name grid points in layouts the reader does not follow.
 const char* const kUnread[] = {"CWELD",  "CFAST",  "CSEAM",  "RSPLINE", "GENEL",  "DMIG",    "BCGRID",
                                "TEMPBC", "CHBDYG", "CHBDYP", "CIFHEX",  "CIFPENT", "CHEXCZ", "CPENTCZ",
-                               "SPCR",   "RBE3D",  "CTRAX3", "CTRAX6",  "CQUADX", "CTRIAX", "RSSCON"};
+                               "SPCR",   "RBE3D",  "CTRAX3", "CTRAX6",  "CQUADX", "CTRIAX", "RSSCON", "CONV",   "RBE2GS", "SPCOFF"};
 
 bool whole_number(const std::string& field) {
   long long v = 0;

@@ -66,11 +66,13 @@ std::string real_field(double value, std::size_t width) {
       best = candidate;
     }
   };
-  // In each notation the most digits that fit, and one fewer where rounding
-  // lengthens the number (9.96E9 to 1.0E10 with one digit).
+  // In each notation the most digits that fit: `bare` is the length without
+  // digits, which rounding may make one more or one less than with them
+  // (9.96 is "10." bare, 9.96E9 "1.E10"), so one digit more and one fewer
+  // are tried too.
   const auto most_digits = [&](auto format, int bare) {
     const int digits = static_cast<int>(width) - bare;
-    for (int d = std::min(digits, 17); d >= std::max(digits - 1, 0); --d) consider(to_text(value, format, d));
+    for (int d = std::min(digits + 1, 17); d >= std::max(digits - 1, 0); --d) consider(to_text(value, format, d));
   };
   // "d.E<exponent>", the sign: every double fits 8 columns so.
   most_digits(std::chars_format::scientific, static_cast<int>(to_text(value, std::chars_format::scientific, 0).size()));

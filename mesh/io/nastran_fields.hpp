@@ -17,7 +17,7 @@ bool parse_real_field(std::string_view field, double& value);
 // A finite `value` in at most `width` characters (8 or 16) as Nastran reads
 // a real (with a decimal point): the shortest form that reads back exactly
 // where that fits, else the form that fits and reads back closest, in fixed
-// or exponent notation. Width 16 keeps a relative error below 5e-11 for
+// or exponent notation. Width 16 keeps a relative error below 5e-10 for
 // exponents of two digits (below 5e-14 for sizes from 1 to 1e13).
 std::string real_field(double value, std::size_t width);
 

@@ -21,7 +21,8 @@
 //    systems are refused); a node with a PS (its own, or GRDSET's where its
 //    own is blank: a permanent single-point constraint) is pinned.
 //  * CTETRA EID PID G1..G4, or G1..G10 with the midside nodes in kTetEdges
-//    order (Nastran's, as VTK's); meshio 5's CTETRA_ too, with a note. Ids
+//    order (Nastran's, as VTK's; a 4-node one may give G5..G10 as 0);
+//    meshio 5's CTETRA_ too, with a note. Ids
 //    kept as tet_element_tags; the PID is the region tag
 //    (FileExtras::tet_tags; a blank PID is 0). Nastran takes a tet's grid
 //    points in either handedness: one listed left-handed is read with G2
@@ -29,18 +30,19 @@
 //  * Other elements pin their grid points. Those with a shape in other
 //    formats pass through (PassThroughBlock, tag = PID where they have one):
 //    CTRIA3/CTRIAR (triangle), CTRIA6 (triangle6), CQUAD4/CQUADR/CSHEAR
-//    (quad), CROD/CTUBE/CBAR/CBEAM/CBUSH/CBUSH1D/CBUSH2D/CGAP/CVISC/CONROD
+//    (quad), CROD/CTUBE/CBAR/CBEAM/CBEND/CBUSH/CBUSH1D/CBUSH2D/CGAP/CVISC/CONROD
 //    (line; the orientation node G0 of a bar, beam, bush or gap is pinned
-//    too), CONM1/CONM2 (vertex), CHEXA, CPENTA, CPYRAM/CPYRA with corner
+//    too, and BAROR's and BEAMOR's), CONM1/CONM2 (vertex), CHEXA, CPENTA, CPYRAM/CPYRA with corner
 //    nodes only (hexahedron, wedge, pyramid). The others only pin and stay
-//    in the deck: CQUAD8, CQUAD, CTRIAX6, higher-order solids,
+//    in the deck: CQUAD8, CQUAD, CTRIAX6, CBEAM3, higher-order solids,
 //    CELAS1/2, CDAMP1/2, CMASS1/2, PLOTEL, RBAR, RBAR1, RROD, RJOINT, RTRPLT,
 //    RBE1, RBE2, RBE3 (nastran_entry_types.cpp lays out where each names
 //    its grid points).
 //  * Loads, constraints and the points that give them a direction pin the
 //    grid points they name: SPC, SPC1 (with THRU ranges), SPCD, FORCE,
 //    FORCE1/2 and MOMENT, MOMENT1/2 (with their direction's points),
-//    RFORCE, PLOAD, DAREA, ACCEL1, SUPORT, SUPORT1, MPC, CORD1R/C/S, the
+//    RFORCE, RFORCE1, PLOAD, DAREA, ACCEL1, NOLIN1, DVGRID, SUPORT, SUPORT1,
+//    MPC, CORD1R/C/S, BNDFIX1, SPCOFF1, the
 //    analysis sets ASET, BSET, CSET, QSET, OMIT, USET and their ...1 forms,
 //    TIC; and
 //    the comment lines "$TETSMOOTH PINNED <id> ..." that the writer leaves
@@ -50,7 +52,9 @@
 //    (CWELD, CFAST, RSPLINE, GENEL, ...) get a note that their nodes may
 //    move.
 //  * Refused with the file's line: superelements (BEGIN SUPER, BEGIN BULK
-//    SUPER=), replicated entries ('=' lines), CP other than 0, a value past
+//    SUPER=), replicated entries ('=' lines), a carriage return inside a
+//    line (mixed line ends, which would shift columns), GRID, CD and SEID
+//    ids of more than 8 digits, CP other than 0, a value past
 //    the last field of a GRID or CTETRA (a line laid out wrong: a
 //    large-field GRID continued in small field), ids defined twice, grid
 //    points that no GRID defines, CTETRA with other than 4 or 10 grid

@@ -28,6 +28,8 @@ constexpr const char* kPinnedEntry = "$TETSMOOTH PINNED";
 // Data fields a GRID has (ID CP X1 X2 X3 CD PS SEID) and a CTETRA (EID PID
 // G1 .. G10).
 constexpr std::size_t kGridFields = 8, kTetFields = 12;
+// Nastran ids have at most 8 digits: what a rewritten GRID's 16 columns hold.
+constexpr long long kLargestId = 99999999;
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
   if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
@@ -77,6 +79,7 @@ void DeckReader::grid(const Card& card) {
   const Place at{cards_, card.mark};
   const long long id = id_field(card.field(0), "a grid point id", at);
   const std::string name = "GRID " + std::to_string(id);
+  if (id > kLargestId) throw InputError(at.where(), name + ": Nastran ids have at most 8 digits");
   check_no_more(card, kGridFields, name, at);
   if (const std::string& cp = card.field(1); !cp.empty() && cp != "0")
     throw InputError(at.where(), name + " is given in coordinate system " + text_excerpt(cp) +
@@ -91,7 +94,7 @@ void DeckReader::grid(const Card& card) {
   // What the writer copies when it rewrites the entry must be what Nastran
   // reads there: CD and SEID ids, PS component digits.
   for (const std::size_t d : {std::size_t{5}, std::size_t{7}})
-    if (long long v = 0; !card.field(d).empty() && (!parse_integer(card.field(d), v) || v < -1))
+    if (long long v = 0; !card.field(d).empty() && (!parse_integer(card.field(d), v) || v < -1 || v > kLargestId))
       throw InputError(at.where(), name + ": expected " + (d == 5 ? "a coordinate system id (CD)" : "a SEID") +
                                        ", found " + quoted_token(card.field(d)));
   if (!components(card.field(6)))
@@ -108,8 +111,13 @@ void DeckReader::tet(const Card& card) {
   const Place at{cards_, card.mark};
   const long long id = id_field(card.field(0), "an element id", at);
   check_no_more(card, kTetFields, "CTETRA " + std::to_string(id), at);
+  // A 4-node CTETRA may give its midside fields as 0.
+  const auto given = [&](std::size_t k) {
+    const std::string& f = card.field(2 + k);
+    return !f.empty() && !(k >= 4 && f == "0");
+  };
   int listed = 0;
-  for (std::size_t k = 0; k < 10; ++k) listed += !card.field(2 + k).empty();
+  for (std::size_t k = 0; k < 10; ++k) listed += given(k);
   const bool four = listed == 4 && std::all_of(card.fields.begin() + 2, card.fields.begin() + 6,
                                                [](const std::string& f) { return !f.empty(); });
   if (!four && listed != 10)
@@ -130,6 +138,15 @@ void DeckReader::tet(const Card& card) {
 void DeckReader::pins(const EntryType& type, const Card& card) {
   for (const auto& [first, last] : grid_ranges(type, card, cards_))
     pin_refs_.push_back(PinRef{first, last, type.name, card.mark});
+  orientation_pin(type, card);
+}
+
+void DeckReader::orientation_pin(const EntryType& type, const Card& card) {
+  // The orientation node of a bar, beam, bush or gap (or of their defaults,
+  // BAROR and BEAMOR), where a whole number gives one rather than a vector.
+  if (long long g0 = 0; type.orientation >= 0 &&
+                        parse_integer(card.field(static_cast<std::size_t>(type.orientation)), g0) && g0 > 0)
+    pin_refs_.push_back(PinRef{g0, g0, type.name, card.mark});
 }
 
 void DeckReader::element(const EntryType& type, const Card& card) {
@@ -137,17 +154,16 @@ void DeckReader::element(const EntryType& type, const Card& card) {
   const long long id = id_field(card.field(0), "an element id", at);
   element_ids_.push_back(id);
   element_marks_.push_back(card.mark);
-  // The orientation node of a bar, beam, bush or gap, where it has one.
-  if (long long g0 = 0; type.orientation >= 0 &&
-                        parse_integer(card.field(static_cast<std::size_t>(type.orientation)), g0) && g0 > 0)
-    pin_refs_.push_back(PinRef{g0, g0, type.name, card.mark});
+  orientation_pin(type, card);
   // A shape other formats have: its first shape_grids fields given, no more.
   bool shaped = type.kind != nullptr;
   for (int k = 0; shaped && k < type.count; ++k)
     shaped = card.field(static_cast<std::size_t>(type.first + k)).empty() == (k >= type.shape_grids);
   if (!shaped) {
     add_once(uncarried_, type.name);
-    return pins(type, card);
+    for (const auto& [first, last] : grid_ranges(type, card, cards_))
+      pin_refs_.push_back(PinRef{first, last, type.name, card.mark});
+    return;
   }
   auto it = std::find_if(others_.begin(), others_.end(), [&](const Others& o) { return o.kind == type.kind; });
   if (it == others_.end())
@@ -181,7 +197,8 @@ void DeckReader::entry(const Card& card) {
   add_once(types_, text_excerpt(card.name));
   if (type != nullptr) return pins(*type, card);
   if (card.name == "SPOINT" || card.name == "EPOINT") {
-    const std::vector<std::pair<long long, long long>> ids = grid_ranges(scalar_point_type(), card, cards_, "a scalar point id");
+    const std::vector<std::pair<long long, long long>> ids =
+        grid_ranges(scalar_point_type(), card, cards_, "a scalar point id");
     scalar_points_.insert(scalar_points_.end(), ids.begin(), ids.end());
   } else if (card.name == "GRDSET") {
     grdset_cp_ = card.field(1);

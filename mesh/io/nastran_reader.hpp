@@ -48,6 +48,7 @@ class DeckReader {
   void tet(const Card& card);
   void element(const EntryType& type, const Card& card);
   void pins(const EntryType& type, const Card& card);
+  void orientation_pin(const EntryType& type, const Card& card);
   void pinned_comment(const std::string& line);
   void keep_notes();
 

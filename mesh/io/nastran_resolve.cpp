@@ -4,6 +4,7 @@
 // nastran_io.hpp.
 #include <algorithm>
 #include <array>
+#include <limits>
 
 #include "mesh/errors.hpp"
 #include "mesh/second_order.hpp"
@@ -31,8 +32,9 @@ index_t DeckReader::node_of(long long id, const IdIndex& nodes, std::uint32_t ma
 }
 
 bool DeckReader::scalar_point(long long id) const {
-  return std::any_of(scalar_points_.begin(), scalar_points_.end(),
-                     [id](const auto& range) { return range.first <= id && id <= range.second; });
+  // scalar_points_ is sorted and merged (resolve_pins).
+  const auto after = std::upper_bound(scalar_points_.begin(), scalar_points_.end(), std::make_pair(id, std::numeric_limits<long long>::max()));
+  return after != scalar_points_.begin() && id <= (after - 1)->second;
 }
 
 std::size_t DeckReader::orient_tets() {
@@ -58,6 +60,14 @@ std::size_t DeckReader::orient_tets() {
 }
 
 void DeckReader::resolve_pins(const IdIndex& nodes) {
+  std::sort(scalar_points_.begin(), scalar_points_.end());
+  std::vector<std::pair<long long, long long>> merged;
+  for (const auto& range : scalar_points_)
+    if (!merged.empty() && range.first <= merged.back().second)
+      merged.back().second = std::max(merged.back().second, range.second);
+    else
+      merged.push_back(range);
+  scalar_points_ = std::move(merged);
   // GRDSET's PS stands for a blank one.
   const bool grdset_pins = !blank_or_zero(grdset_ps_);
   std::vector<std::uint8_t> pinned(mesh_.num_nodes(), 0);

@@ -357,6 +357,15 @@ TEST(NastranIo, PointsThatGiveDirectionsOrSetsApartArePinned) {
   ASSERT_EQ(welded.extras.read_notes.size(), 1u);
   EXPECT_EQ(welded.extras.read_notes[0].substr(0, 70),
             "the deck's CWELD entries name grid points that tetsmooth does not read");
+  // So are the entries of types not known at all; properties, materials,
+  // parameters, tables and element loads are known to name none.
+  const TetMesh unknown = read_text(replaced(
+      kStar, "BEGIN BULK\n",
+      "BEGIN BULK\nPARAM,POST,-1\nPSOLID,1,1\nMAT1,1,2.1E5,,.3\nPLOAD4,1,1,1.\nTABLED1,1\nSET1,1,5\nXYZ,5\n"));
+  ASSERT_EQ(unknown.extras.read_notes.size(), 1u);
+  EXPECT_EQ(unknown.extras.read_notes[0],
+            "the deck's SET1, XYZ entries are not read: where they name grid points, their nodes are not pinned (list "
+            "those that must stay on a \"$TETSMOOTH PINNED <id> ...\" comment line)");
 }
 
 TEST(NastranIo, LeftHandedTetsAreTurnedRound) {

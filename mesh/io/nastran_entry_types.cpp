@@ -149,6 +149,19 @@ bool names_grids_unread(const std::string& name) {
   return std::find(std::begin(kUnread), std::end(kUnread), name) != std::end(kUnread);
 }
 
+bool names_no_grids(const std::string& name) {
+  // By prefix: properties (P...: PSOLID, PSHELL, PBAR, ..., and PARAM and the
+  // element pressures PLOAD1/2/4; PLOAD, which names grid points, is read
+  // before this is asked), materials, tables, design and solution data.
+  static const char* const kPrefixes[] = {"P",      "MAT",   "TABLE", "EIG",   "TSTEP", "FREQ",  "NLPARM", "NLPCI",
+                                          "CORD2",  "DESVAR", "DRESP", "DCON",  "DEQATN", "DOPTPRM", "DVPREL",
+                                          "DVMREL", "DVCREL", "DLINK", "DTABLE", "TEMP",  "RLOAD", "TLOAD",  "RANDPS",
+                                          "MONPNT", "SPCADD", "MPCADD", "LOAD",  "DLOAD", "GRAV",  "ACCEL",  "NSM",
+                                          "BCTSET", "BSURF", "BCPROP", "BCTPARA", "SURF"};
+  return std::any_of(std::begin(kPrefixes), std::end(kPrefixes),
+                     [&](const char* prefix) { return name.rfind(prefix, 0) == 0; });
+}
+
 bool is_mesh_entry(const std::string& name) {
   if (name == "GRID" || name == "GRID*" || name == "CTETRA" || name == "CTETRA*") return true;
   const std::string bare = !name.empty() && name.back() == '*' ? name.substr(0, name.size() - 1) : name;

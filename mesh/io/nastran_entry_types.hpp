@@ -59,6 +59,13 @@ const EntryType& scalar_point_type();
 // are not pinned, which the reader says.
 bool names_grids_unread(const std::string& name);
 
+// Entry types known to name no grid point whose node a smoother must keep:
+// properties, materials, tables, parameters, load and constraint sets that
+// combine others, element loads, design and solution data. Any other type
+// the reader does not read gets a note that its points, if it names any,
+// are not pinned.
+bool names_no_grids(const std::string& name);
+
 // Whether an entry of this name is part of a mesh (GRID, CTETRA, another
 // element): none comes before BEGIN BULK, so a deck that opens with one
 // has no executive or case control.

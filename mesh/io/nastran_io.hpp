@@ -49,8 +49,9 @@
 //    for pins nothing else keeps. Scalar points (SPOINT, EPOINT) that these
 //    name are no grid points and pin nothing. Entries of other types are
 //    kept and not read; of those, the ones known to name grid points
-//    (CWELD, CFAST, RSPLINE, GENEL, ...) get a note that their nodes may
-//    move.
+//    (CWELD, CFAST, RSPLINE, GENEL, ...) and those of types not known at
+//    all get a note that their nodes may move (names_no_grids lists the
+//    types known to name none).
 //  * Refused with the file's line: superelements (BEGIN SUPER, BEGIN BULK
 //    SUPER=), replicated entries ('=' lines), a carriage return inside a
 //    line (mixed line ends, which would shift columns), GRID, CD and SEID

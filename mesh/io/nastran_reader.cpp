@@ -206,6 +206,8 @@ void DeckReader::entry(const Card& card) {
     grdset_mark_ = card.mark;
   } else if (names_grids_unread(card.name)) {
     add_once(unread_, card.name);
+  } else if (!names_no_grids(card.name)) {
+    add_once(unknown_, text_excerpt(card.name));
   }
 }
 
@@ -219,6 +221,10 @@ void DeckReader::keep_notes() {
     e.read_notes.push_back("the deck's " + joined(unread_) +
                            " entries name grid points that tetsmooth does not read, so their nodes are not pinned: "
                            "list those that must stay on a \"$TETSMOOTH PINNED <id> ...\" comment line");
+  if (!unknown_.empty())
+    e.read_notes.push_back("the deck's " + joined(unknown_) +
+                           " entries are not read: where they name grid points, their nodes are not pinned (list "
+                           "those that must stay on a \"$TETSMOOTH PINNED <id> ...\" comment line)");
   if (meshio_tets_)
     e.read_notes.push_back("CTETRA_ entries (meshio 5's name for 10-node tets, which Nastran does not know) were "
                            "read as CTETRA");

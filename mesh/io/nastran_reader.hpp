@@ -79,7 +79,10 @@ class DeckReader {
   // GRDSET's defaults for blank GRID fields: its CP and PS, and its line.
   std::string grdset_cp_, grdset_ps_;
   std::uint32_t grdset_mark_ = 0;
-  std::vector<std::string> types_, uncarried_, unread_;
+  // Entry types: those not read (for other formats' notes), elements that
+  // only pin, types known to name grid points in layouts not read, and
+  // types not known at all.
+  std::vector<std::string> types_, uncarried_, unread_, unknown_;
 };
 
 }  // namespace tetsmooth::nastran

@@ -88,17 +88,12 @@ void write_elements(std::ostream& out, const char* type, int nodes_each, std::si
 
 // Pinned nodes that no element of a block pins: the reader pins the set.
 void write_pinned_set(std::ostream& out, const TetMesh& mesh, const std::vector<long long>& node_ids) {
-  std::vector<std::uint8_t> by_element(mesh.num_nodes(), 0);
-  mark_element_nodes(mesh.extras.blocks, by_element);
-  std::size_t written = 0;
-  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i) {
-    if (!mesh.fixed[i] || by_element[i]) continue;
-    if (written == 0) out << "*NSET, NSET=TETSMOOTH_PINNED\n";
-    if (written > 0) out << (written % kSetEntriesPerLine == 0 ? "\n" : ", ");
-    put_integer(out, node_ids[i]);
-    ++written;
+  const std::vector<long long> listed = pins_to_list(mesh, node_ids);
+  for (std::size_t k = 0; k < listed.size(); ++k) {
+    out << (k == 0 ? "*NSET, NSET=TETSMOOTH_PINNED\n" : k % kSetEntriesPerLine == 0 ? "\n" : ", ");
+    put_integer(out, listed[k]);
   }
-  if (written > 0) out << '\n';
+  if (!listed.empty()) out << '\n';
 }
 
 void write_new_deck(const TetMesh& mesh, std::ostream& out) {

@@ -1,6 +1,7 @@
 #include "mesh/io/file_numbers.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <utility>
 
 namespace tetsmooth {
@@ -44,6 +45,15 @@ std::size_t elements_in(const PassThroughBlock& b) {
 std::vector<long long> element_numbers(const TetMesh& mesh, long long largest) {
   const auto [ids, count] = file_element_numbers(mesh);
   return numbers_or_positions(ids, count, largest);
+}
+
+std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers) {
+  std::vector<std::uint8_t> by_element(mesh.num_nodes(), 0);
+  mark_element_nodes(mesh.extras.blocks, by_element);
+  std::vector<long long> listed;
+  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i)
+    if (mesh.fixed[i] && !by_element[i]) listed.push_back(node_numbers[i]);
+  return listed;
 }
 
 std::string numbers_lost(const TetMesh& mesh, long long largest) {

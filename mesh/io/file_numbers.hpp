@@ -25,6 +25,11 @@ std::size_t elements_in(const PassThroughBlock& b);
 // order, as numbers_or_positions gives them.
 std::vector<long long> element_numbers(const TetMesh& mesh, long long largest);
 
+// The numbers (from `node_numbers`, one per node) of the pinned nodes that
+// no pass-through element pins, in node order: those a new deck lists
+// itself (a node set, a comment line) to keep them pinned.
+std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers);
+
 // The file's numbers that a new deck cannot keep: "node", "element", "node
 // and element", or "" when it keeps them all (or the file had none).
 std::string numbers_lost(const TetMesh& mesh, long long largest);

@@ -115,16 +115,10 @@ void check_new_deck(const TetMesh& mesh) {
 // Pinned nodes that no element of a block pins, in comment lines the reader
 // reads back.
 void write_pinned_comment(std::ostream& out, const TetMesh& mesh, const std::vector<long long>& node_ids) {
-  std::vector<std::uint8_t> by_element(mesh.num_nodes(), 0);
-  mark_element_nodes(mesh.extras.blocks, by_element);
-  std::size_t written = 0;
-  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i) {
-    if (!mesh.fixed[i] || by_element[i]) continue;
-    out << (written % kPinsPerLine == 0 ? (written == 0 ? "$TETSMOOTH PINNED" : "\n$TETSMOOTH PINNED") : "");
-    out << ' ' << node_ids[i];
-    ++written;
-  }
-  if (written > 0) out << '\n';
+  const std::vector<long long> listed = pins_to_list(mesh, node_ids);
+  for (std::size_t k = 0; k < listed.size(); ++k)
+    out << (k == 0 ? "$TETSMOOTH PINNED " : k % kPinsPerLine == 0 ? "\n$TETSMOOTH PINNED " : " ") << listed[k];
+  if (!listed.empty()) out << '\n';
 }
 
 void write_new_deck(const TetMesh& mesh, std::ostream& out) {

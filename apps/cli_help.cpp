@@ -35,6 +35,8 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
                             whole, with the new coordinates)
   .bdf/.nas   nastran       Nastran bulk data, small, large or free field (a deck
                             read is written back whole, moved GRIDs in large field)
+  .f3grid     flac3d        FLAC3D grid, ASCII (a grid read is written back whole,
+                            with the new coordinates; zone groups are regions)
   .tsm        tsm           tetsmooth binary cache
 )";
 
@@ -138,7 +140,7 @@ tets with q < 0.1, inverted and degenerate tets, the smallest dihedral angle,
 the mean of the mean-ratio metric, and the K worst tets with their nodes.
 Tet and node indices are 0-based, in file order, whatever the file numbers;
 where the file numbers its elements or nodes itself (Gmsh tags, Abaqus
-numbers, Nastran ids), its numbers follow them.
+numbers, Nastran ids, FLAC3D ids), its numbers follow them.
 Second-order (10-node) tets are measured by their corner tets.
 
 Options:

@@ -6,7 +6,7 @@
 #
 #   scripts/run_fuzzers.sh [target ...]      targets: gmsh medit vtu vtk
 #                                            tetgen_node tetgen_ele tsm abaqus
-#                                            nastran (default: all)
+#                                            nastran flac3d (default: all)
 # Environment:
 #   FUZZ_SECONDS    time per target (default 20)
 #   FUZZ_BUILD_DIR  build folder (default build-fuzz); the growing corpus is
@@ -19,7 +19,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-20}
 jobs=${FUZZ_JOBS:-2}
-all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran)
+all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran flac3d)
 targets=("$@")
 [[ ${#targets[@]} -eq 0 ]] && targets=("${all_targets[@]}")
 
@@ -52,6 +52,7 @@ seed tetgen_node "$data"/*.node
 seed tetgen_ele "$data"/*.ele
 seed abaqus "$data"/*.inp
 seed nastran "$data"/*.bdf
+seed flac3d "$data"/*.f3grid
 # A deck in the three field formats besides Gmsh's small field.
 cat >"$seeds/nastran/fields.bdf" <<'BDF'
 SOL 101

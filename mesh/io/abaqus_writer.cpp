@@ -120,7 +120,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   write_pinned_set(out, mesh, node_ids);
 }
 
-constexpr DeckWriter kWriter{"abaqus", "Abaqus", check_new_deck, write_deck, write_new_deck};
+constexpr DeckWriter kWriter{"abaqus", "Abaqus deck", check_new_deck, write_deck, write_new_deck};
 
 }  // namespace
 

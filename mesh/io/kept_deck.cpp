@@ -20,19 +20,19 @@ bool has_kept_deck(const TetMesh& mesh, const std::string& format_key) {
   return raw_section(mesh.extras, format_key + ":deck") != nullptr;
 }
 
-void check_kept_deck(const TetMesh& mesh, const std::string& format_key, const char* format) {
+void check_kept_deck(const TetMesh& mesh, const std::string& format_key, const char* file) {
   const std::string expected = counts(mesh);
   const std::string& stamp = *raw_section(mesh.extras, format_key + ":deck");
   const bool numbered = mesh.extras.node_tags.size() == mesh.num_nodes();
   if (stamp != expected || !numbered)
-    throw OutputError(std::string("the ") + format + " deck read with this mesh lists (nodes, tets) " + stamp +
+    throw OutputError(std::string("the ") + file + " read with this mesh lists (nodes, tets) " + stamp +
                       ", and the mesh has " + expected + (numbered ? "" : " without their numbers") +
-                      ": a deck is written back only for the mesh it was read with");
+                      ": it is written back only for the mesh it was read with");
 }
 
 void DeckWriter::check(const TetMesh& mesh) const {
   if (has_kept_deck(mesh, format_key))
-    check_kept_deck(mesh, format_key, format);
+    check_kept_deck(mesh, format_key, file);
   else
     check_new(mesh);
 }
@@ -47,7 +47,7 @@ void DeckWriter::write_body(const TetMesh& mesh, std::ostream& out) const {
 void DeckWriter::write(const TetMesh& mesh, std::ostream& out) const {
   check(mesh);
   write_body(mesh, out);
-  if (!out) throw OutputError(std::string("the ") + format + " output stream failed");
+  if (!out) throw OutputError(std::string("the ") + file + " output stream failed");
 }
 
 void DeckWriter::write_file(const TetMesh& mesh, const std::string& path) const {

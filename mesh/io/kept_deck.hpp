@@ -19,15 +19,15 @@ bool has_kept_deck(const TetMesh& mesh, const std::string& format_key);
 
 // Throws OutputError unless the deck still describes the mesh, with its
 // node numbers: only coordinates change on the way through tetsmooth, and
-// the deck's other lines are written as read. `format` names the deck in
-// the message ("Abaqus").
-void check_kept_deck(const TetMesh& mesh, const std::string& format_key, const char* format);
+// the deck's other lines are written as read. `file` names the deck in
+// the message ("Abaqus deck").
+void check_kept_deck(const TetMesh& mesh, const std::string& format_key, const char* file);
 
 // A deck format's writer: the deck read with the mesh where it has one
 // (write_kept), else a new deck (check_new, then write_new).
 struct DeckWriter {
   const char* format_key;  // "abaqus"
-  const char* format;      // "Abaqus", for messages
+  const char* file;        // "Abaqus deck", for messages
   void (*check_new)(const TetMesh& mesh);
   void (*write_kept)(const TetMesh& mesh, std::ostream& out);
   void (*write_new)(const TetMesh& mesh, std::ostream& out);

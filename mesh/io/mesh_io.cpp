@@ -7,6 +7,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/nastran_io.hpp"
@@ -38,6 +39,8 @@ constexpr FormatName kNames[] = {
     {"inp", MeshFormat::Abaqus},
     {"nastran", MeshFormat::Nastran},
     {"bdf", MeshFormat::Nastran},
+    {"flac3d", MeshFormat::Flac3d},
+    {"f3grid", MeshFormat::Flac3d},
 };
 
 struct Extension {
@@ -48,6 +51,7 @@ constexpr Extension kExtensions[] = {
     {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},   {".vtk", MeshFormat::Vtk},
     {".msh", MeshFormat::Msh41},   {".mesh", MeshFormat::Medit}, {".tsm", MeshFormat::Cache},
     {".inp", MeshFormat::Abaqus},  {".bdf", MeshFormat::Nastran}, {".nas", MeshFormat::Nastran},
+    {".f3grid", MeshFormat::Flac3d},
 };
 
 std::string lower(std::string s) {
@@ -74,7 +78,7 @@ MeshFormat parse_format(const std::string& name) {
   for (const FormatName& f : kNames)
     if (key == f.name) return f.format;
   throw UsageError("unknown mesh format '" + name +
-                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus or nastran)");
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran or flac3d)");
 }
 
 const char* format_name(MeshFormat f) {
@@ -89,7 +93,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 
@@ -119,6 +123,8 @@ TetMesh read_mesh(const std::string& path, MeshFormat format) {
       return read_abaqus_file(path);
     case MeshFormat::Nastran:
       return read_nastran_file(path);
+    case MeshFormat::Flac3d:
+      return read_flac3d_file(path);
     case MeshFormat::Auto:
       break;
   }
@@ -147,6 +153,8 @@ void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format,
       return write_abaqus_file(mesh, path);
     case MeshFormat::Nastran:
       return write_nastran_file(mesh, path);
+    case MeshFormat::Flac3d:
+      return write_flac3d_file(mesh, path);
     case MeshFormat::Auto:
       break;
   }

@@ -24,10 +24,11 @@ enum class MeshFormat {
   Cache,        // tetsmooth binary cache .tsm
   Abaqus,       // Abaqus/CalculiX input deck .inp
   Nastran,      // Nastran bulk data .bdf, .nas
+  Flac3d,       // FLAC3D grid .f3grid (ASCII)
 };
 
 // Parses a --format value ("tetgen", "vtu", "vtk", "msh", "msh41", "msh41-binary",
-// "msh22", "medit", "tsm", "abaqus" or "inp", "nastran" or "bdf"); throws UsageError for anything else.
+// "msh22", "medit", "tsm", "abaqus" or "inp", "nastran" or "bdf", "flac3d" or "f3grid"); throws UsageError for anything else.
 MeshFormat parse_format(const std::string& name);
 const char* format_name(MeshFormat f);
 

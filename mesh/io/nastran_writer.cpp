@@ -161,7 +161,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   out << "ENDDATA\n";
 }
 
-constexpr DeckWriter kWriter{"nastran", "Nastran", check_new_deck, write_deck, write_new_deck};
+constexpr DeckWriter kWriter{"nastran", "Nastran deck", check_new_deck, write_deck, write_new_deck};
 
 }  // namespace
 

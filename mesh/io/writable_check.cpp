@@ -10,6 +10,7 @@
 #include "mesh/second_order.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/nastran_io.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/gmsh_detail.hpp"
@@ -77,6 +78,8 @@ void write_probe(const TetMesh& probe, MeshFormat format, std::ostream& out) {
       return write_abaqus(probe, out);
     case MeshFormat::Nastran:
       return write_nastran(probe, out);
+    case MeshFormat::Flac3d:
+      return write_flac3d(probe, out);
     case MeshFormat::Auto:
       break;
   }
@@ -121,13 +124,14 @@ std::vector<std::uint8_t> kept_interface_nodes(const TetMesh& mesh, MeshFormat f
 
 // Pinned nodes that the format loses and that a later run would move: VTU,
 // VTK, Medit (RequiredVertices), Abaqus (the deck, or a node set) and
-// Nastran (the deck, or a comment it reads back) write every pin, MSH only
+// Nastran and FLAC3D (the deck or grid, or a comment it reads back) write
+// every pin, MSH only
 // element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
 // an interface where the format keeps what tells of it.
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit ||
-      format == MeshFormat::Abaqus || format == MeshFormat::Nastran)
+      format == MeshFormat::Abaqus || format == MeshFormat::Nastran || format == MeshFormat::Flac3d)
     return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
   if (format != MeshFormat::TetGen && format != MeshFormat::Cache) mark_element_nodes(mesh.extras.blocks, kept);
@@ -253,22 +257,27 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                                             : " keeps only the region tags (the first attribute's values where "
                                               "whole, else their ranks)"));
   const bool msh = f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary || f == MeshFormat::Msh22;
-  // MSH, Abaqus and Nastran keep the file's node and element numbers.
+  // MSH, Abaqus, Nastran and FLAC3D keep the file's node and element numbers.
   const bool node_ids = !numbered_by_position(e.node_tags), element_ids = !numbered_by_position(e.tet_element_tags);
   const bool abaqus = raw_section(e, "abaqus:deck") != nullptr, nastran = raw_section(e, "nastran:deck") != nullptr;
-  const bool keeps_numbers = msh || f == MeshFormat::Abaqus || f == MeshFormat::Nastran;
+  const bool flac3d = raw_section(e, "flac3d:deck") != nullptr;
+  const bool keeps_numbers = msh || f == MeshFormat::Abaqus || f == MeshFormat::Nastran || f == MeshFormat::Flac3d;
   if (!keeps_numbers && (node_ids || element_ids))
-    notes.push_back(std::string(abaqus ? "the Abaqus " : nastran ? "the Nastran " : "the Gmsh ") +
-                    (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element") +
-                    (abaqus ? " numbers" : nastran ? " ids" : " tags") + " will not be written: " + name +
+    notes.push_back(std::string(abaqus ? "the Abaqus " : nastran ? "the Nastran " : flac3d ? "the FLAC3D " : "the Gmsh ") +
+                    (flac3d ? (node_ids && element_ids ? "gridpoint and zone" : node_ids ? "gridpoint" : "zone")
+                            : (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element")) +
+                    (abaqus ? " numbers" : nastran || flac3d ? " ids" : " tags") + " will not be written: " + name +
                     " numbers them by position");
   const std::string lost = f == MeshFormat::Abaqus ? abaqus_numbers_lost(mesh)
                            : f == MeshFormat::Nastran ? nastran_numbers_lost(mesh)
+                           : f == MeshFormat::Flac3d  ? flac3d_numbers_lost(mesh)
                                                       : "";
   if (!lost.empty())
     notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct" +
-                    (f == MeshFormat::Nastran ? ", at most 99,999,999" : "") + "): " + name +
-                    " numbers them 1, 2, ... instead");
+                    (f == MeshFormat::Nastran ? ", at most 99,999,999"
+                     : f == MeshFormat::Flac3d ? ", at most 2,147,483,647"
+                                               : "") +
+                    "): " + name + " numbers them 1, 2, ... instead");
   if (const std::string* files = raw_section(e, "abaqus:includes"); files != nullptr && f == MeshFormat::Abaqus)
     notes.push_back("the *INCLUDE files (" + *files + ") will be written inline, in the one output deck");
   if (const std::string* files = raw_section(e, "nastran:includes"); files != nullptr && f == MeshFormat::Nastran)
@@ -282,11 +291,30 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (const std::string* types = raw_section(e, "nastran:uncarried"); types != nullptr && f != MeshFormat::Nastran)
     notes.push_back("the " + *types + " elements will not be written: " + name +
                     " has no place for them (their nodes were pinned)");
-  if (abaqus && f != MeshFormat::Abaqus && !msh && raw_section(e, "$PhysicalNames") != nullptr)
-    notes.push_back("the names of the regions (the deck's element sets) will not be written: " + name +
-                    " has no place for them");
-  if (!msh && !abaqus) {
-    const bool names = raw_section(e, "$PhysicalNames") != nullptr;
+  if (const std::string* count = raw_section(e, "flac3d:cut-bricks"); count != nullptr && f != MeshFormat::Flac3d) {
+    const bool one = *count == "1";
+    notes.push_back(*count + (one ? " B7 zone" : " B7 zones") + " will not be written: " + name + " has no place for " +
+                    (one ? "it (its nodes were pinned)" : "them (their nodes were pinned)"));
+  }
+  if (f == MeshFormat::Flac3d && !flac3d) {
+    std::string kinds;
+    for (const PassThroughBlock& b : e.blocks)
+      if (const std::size_t n = b.connectivity.size() / static_cast<std::size_t>(std::max(b.nodes_per_element, 1));
+          n > 0 && !flac3d_writes_kind(b.kind))
+        kinds += (kinds.empty() ? "" : ", ") + count_of(n, b.kind);
+    if (!kinds.empty())
+      notes.push_back(kinds + " will not be written: " + name +
+                      " holds tets, bricks, wedges, pyramids, triangles and quads (their nodes are listed as pins)");
+  }
+  // MSH writes the names of the regions as physical names, FLAC3D as its
+  // groups' names.
+  const bool keeps_names = msh || f == MeshFormat::Flac3d;
+  if ((abaqus || flac3d) && f != MeshFormat::Abaqus && !keeps_names && raw_section(e, "$PhysicalNames") != nullptr)
+    notes.push_back(std::string("the names of the regions (the ") +
+                    (abaqus ? "deck's element sets" : "grid's zone and face groups") + ") will not be written: " +
+                    name + " has no place for them");
+  if (!msh && !abaqus && !flac3d) {
+    const bool names = !keeps_names && raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);
     if (names || entities)
       notes.push_back(std::string("the Gmsh ") + (names && entities ? "physical names and entity tags" : names ? "physical names" : "entity tags") +

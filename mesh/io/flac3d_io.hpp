@@ -1,0 +1,85 @@
+#pragma once
+// FLAC3D grids (.f3grid, ASCII), the grid files of Itasca's FLAC3D (zone
+// import / zone export) that geomechanics models are built from. A grid is
+// read with its text kept, so that a smoothed grid is the input with only
+// the G lines of moved gridpoints changed.
+//
+// The format (one record a line; a line whose first character other than
+// blanks is '*' is a comment; blank lines are skipped; commas may separate
+// values, as blanks do; keywords in any case):
+//  * G id x y z: a gridpoint. Ids are positive whole numbers, in any order
+//    and with gaps, kept as FileExtras::node_tags.
+//  * Z type id gp...: a zone of `type` over the gridpoints with those ids.
+//    T4 (4 gridpoints) is a tet, read as it is listed: FLAC3D's first four
+//    gridpoints of a zone are right-handed, as tetsmooth's positive tets
+//    (tet_mesh.hpp). B8, W6 and P5 (brick, wedge, pyramid) pass through as
+//    hexahedron, wedge and pyramid blocks, their gridpoints reordered from
+//    FLAC3D's (the corners of a brick in the order origin, x, y, z, xy, yz,
+//    xz, xyz; a wedge and a pyramid the first six and the first five of
+//    those, collapsed) to VTK's (flac3d_zone_types.hpp); B7 (a brick with a
+//    corner cut off) only pins, kept in the FLAC3D output alone. Zone ids
+//    are kept as tet_element_tags and the blocks' element_tags.
+//  * F type id gp...: a face, T3 or Q4 (triangle, quad blocks); face ids
+//    are their own numbering.
+//  * ZGROUP name [SLOT slot] and FGROUP name [SLOT slot], then lines of
+//    zone or face ids up to the next record or comment: a group. A name or
+//    slot may be quoted ('...' or "...", and may then hold blanks).
+//  * Comment lines "* TETSMOOTH PINNED id ...", which the writer leaves for
+//    pins nothing else keeps.
+//
+// Reading: zones and faces other than tets pin their gridpoints, as do the
+// pin comments. A zone's region tag is the set of groups that hold it, in
+// every slot: two zones share a tag when each group holds both or neither
+// (numbered 1, 2, ... in zone order), so that the interfaces of materials,
+// excavation stages and any other grouping stay in place. Faces are tagged
+// so by their FGROUPs. A grid without groups has no region tags. The names
+// of the groups holding each tag go to $PhysicalNames (dimension 3 for
+// zones, 2 for faces), which MSH output writes.
+// Refused with the file's line (InputError): a record other than these, a
+// binary grid (FLAC3D writes one with zone export ... binary), ids that are
+// not positive or are defined twice, gridpoints, zones or faces that nothing
+// defines, a zone or face with the wrong number of gridpoints, and a grid
+// without T4 zones.
+// The grid is kept in FileExtras::raw_sections: "flac3d:text" (the file as
+// read), "flac3d:deck" ("<nodes> <tets>", what it describes) and
+// "flac3d:cut-bricks" (how many B7 zones it has, for a note when another
+// format drops them).
+//
+// Writing: a mesh read from a grid is written as that grid, line for line,
+// but for the G lines of gridpoints whose coordinates changed, written
+// "G id x y z" with the shortest decimals that read back exactly. The mesh
+// must still have the grid's gridpoint and zone counts.
+// Any other mesh is written as a new grid: gridpoints, T4 zones, then B8,
+// W6 and P5 zones for hexahedron, wedge and pyramid blocks (gridpoints
+// reordered to FLAC3D's, mirrored where they would be left-handed), a
+// ZGROUP for each region tag (named by $PhysicalNames where it has a name,
+// else "region <tag>"), then T3 and Q4 faces for triangle and quad blocks
+// with an FGROUP for each of their tags, then "* TETSMOOTH PINNED" lines for
+// the pinned nodes that no written zone or face pins (including the nodes of
+// blocks FLAC3D has no place for: lines, points, second-order faces, which
+// are not written). Ids are the file's where they are positive, distinct and
+// at most 2^31 - 1, else 1, 2, ... in order. Second-order tets are refused:
+// FLAC3D zones are first order.
+#include <iosfwd>
+#include <string>
+
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth {
+
+// `source` names the grid in messages.
+TetMesh read_flac3d(std::istream& in, const std::string& source);
+TetMesh read_flac3d_file(const std::string& path);
+
+void write_flac3d(const TetMesh& mesh, std::ostream& out);
+void write_flac3d_file(const TetMesh& mesh, const std::string& path);
+
+// Whether a new FLAC3D grid writes the elements of a block of `kind` (as a
+// zone or a face); the others are dropped, their nodes listed as pins.
+bool flac3d_writes_kind(const std::string& kind);
+
+// The file's own numbers that a new grid for `mesh` cannot keep (see
+// file_numbers.hpp): "node", "element", "node and element", or "".
+std::string flac3d_numbers_lost(const TetMesh& mesh);
+
+}  // namespace tetsmooth

@@ -1,0 +1,27 @@
+#pragma once
+// The lines of a FLAC3D grid as its reader and its writer split them
+// (flac3d_io.hpp; not a public API).
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tetsmooth::flac3d {
+
+// Whether the line is a comment: its first character other than blanks is
+// '*'.
+bool is_comment(std::string_view line);
+
+// The line's values, split at blanks (spaces, tabs, CR) and commas; a value
+// that starts with a quote (' or ") runs to the same quote and is given
+// without them, blanks and all. Returns false, `values` then incomplete,
+// when such a quote is not closed.
+bool split_values(std::string_view line, std::vector<std::string_view>& values);
+
+// The text of a comment line that lists pins ("* TETSMOOTH PINNED 4 7 9"):
+// true and the ids (as text) for such a line, else false.
+bool pinned_comment(std::string_view line, std::vector<std::string_view>& ids);
+
+// "* TETSMOOTH PINNED", the start of a pin comment line.
+inline constexpr const char* kPinnedComment = "* TETSMOOTH PINNED";
+
+}  // namespace tetsmooth::flac3d

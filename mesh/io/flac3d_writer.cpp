@@ -1,0 +1,265 @@
+// FLAC3D grid writing (flac3d_io.hpp): a grid read with the mesh comes back
+// as it was read, the G lines of moved gridpoints rewritten; any other mesh
+// gets a new grid of its zones, faces, groups and pins.
+#include <array>
+#include <map>
+#include <ostream>
+#include <set>
+#include <utility>
+#include <string_view>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/file_numbers.hpp"
+#include "mesh/io/flac3d_io.hpp"
+#include "mesh/io/flac3d_records.hpp"
+#include "mesh/io/flac3d_zone_types.hpp"
+#include "mesh/io/kept_deck.hpp"
+#include "mesh/io/number_text.hpp"
+#include "mesh/io/region_sets.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/second_order.hpp"
+#include "mesh/vec3.hpp"
+
+namespace tetsmooth {
+namespace {
+
+using flac3d::ZoneType;
+
+// FLAC3D's ids are positive; its binary grids hold them in 32 bits, and
+// ids up to 2^31 - 1 are safe in both.
+constexpr long long kLargestId = 2147483647;
+// Ids a line of a group or of a pin comment lists.
+constexpr std::size_t kIdsPerLine = 10;
+
+// --- A grid read with the mesh ----------------------------------------------
+
+void write_gridpoint(std::ostream& out, std::string_view id, const double* xyz) {
+  out << "G " << id;
+  for (std::size_t c = 0; c < 3; ++c) {
+    out << ' ';
+    put_real(out, xyz[c]);
+  }
+}
+
+// The grid's lines as read, but for the G lines of moved gridpoints.
+void write_kept_grid(const TetMesh& mesh, std::ostream& out) {
+  const std::string& text = *raw_section(mesh.extras, "flac3d:text");
+  std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  out << text.substr(0, start);
+  std::size_t node = 0;
+  std::vector<std::string_view> values;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    const bool broken = end != std::string::npos;
+    if (!broken) end = text.size();
+    const std::string_view line(text.data() + start, end - start);
+    start = end + 1;
+    // The reader took each such line for the next gridpoint.
+    const bool gridpoint = !flac3d::is_comment(line) && flac3d::split_values(line, values) && values.size() == 5 &&
+                           upper_case(values[0]) == "G";
+    bool moved = false;
+    if (gridpoint) {
+      if (node >= mesh.num_nodes()) throw OutputError("the kept FLAC3D grid has more G lines than the mesh nodes");
+      for (std::size_t c = 0; c < 3; ++c) {
+        double v = 0;
+        moved = moved || !parse_real(values[2 + c], v) || v != mesh.xyz[3 * node + c];
+      }
+    }
+    if (moved) {
+      write_gridpoint(out, values[1], &mesh.xyz[3 * node]);
+      if (!line.empty() && line.back() == '\r') out << '\r';
+    } else {
+      out << line;
+    }
+    if (broken) out << '\n';
+    node += gridpoint;
+  }
+}
+
+// --- A new grid ---------------------------------------------------------------
+
+// Whether a block's elements are written as zones or faces of `record`.
+bool written_as(const PassThroughBlock& b, char record) {
+  return flac3d_writes_kind(b.kind) && flac3d::zone_type_of_kind(b.kind)->record == record;
+}
+
+// The file's ids of the zones (record 'Z': the tets, then the elements of
+// each block written as zones) or the faces ('F'), in that order, and how
+// many there are; the ids are empty unless every one has one.
+std::pair<std::vector<long long>, std::size_t> file_ids(const TetMesh& mesh, char record) {
+  const FileExtras& e = mesh.extras;
+  std::vector<long long> ids;
+  std::size_t count = 0;
+  bool complete = true;
+  if (record == 'Z') {
+    ids = e.tet_element_tags;
+    count = mesh.num_tets();
+    complete = ids.size() == count;
+  }
+  for (const PassThroughBlock& b : e.blocks)
+    if (written_as(b, record)) {
+      count += elements_in(b);
+      complete = complete && b.element_tags.size() == elements_in(b);
+      ids.insert(ids.end(), b.element_tags.begin(), b.element_tags.end());
+    }
+  return {complete ? ids : std::vector<long long>{}, count};
+}
+
+// The ids a new grid gives the zones or the faces (file_ids' order): the
+// file's where they are positive and distinct (zones and faces are numbered
+// apart), else 1, 2, ...
+std::vector<long long> new_ids(const TetMesh& mesh, char record) {
+  const auto [ids, count] = file_ids(mesh, record);
+  return numbers_or_positions(ids, count, kLargestId);
+}
+
+void check_new_grid(const TetMesh& mesh) {
+  if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
+  check_first_order_output(mesh, "FLAC3D");
+  std::size_t elements = mesh.num_tets();
+  for (const PassThroughBlock& b : mesh.extras.blocks) elements += elements_in(b);
+  if (mesh.num_nodes() > static_cast<std::size_t>(kLargestId) || elements > static_cast<std::size_t>(kLargestId))
+    throw OutputError("FLAC3D ids are at most 2^31 - 1, and the mesh has more nodes or elements");
+}
+
+// A group's name in quotes: double ones, or single ones for a name that
+// holds a double quote (with any single quote in it made a double one).
+std::string quoted_name(std::string name) {
+  if (name.find('"') == std::string::npos) return '"' + name + '"';
+  for (char& c : name)
+    if (c == '\'') c = '"';
+  return '\'' + name + '\'';
+}
+
+void write_ids(std::ostream& out, const char* first_line, const char* next_lines, const std::vector<long long>& ids) {
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    out << (k == 0 ? first_line : k % kIdsPerLine == 0 ? next_lines : " ");
+    put_integer(out, ids[k]);
+  }
+  if (!ids.empty()) out << '\n';
+}
+
+// The elements of each region tag, and the tags in the order met.
+class Groups {
+ public:
+  void add(int tag, long long id) {
+    auto [it, added] = members_.try_emplace(tag);
+    if (added) order_.push_back(tag);
+    it->second.push_back(id);
+  }
+  // One GROUP line a tag ("ZGROUP", say), named by `names` where they name
+  // it, each name once.
+  void write(std::ostream& out, const char* keyword, const std::map<int, std::string>& names) const {
+    std::set<std::string> used;
+    for (int tag : order_) {
+      const auto named = names.find(tag);
+      std::string name = named != names.end() ? named->second : "region " + std::to_string(tag);
+      if (!used.insert(name).second) used.insert(name += " (tag " + std::to_string(tag) + ")");
+      out << keyword << ' ' << quoted_name(name) << " SLOT 1\n";
+      write_ids(out, " ", "\n ", members_.at(tag));
+    }
+  }
+
+ private:
+  std::map<int, std::vector<long long>> members_;
+  std::vector<int> order_;
+};
+
+// FLAC3D's list of a zone or face from its nodes in VTK's order, mirrored
+// where the first four would be left-handed.
+std::array<index_t, 8> file_order(const TetMesh& mesh, const ZoneType& type, const std::int32_t* nodes) {
+  std::array<index_t, 8> listed{}, mirrored{};
+  for (std::size_t k = 0; k < type.nodes; ++k) listed[static_cast<std::size_t>(type.from_file[k])] = nodes[k];
+  if (type.record != 'Z') return listed;
+  const auto at = [&](std::size_t k) {
+    const double* p = &mesh.xyz[3 * static_cast<std::size_t>(listed[k])];
+    return Vec3<double>{p[0], p[1], p[2]};
+  };
+  const Vec3<double> o = at(0);
+  if (dot(at(1) - o, cross(at(2) - o, at(3) - o)) >= 0) return listed;
+  for (std::size_t k = 0; k < type.nodes; ++k) mirrored[k] = listed[static_cast<std::size_t>(type.mirrored[k])];
+  return mirrored;
+}
+
+void write_new_grid(const TetMesh& mesh, std::ostream& out) {
+  const FileExtras& e = mesh.extras;
+  const std::vector<long long> node_ids = numbers_or_positions(e.node_tags, mesh.num_nodes(), kLargestId);
+  const std::string* physical = raw_section(e, "$PhysicalNames");
+  const std::string no_names;
+  out << "* FLAC3D grid written by tetsmooth\n* GRIDPOINTS\n";
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    write_gridpoint(out, std::to_string(node_ids[i]), &mesh.xyz[3 * i]);
+    out << '\n';
+  }
+  const auto node_text = [&](index_t n) { return node_ids[static_cast<std::size_t>(n)]; };
+  // Zones, then faces, each with their groups.
+  for (const char record : {'Z', 'F'}) {
+    out << (record == 'Z' ? "* ZONES\n" : "* FACES\n");
+    Groups groups;
+    const std::vector<long long> ids = new_ids(mesh, record);
+    std::size_t next = 0;  // in ids
+    if (record == 'Z')
+      for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+        out << "Z T4 " << ids[next];
+        for (std::size_t k = 0; k < 4; ++k) out << ' ' << node_text(mesh.tets[4 * t + k]);
+        out << '\n';
+        if (e.tet_tags.size() == mesh.num_tets()) groups.add(e.tet_tags[t], ids[next]);
+        ++next;
+      }
+    for (const PassThroughBlock& b : e.blocks) {
+      if (!written_as(b, record)) continue;
+      const ZoneType& type = *flac3d::zone_type_of_kind(b.kind);
+      const std::size_t count = elements_in(b);
+      for (std::size_t i = 0; i < count; ++i, ++next) {
+        const std::array<index_t, 8> listed = file_order(mesh, type, &b.connectivity[i * type.nodes]);
+        out << record << ' ' << type.code << ' ' << ids[next];
+        for (std::size_t k = 0; k < type.nodes; ++k) out << ' ' << node_text(listed[k]);
+        out << '\n';
+        if (b.tags.size() == count) groups.add(b.tags[i], ids[next]);
+      }
+    }
+    out << (record == 'Z' ? "* ZONE GROUPS\n" : "* FACE GROUPS\n");
+    groups.write(out, record == 'Z' ? "ZGROUP" : "FGROUP",
+                 physical_names_of(physical != nullptr ? *physical : no_names, record == 'Z' ? 3 : 2));
+  }
+  // Pins that no zone or face written keeps: the file's own, and the nodes
+  // of the elements FLAC3D has no place for.
+  std::vector<std::uint8_t> listed(mesh.num_nodes(), 0), kept(mesh.num_nodes(), 0);
+  for (std::size_t i = 0; i < mesh.fixed.size() && i < mesh.num_nodes(); ++i) listed[i] = mesh.fixed[i];
+  for (const PassThroughBlock& b : e.blocks)
+    for (std::int32_t n : b.connectivity) (flac3d_writes_kind(b.kind) ? kept : listed)[static_cast<std::size_t>(n)] = 1;
+  std::vector<long long> pins;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
+    if (listed[i] && !kept[i]) pins.push_back(node_ids[i]);
+  const std::string first_line = std::string(flac3d::kPinnedComment) + " ";
+  write_ids(out, first_line.c_str(), ("\n" + first_line).c_str(), pins);
+}
+
+constexpr DeckWriter kWriter{"flac3d", "FLAC3D grid", check_new_grid, write_kept_grid, write_new_grid};
+
+}  // namespace
+
+bool flac3d_writes_kind(const std::string& kind) {
+  const ZoneType* type = flac3d::zone_type_of_kind(kind);
+  return type != nullptr && *type->kind != '\0' && kind != "tetra";
+}
+
+std::string flac3d_numbers_lost(const TetMesh& mesh) {
+  if (has_kept_deck(mesh, "flac3d")) return "";
+  const FileExtras& e = mesh.extras;
+  const bool nodes = !e.node_tags.empty() && !usable_numbers(e.node_tags, mesh.num_nodes(), kLargestId);
+  bool elements = false;
+  for (const char record : {'Z', 'F'}) {
+    bool any = record == 'Z' && !e.tet_element_tags.empty();
+    for (const PassThroughBlock& b : e.blocks) any = any || (written_as(b, record) && !b.element_tags.empty());
+    const auto [ids, count] = file_ids(mesh, record);
+    elements = elements || (any && !usable_numbers(ids, count, kLargestId));
+  }
+  return nodes && elements ? "node and element" : nodes ? "node" : elements ? "element" : "";
+}
+
+void write_flac3d(const TetMesh& mesh, std::ostream& out) { kWriter.write(mesh, out); }
+
+void write_flac3d_file(const TetMesh& mesh, const std::string& path) { kWriter.write_file(mesh, path); }
+
+}  // namespace tetsmooth

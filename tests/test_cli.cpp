@@ -499,22 +499,22 @@ TEST_F(CliFiles, ReportOverAMeshIsAUsageError) {
   EXPECT_EQ(files(), (std::vector<std::string>{"in.vtu", "sub"}));
 }
 
-// A hexahedron read from MSH has no place in VTK output: the run says so
-// before it smooths anything, and writes nothing.
+// A 3-node line read from MSH has no place in Nastran output: the run says
+// so before it smooths anything, and writes nothing.
 TEST_F(CliFiles, OutputThatCannotHoldTheElementsFailsBeforeSmoothing) {
   TetMesh mesh = testing::cube_with_centre();
-  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
-  write_mesh(mesh, path("hex.msh"));
-  for (const char* out : {"out.vtu", "out.vtk"}) {
-    const CliRun r = run({"smooth", path("hex.msh"), "-o", path(out), "--device", "cpu"});
+  mesh.extras.blocks.push_back(PassThroughBlock{"line3", 3, {0, 1, 2}, {}, {}, {}});
+  write_mesh(mesh, path("line3.msh"));
+  for (const char* out : {"out.bdf", "out.nas"}) {
+    const CliRun r = run({"smooth", path("line3.msh"), "-o", path(out), "--device", "cpu"});
     EXPECT_EQ(r.code, kExitOutput) << r.err;
-    EXPECT_NE(r.err.find("hexahedron"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("line3"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("done:"), std::string::npos) << "smoothed before failing:\n" << r.err;
   }
-  EXPECT_EQ(run({"convert", path("hex.msh"), path("out.vtu")}).code, kExitOutput);
-  EXPECT_EQ(files(), std::vector<std::string>{"hex.msh"});
+  EXPECT_EQ(run({"convert", path("line3.msh"), path("out.bdf")}).code, kExitOutput);
+  EXPECT_EQ(files(), std::vector<std::string>{"line3.msh"});
   // Formats that hold it go through.
-  EXPECT_EQ(run({"smooth", path("hex.msh"), "-o", path("out.msh"), "--device", "cpu", "-q"}).code, kExitOk);
+  EXPECT_EQ(run({"smooth", path("line3.msh"), "-o", path("out.vtu"), "--device", "cpu", "-q"}).code, kExitOk);
 }
 
 // Whether any of `notes` contains `text`.
@@ -602,15 +602,15 @@ TEST(OutputLosses, PointElementsLoseTheirTagsInMedit) {
 // writer's own "cannot write 'path': ..." does, not only the reason.
 TEST(CheckWritable, NamesThePathAndTheReason) {
   TetMesh mesh = testing::cube_with_centre();
-  mesh.extras.blocks.push_back(PassThroughBlock{"hexahedron", 8, {0, 1, 2, 3, 4, 5, 6, 7}, {}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"line3", 3, {0, 1, 2}, {}, {}, {}});
   EXPECT_NO_THROW(check_writable(mesh, "out.msh"));
   try {
-    check_writable(mesh, "out.vtu");
+    check_writable(mesh, "out.bdf");
     FAIL() << "no OutputError";
   } catch (const OutputError& e) {
     const std::string msg = e.what();
-    EXPECT_EQ(msg.rfind("cannot write 'out.vtu': ", 0), 0u) << msg;
-    EXPECT_NE(msg.find("hexahedron"), std::string::npos) << msg;
+    EXPECT_EQ(msg.rfind("cannot write 'out.bdf': ", 0), 0u) << msg;
+    EXPECT_NE(msg.find("line3"), std::string::npos) << msg;
   }
 }
 

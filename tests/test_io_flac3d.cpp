@@ -280,12 +280,16 @@ TEST(Flac3dIo, FormatByNameAndWhatOtherFormatsLose) {
   EXPECT_EQ(to_vtu[1], "1 B7 zone will not be written: vtu has no place for it (its nodes were pinned)");
   EXPECT_EQ(to_vtu[2],
             "the names of the regions (the grid's zone and face groups) will not be written: vtu has no place for them");
-  // MSH keeps the names and the ids, and pins through elements alone: the
-  // cut brick's gridpoints go with it.
+  // MSH keeps the names and the gridpoint ids, not zone and face ids that
+  // overlap; it pins through elements alone: the cut brick's gridpoints go
+  // with it.
   const std::vector<std::string> to_msh = output_losses(mesh, "out.msh");
-  ASSERT_EQ(to_msh.size(), 2u);
+  ASSERT_EQ(to_msh.size(), 3u);
   EXPECT_EQ(to_msh[0], "7 pinned nodes will not be pinned in the msh41 output, so a later run may move them");
-  EXPECT_EQ(to_msh[1], "1 B7 zone will not be written: msh41 has no place for it (its nodes were pinned)");
+  EXPECT_EQ(to_msh[1], "the FLAC3D zone and face ids cannot all be kept (MSH element tags must be positive and "
+                       "distinct across all elements, at most 2147482623): msh41 numbers the elements 1, 2, ... "
+                       "instead");
+  EXPECT_EQ(to_msh[2], "1 B7 zone will not be written: msh41 has no place for it (its nodes were pinned)");
 
   TetMesh lines = testing::cube_grid(1);
   lines.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1}, {}, {}, {}});

@@ -20,9 +20,13 @@ struct PassThroughType {
   int nodes;
 };
 // The quadratic edge and triangle order their nodes as Gmsh's 3-node line
-// and 6-node triangle do (gmsh_element_types.cpp), under the same kinds.
-constexpr PassThroughType kPassThrough[] = {{1, "vertex", 1},    {3, "line", 2},  {5, "triangle", 3},
-                                            {9, "quad", 4},      {21, "line3", 3}, {22, "triangle6", 6}};
+// and 6-node triangle do (gmsh_element_types.cpp), under the same kinds. The
+// hexahedron, wedge and pyramid list their corners as Gmsh's (and meshio's)
+// do: the bottom face and then the top (a hexahedron, a wedge), the base
+// and then the apex (a pyramid).
+constexpr PassThroughType kPassThrough[] = {{1, "vertex", 1},     {3, "line", 2},   {5, "triangle", 3},
+                                            {9, "quad", 4},       {12, "hexahedron", 8}, {13, "wedge", 6},
+                                            {14, "pyramid", 5},   {21, "line3", 3}, {22, "triangle6", 6}};
 
 const PassThroughType* by_vtk(long long type) {
   for (const auto& p : kPassThrough)
@@ -89,8 +93,8 @@ void check_vtk_blocks(const TetMesh& mesh, const std::string& where) {
   for (const PassThroughBlock& b : mesh.extras.blocks)
     if (!by_kind(b.kind, b.nodes_per_element))
       throw OutputError(where + ": pass-through " + b.kind + " elements with " + std::to_string(b.nodes_per_element) +
-                        " nodes have no VTK cell type supported here (vertex, line, triangle, quad, quadratic edge, "
-                        "quadratic triangle)");
+                        " nodes have no VTK cell type supported here (vertex, line, triangle, quad, hexahedron, wedge, "
+                        "pyramid, quadratic edge, quadratic triangle)");
 }
 
 VtkCells vtk_cells_of(const TetMesh& mesh) {
@@ -188,8 +192,8 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
     const long long expected = type == kVtkTetra ? 4 : type == kVtkQuadraticTetra ? 10 : pass ? pass->nodes : -1;
     if (expected < 0) {
       fail(c, "unsupported VTK cell type " + std::to_string(type) + " (" + vtk_cell_type_name(type) +
-                  "); only tetra and quadratic tetra, and vertex, line, triangle, quad, quadratic edge and "
-                  "quadratic triangle passed through, are read");
+                  "); only tetra and quadratic tetra, and vertex, line, triangle, quad, hexahedron, wedge, pyramid, "
+                  "quadratic edge and quadratic triangle passed through, are read");
     }
     if (end - begin != expected)
       fail(c, vtk_cell_type_name(type) + " with " + std::to_string(end - begin) + " nodes instead of " +

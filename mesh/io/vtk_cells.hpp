@@ -2,8 +2,10 @@
 // The VTK view of a TetMesh's cells, shared by the VTU and legacy VTK
 // readers and writers: tets (VTK_TETRA = 10, or VTK_QUADRATIC_TETRA = 24
 // for second-order tets) first, then the pass-through blocks in order, as
-// vertices (1), lines (3), triangles (5), quads (9), quadratic edges (21)
-// or quadratic triangles (22).
+// vertices (1), lines (3), triangles (5), quads (9), hexahedra (12),
+// wedges (13), pyramids (14), quadratic edges (21) or quadratic triangles
+// (22). Every kind keeps its node order from format to format, as meshio
+// does (a wedge's first triangle winds as the format it came from has it).
 // Tags travel in a per-cell integer array named kVtkTagArray, Gmsh entity
 // tags in one named kVtkEntityArray, the Gmsh entity each node is
 // classified on in a per-point array of (dimension, tag) pairs named

@@ -17,8 +17,8 @@
 // vtkZLibDataCompressor or vtkLZMADataCompressor (vtu_blocks.hpp), other
 // compressors (vtkLZ4DataCompressor) rejected with a message naming them.
 // Cells must be tetra or quadratic tetra (not both), or vertex, line,
-// triangle, quad, quadratic edge or quadratic triangle, which are passed
-// through with their nodes fixed. Region tags come from one cell-data array
+// triangle, quad, hexahedron, wedge, pyramid, quadratic edge or quadratic
+// triangle, which are passed through with their nodes fixed. Region tags come from one cell-data array
 // (tetsmooth:tag, or another tool's name for them: vtk_arrays.hpp) and fixed
 // nodes from tetsmooth:fixed; every other PointData and CellData array is
 // dropped with a note in FileExtras::read_notes.

@@ -10,6 +10,7 @@
 #include "mesh/second_order.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/file_numbers.hpp"
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/nastran_io.hpp"
 #include "mesh/io/atomic_file.hpp"
@@ -272,6 +273,13 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                            : f == MeshFormat::Nastran ? nastran_numbers_lost(mesh)
                            : f == MeshFormat::Flac3d  ? flac3d_numbers_lost(mesh)
                                                       : "";
+  // MSH numbers every element in one sequence: ids that are distinct only
+  // within their kind (FLAC3D's zones and faces) cannot all be kept.
+  if (const std::string msh_lost = msh ? numbers_lost(mesh, gmsh::kLargestIntTag) : "";
+      msh_lost.find("element") != std::string::npos)
+    notes.push_back(std::string(flac3d ? "the FLAC3D zone and face ids" : "the element numbers of the file") +
+                    " cannot all be kept (MSH element tags must be positive and distinct across all elements, at most " +
+                    std::to_string(gmsh::kLargestIntTag) + "): " + name + " numbers the elements 1, 2, ... instead");
   if (!lost.empty())
     notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct" +
                     (f == MeshFormat::Nastran ? ", at most 99,999,999"

@@ -10,7 +10,7 @@ namespace tetsmooth {
 
 // Throws OutputError ("cannot write 'path': ...") when `format` (Auto: from
 // the name) has no place for a kind of element the mesh carries, a
-// hexahedron in VTK output for instance. The writers' own checks decide: they
+// 3-node line in Nastran output for instance. The writers' own checks decide: they
 // run on a probe that has the mesh's element kinds and tags but only one tet
 // and no other elements, written nowhere, so the check costs microseconds
 // whatever the mesh's size.

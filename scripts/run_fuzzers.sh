@@ -73,6 +73,21 @@ SPC1    1       123     1       THRU    2
 RBE3    4               5       123     1.      123     4
 ENDDATA
 BDF
+# A binary FLAC3D grid (flac3d_binary.cpp's layout): a tet and a brick, a
+# zone group, a face with a group.
+/usr/bin/python3 - "$seeds/flac3d/binary.f3grid" <<'PY'
+import struct, sys
+corners = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1), (1, 1, 0), (0, 1, 1), (1, 0, 1), (1, 1, 1)]
+def text(t):
+    return struct.pack("<H", len(t)) + t.encode()
+b = struct.pack("<III", 1375135718, 3, 9) + struct.pack("<I3d", 10, 0.25, 0.25, -1.0)
+b += b"".join(struct.pack("<I3d", 11 + k, *p) for k, p in enumerate(corners))
+b += struct.pack("<I", 2) + struct.pack("<6I", 7, 4, 11, 13, 12, 10) + struct.pack("<10I", 5, 8, *range(11, 19))
+b += struct.pack("<I", 1) + text("rock") + text("Default") + struct.pack("<3I", 2, 7, 5)
+b += struct.pack("<I", 1) + struct.pack("<5I", 1, 3, 11, 12, 13)
+b += struct.pack("<I", 1) + text("base") + text("Default") + struct.pack("<2I", 1, 1)
+open(sys.argv[1], "wb").write(b)
+PY
 # No .tsm fixture is kept (the cache is binary and hashed): write one tet in
 # the layout of mesh/io/tsm_cache.hpp.
 mkdir -p "$seeds/tsm"

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -92,8 +93,9 @@ TEST(Flac3dIo, ReadsZonesFacesGroupsAndPins) {
   for (std::size_t b = 0; b < 5; ++b) EXPECT_EQ(e.blocks[b].kind, kinds[b]);
   // Brick 1..8 (origin, x, y, z, xy, yz, xz, xyz): bottom 1 2 5 3, top 4 7 8 6.
   EXPECT_EQ(block_of(mesh, "hexahedron")->connectivity, (std::vector<std::int32_t>{0, 1, 4, 2, 3, 6, 7, 5}));
-  // Wedge 2 9 5 7 10 8: triangles (2 9 7) and (5 10 8), the one over the other.
-  EXPECT_EQ(block_of(mesh, "wedge")->connectivity, (std::vector<std::int32_t>{1, 8, 6, 4, 9, 7}));
+  // Wedge 2 9 5 7 10 8: triangles (2 7 9) and (5 8 10), the one over the
+  // other, the first wound into the cell (as Gmsh's).
+  EXPECT_EQ(block_of(mesh, "wedge")->connectivity, (std::vector<std::int32_t>{1, 6, 8, 4, 7, 9}));
   // Pyramid 4 7 6 11 8: base 4 7 8 6, apex 11.
   EXPECT_EQ(block_of(mesh, "pyramid")->connectivity, (std::vector<std::int32_t>{3, 6, 7, 5, 10}));
   EXPECT_EQ(block_of(mesh, "triangle")->connectivity, (std::vector<std::int32_t>{11, 12, 14, 11, 14, 13}));
@@ -250,7 +252,7 @@ TEST(Flac3dIo, ErrorsNameTheFileAndLine) {
       {replaced(text, "Z W6 2 2 9 5 7 10 8", "Z H8 2 2 9 5 7 10 8"),
        "t.f3grid:29: zone type 'H8' is not one of T4, B8, W6, P5 or B7"},
       {replaced(text, "Z W6 2 2 9 5 7 10 8", "Z W6 2 2 9 5 7 10 12"),
-       "t.f3grid:29: zone 2 names gridpoint 12, which no G line defines"},
+       "t.f3grid:29: zone 2 names gridpoint 12, which no gridpoint defines"},
       {replaced(text, "Z W6 2 2", "Z W6 1 2"), "t.f3grid:29: zone 1 is defined a second time"},
       {replaced(text, "F T3 2 21", "F T3 1 21"), "t.f3grid:55: face 1 is defined a second time"},
       {replaced(text, " 11 12 1\n", " 11 12 5\n"), "t.f3grid:52: zone 5 of group 'excavated' is not defined"},
@@ -261,8 +263,107 @@ TEST(Flac3dIo, ErrorsNameTheFileAndLine) {
       {replaced(text, "* TETSMOOTH PINNED 40", "* TETSMOOTH PINNED 41 47"),
        "t.f3grid:62: pinned gridpoint 47 is not defined"},
       {"G 1 0 0 0\nZ B8 1 1 1 1 1 1 1 1 1\n", "t.f3grid: no T4 zones: tetsmooth smooths tetrahedral grids"},
-      {std::string("\x0c\x00\x00\x00", 4), "t.f3grid: a binary FLAC3D grid, which tetsmooth does not read: export it "
-                                           "as text (FLAC3D's zone export without the binary keyword)"},
+      {std::string("\x0c\x00\x00\x00", 4),
+       "t.f3grid, byte 0: not a FLAC3D grid: a binary file that does not start with the binary grid's mark "
+       "(1375135718)"},
+  };
+  for (const auto& [grid, message] : cases) EXPECT_EQ(read_error(grid), message);
+}
+
+// A binary grid in the layout of flac3d_binary.cpp: a tet and a brick over
+// gridpoints 10-18 (the brick's corners 11-18 in FLAC3D's order, the tet's
+// apex 10 under its origin), zone groups in two slots, a face with a group.
+std::string binary_grid() {
+  std::string bytes;
+  const auto u32 = [&](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) bytes += static_cast<char>(v >> (8 * i));
+  };
+  const auto f64 = [&](double v) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &v, 8);
+    for (int i = 0; i < 8; ++i) bytes += static_cast<char>(bits >> (8 * i));
+  };
+  const auto text = [&](const std::string& t) {
+    bytes += static_cast<char>(t.size());
+    bytes += '\0';
+    bytes += t;
+  };
+  u32(1375135718);
+  u32(3);
+  const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}, {1, 1, 1}};
+  u32(9);
+  u32(10);
+  for (double v : {0.25, 0.25, -1.0}) f64(v);
+  for (std::uint32_t k = 0; k < 8; ++k) {
+    u32(11 + k);
+    for (double v : corners[k]) f64(v);
+  }
+  u32(2);                                  // zones
+  for (std::uint32_t v : {7u, 4u, 11u, 13u, 12u, 10u}) u32(v);  // T4 7: (0,0,0) (0,1,0) (1,0,0) apex
+  u32(5);
+  u32(8);
+  for (std::uint32_t k = 0; k < 8; ++k) u32(11 + k);
+  u32(2);  // zone groups
+  text("rock");
+  text("Default");
+  u32(2);
+  u32(7);
+  u32(5);
+  text("cut");
+  text("stage");
+  u32(1);
+  u32(5);
+  u32(1);  // faces
+  for (std::uint32_t v : {1u, 3u, 11u, 12u, 13u}) u32(v);
+  u32(1);  // face groups
+  text("base");
+  text("Default");
+  u32(1);
+  u32(1);
+  return bytes;
+}
+
+TEST(Flac3dIo, BinaryGridsAreReadAndWrittenBackByteForByte) {
+  const std::string bytes = binary_grid();
+  TetMesh mesh = read_text(bytes);
+  EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{10, 11, 12, 13, 14, 15, 16, 17, 18}));
+  EXPECT_EQ(std::vector<double>(mesh.xyz.begin(), mesh.xyz.begin() + 6), (std::vector<double>{0.25, 0.25, -1, 0, 0, 0}));
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{1, 3, 2, 0}));
+  EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{7}));
+  ASSERT_EQ(mesh.extras.blocks.size(), 2u);
+  EXPECT_EQ(mesh.extras.blocks[0].connectivity, (std::vector<std::int32_t>{1, 2, 5, 3, 4, 7, 8, 6}));
+  EXPECT_EQ(mesh.extras.blocks[1].connectivity, (std::vector<std::int32_t>{1, 2, 3}));
+  // {rock} and {rock, cut}: the tet and the brick in regions of their own.
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1}));
+  EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{2}));
+  EXPECT_EQ(raw(mesh, "$PhysicalNames"), "3\n3 1 \"rock\"\n3 2 \"rock + cut\"\n2 1 \"base\"\n");
+  EXPECT_TRUE(mesh.extras.read_notes.empty());
+
+  EXPECT_EQ(write_text(mesh), bytes);
+  mesh.xyz[2] = -0.75;  // the apex's z: bytes 12 + 4 + 16 on
+  std::string moved = bytes;
+  const double z = -0.75;
+  std::memcpy(&moved[32], &z, 8);  // the test hosts are little-endian
+  EXPECT_EQ(write_text(mesh), moved);
+  EXPECT_EQ(read_text(moved).xyz, mesh.xyz);
+
+  // Bytes past the face groups are kept, with a note.
+  const TetMesh longer = read_text(bytes + "more");
+  ASSERT_EQ(longer.extras.read_notes.size(), 1u);
+  EXPECT_EQ(longer.extras.read_notes[0], "4 bytes after the face groups (from byte " + std::to_string(bytes.size()) +
+                                             ") were not read; the FLAC3D output keeps them");
+  EXPECT_EQ(write_text(longer), bytes + "more");
+
+  const std::pair<std::string, std::string> cases[] = {
+      {bytes.substr(0, 300), "t.f3grid, byte 300: the file ends inside the gridpoint id"},
+      {bytes.substr(0, 12) + std::string("\0\0\0\0", 4) + bytes.substr(16),
+       "t.f3grid, byte 12: gridpoint id 0 is not positive"},
+      {replaced(bytes, std::string("\x05\0\0\0\x08\0\0\0", 8), std::string("\x05\0\0\0\x09\0\0\0", 8)),
+       "t.f3grid, byte 292: a zone of 9 gridpoints, which no zone type has (T4, B8, W6, P5 or B7)"},
+      {replaced(bytes, std::string("\x09\0\0\0\x0a\0\0\0", 8), std::string("\x09\0\0\x01\x0a\0\0\0", 8)),
+       "t.f3grid, byte 8: gridpoint count 16777225 is more than the rest of the file holds"},
+      {"\x01" + bytes.substr(1), "t.f3grid, byte 0: not a FLAC3D grid: a binary file that does not start with the "
+                                 "binary grid's mark (1375135718)"},
   };
   for (const auto& [grid, message] : cases) EXPECT_EQ(read_error(grid), message);
 }

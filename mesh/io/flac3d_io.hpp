@@ -1,10 +1,12 @@
 #pragma once
-// FLAC3D grids (.f3grid, ASCII), the grid files of Itasca's FLAC3D (zone
-// import / zone export) that geomechanics models are built from. A grid is
-// read with its text kept, so that a smoothed grid is the input with only
-// the G lines of moved gridpoints changed.
+// FLAC3D grids (.f3grid, text or binary), the grid files of Itasca's
+// FLAC3D (zone import / zone export) that geomechanics models are built
+// from. A grid is read with its file kept, so that a smoothed grid is the
+// input with only the coordinates of moved gridpoints changed.
 //
-// The format (one record a line; a line whose first character other than
+// A binary grid (zone export ... binary) holds the same records in the
+// layout flac3d_binary.cpp gives, without pin comments; a file with a zero
+// byte in it is read as one. The text format (one record a line; a line whose first character other than
 // blanks is '*' is a comment; blank lines are skipped; commas may separate
 // values, as blanks do; keywords in any case):
 //  * G id x y z: a gridpoint. Ids are positive whole numbers, in any order
@@ -16,7 +18,7 @@
 //    hexahedron, wedge and pyramid blocks, their gridpoints reordered from
 //    FLAC3D's (the corners of a brick in the order origin, x, y, z, xy, yz,
 //    xz, xyz; a wedge and a pyramid the first six and the first five of
-//    those, collapsed) to VTK's (flac3d_zone_types.hpp); B7 (a brick with a
+//    those, collapsed) to Gmsh's (flac3d_zone_types.hpp); B7 (a brick with a
 //    corner cut off) only pins, kept in the FLAC3D output alone. Zone ids
 //    are kept as tet_element_tags and the blocks' element_tags.
 //  * F type id gp...: a face, T3 or Q4 (triangle, quad blocks); face ids
@@ -35,20 +37,20 @@
 // so by their FGROUPs. A grid without groups has no region tags. The names
 // of the groups holding each tag go to $PhysicalNames (dimension 3 for
 // zones, 2 for faces), which MSH output writes.
-// Refused with the file's line (InputError): a record other than these, a
-// binary grid (FLAC3D writes one with zone export ... binary), ids that are
-// not positive or are defined twice, gridpoints, zones or faces that nothing
+// Refused with the file's line (InputError; a binary grid's byte offset): a
+// record other than these, ids that are not positive or are defined twice, gridpoints, zones or faces that nothing
 // defines, a zone or face with the wrong number of gridpoints, and a grid
 // without T4 zones.
-// The grid is kept in FileExtras::raw_sections: "flac3d:text" (the file as
-// read), "flac3d:deck" ("<nodes> <tets>", what it describes) and
+// The grid is kept in FileExtras::raw_sections: "flac3d:text" or
+// "flac3d:binary" (the file as read), "flac3d:deck" ("<nodes> <tets>", what it describes) and
 // "flac3d:cut-bricks" (how many B7 zones it has, for a note when another
 // format drops them).
 //
 // Writing: a mesh read from a grid is written as that grid, line for line,
 // but for the G lines of gridpoints whose coordinates changed, written
-// "G id x y z" with the shortest decimals that read back exactly. The mesh
-// must still have the grid's gridpoint and zone counts.
+// "G id x y z" with the shortest decimals that read back exactly; a binary
+// grid byte for byte, but for its gridpoints' coordinates. The mesh must
+// still have the grid's gridpoint and zone counts. New grids are text.
 // Any other mesh is written as a new grid: gridpoints, T4 zones, then B8,
 // W6 and P5 zones for hexahedron, wedge and pyramid blocks (gridpoints
 // reordered to FLAC3D's, mirrored where they would be left-handed), a

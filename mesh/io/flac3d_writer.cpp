@@ -13,7 +13,9 @@
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/flac3d_records.hpp"
 #include "mesh/io/flac3d_zone_types.hpp"
+#include "mesh/io/flac3d_grid_records.hpp"
 #include "mesh/io/kept_deck.hpp"
+#include "mesh/io/little_endian.hpp"
 #include "mesh/io/number_text.hpp"
 #include "mesh/io/region_sets.hpp"
 #include "mesh/io/text_lines.hpp"
@@ -41,8 +43,19 @@ void write_gridpoint(std::ostream& out, std::string_view id, const double* xyz) 
   }
 }
 
+// A binary grid's bytes as read, but for the coordinates, the mesh's
+// (unchanged ones come out as they were).
+void write_kept_binary_grid(const TetMesh& mesh, std::string bytes, std::ostream& out) {
+  for (std::size_t k = 0; k < mesh.num_nodes(); ++k)
+    for (std::size_t c = 0; c < 3; ++c)
+      store_le(reinterpret_cast<unsigned char*>(&bytes[flac3d::binary_coordinates_at(k) + 8 * c]), mesh.xyz[3 * k + c]);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
 // The grid's lines as read, but for the G lines of moved gridpoints.
 void write_kept_grid(const TetMesh& mesh, std::ostream& out) {
+  if (const std::string* bytes = raw_section(mesh.extras, "flac3d:binary"))
+    return write_kept_binary_grid(mesh, *bytes, out);
   const std::string& text = *raw_section(mesh.extras, "flac3d:text");
   std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
   out << text.substr(0, start);

@@ -4,10 +4,11 @@
 //
 // FLAC3D lists a brick's corners as origin, x, y, z, xy, yz, xz, xyz (its
 // first four right-handed), and a wedge (W6) and a pyramid (P5) as the first
-// six and five of those: a wedge is the triangle (origin, x, z) drawn out
-// along y, a pyramid the quad (origin, x, xy, y) under the apex z. VTK lists
-// a hexahedron's bottom quad and then the top, a wedge's two triangles one
-// over the other, and a pyramid's base and then its apex.
+// six and five of those: a wedge is the triangle (origin, z, x) drawn out
+// along y, a pyramid the quad (origin, x, xy, y) under the apex z. The other
+// formats list a hexahedron's bottom quad and then the top, a wedge's two
+// triangles one over the other (the first wound with its normal into the
+// cell, as Gmsh's), and a pyramid's base and then its apex.
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -19,7 +20,7 @@ struct ZoneType {
   char record;        // 'Z' for zones, 'F' for faces
   const char* kind;   // the PassThroughBlock kind; "tetra" for T4, "" for B7 (not carried)
   std::size_t nodes;  // gridpoints a zone
-  // from_file[k]: the place in FLAC3D's list of VTK's k-th node.
+  // from_file[k]: the place in FLAC3D's list of the other formats' k-th node.
   int from_file[8];
   // mirrored[k]: the place in FLAC3D's list of the k-th gridpoint of the same
   // zone mirrored (two of its axes swapped), for a zone whose FLAC3D list
@@ -30,6 +31,10 @@ struct ZoneType {
 // The type with this code and record (the code compared in any case), or
 // nullptr.
 const ZoneType* zone_type(std::string_view code, char record);
+
+// The type of `record` with `nodes` gridpoints (binary grids give no type
+// code), or nullptr.
+const ZoneType* zone_type_with(std::size_t nodes, char record);
 
 // The type that writes blocks of `kind`, or nullptr.
 const ZoneType* zone_type_of_kind(const std::string& kind);

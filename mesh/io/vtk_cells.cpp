@@ -20,13 +20,27 @@ struct PassThroughType {
   int nodes;
 };
 // The quadratic edge and triangle order their nodes as Gmsh's 3-node line
-// and 6-node triangle do (gmsh_element_types.cpp), under the same kinds. The
-// hexahedron, wedge and pyramid list their corners as Gmsh's (and meshio's)
-// do: the bottom face and then the top (a hexahedron, a wedge), the base
-// and then the apex (a pyramid).
+// and 6-node triangle do (gmsh_element_types.cpp), under the same kinds, and
+// so do the hexahedron (the bottom quad, then the top) and the pyramid (the
+// base, then the apex). A wedge lists a triangle and then the one over it
+// in both, but VTK winds the first triangle with its normal out of the cell
+// and Gmsh into it (as Abaqus, Nastran and Medit do, and meshio's wedge):
+// see kVtkWedge.
 constexpr PassThroughType kPassThrough[] = {{1, "vertex", 1},     {3, "line", 2},   {5, "triangle", 3},
                                             {9, "quad", 4},       {12, "hexahedron", 8}, {13, "wedge", 6},
                                             {14, "pyramid", 5},   {21, "line3", 3}, {22, "triangle6", 6}};
+
+// A wedge's node k in VTK is its node kVtkWedge[k] in the other formats'
+// order, and the other way round (the swap turns both triangles over).
+constexpr int kVtkWedge[6] = {0, 2, 1, 3, 5, 4};
+constexpr std::uint8_t kVtkWedgeType = 13;
+
+// Node k of a VTK cell of `type` among its nodes `first`: the same node in
+// the kinds' order.
+template <class Index>
+Index kind_order(std::uint8_t type, const Index* first, std::size_t k) {
+  return type == kVtkWedgeType ? first[kVtkWedge[k]] : first[k];
+}
 
 const PassThroughType* by_vtk(long long type) {
   for (const auto& p : kPassThrough)
@@ -138,7 +152,9 @@ VtkCells vtk_cells_of(const TetMesh& mesh) {
   for (const PassThroughBlock& b : ex.blocks) {
     const std::size_t count = b.connectivity.size() / b.nodes_per_element;
     const std::uint8_t type = by_kind(b.kind, b.nodes_per_element)->vtk;
-    cells.connectivity.insert(cells.connectivity.end(), b.connectivity.begin(), b.connectivity.end());
+    const auto n = static_cast<std::size_t>(b.nodes_per_element);
+    for (std::size_t e = 0; e < count; ++e)
+      for (std::size_t k = 0; k < n; ++k) cells.connectivity.push_back(kind_order(type, &b.connectivity[e * n], k));
     for (std::size_t e = 0; e < count; ++e) {
       cells.offsets.push_back(cells.offsets.back() + b.nodes_per_element);
       cells.types.push_back(type);
@@ -214,7 +230,9 @@ void mesh_from_vtk_cells(TetMesh& mesh, const std::vector<long long>& connectivi
       mesh.extras.blocks.push_back(PassThroughBlock{pass->kind, pass->nodes, {}, {}, {}, {}});
     }
     PassThroughBlock& block = mesh.extras.blocks[slot];
-    for (long long k = begin; k < end; ++k) block.connectivity.push_back(static_cast<index_t>(connectivity[k]));
+    for (long long k = 0; k < end - begin; ++k)
+      block.connectivity.push_back(
+          static_cast<index_t>(kind_order(static_cast<std::uint8_t>(type), &connectivity[begin], static_cast<std::size_t>(k))));
     if (!tags.empty()) block.tags.push_back(tags[c]);
     if (!entities.empty()) block.entity_tags.push_back(entities[c]);
   }

@@ -4,8 +4,9 @@
 // for second-order tets) first, then the pass-through blocks in order, as
 // vertices (1), lines (3), triangles (5), quads (9), hexahedra (12),
 // wedges (13), pyramids (14), quadratic edges (21) or quadratic triangles
-// (22). Every kind keeps its node order from format to format, as meshio
-// does (a wedge's first triangle winds as the format it came from has it).
+// (22). A VTK wedge's first triangle winds the other way from the other
+// formats' (Gmsh's, Abaqus's, Nastran's; meshio's wedge): its nodes are
+// reordered on the way in and out, as meshio does.
 // Tags travel in a per-cell integer array named kVtkTagArray, Gmsh entity
 // tags in one named kVtkEntityArray, the Gmsh entity each node is
 // classified on in a per-point array of (dimension, tag) pairs named

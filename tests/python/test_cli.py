@@ -97,17 +97,24 @@ def radius_ratio(xyz, tets):
 
 
 class CliTestCase(unittest.TestCase):
+    """Tests that need the tetsmooth binary and a scratch folder (cls.tmp,
+    named after SCRATCH_PREFIX and removed after; path() names a file in
+    it)."""
+
+    SCRATCH_PREFIX = "tetsmooth_test_cli_"
+
     @classmethod
     def setUpClass(cls):
         require_binary()
-        cls.tmp = tempfile.mkdtemp(prefix="tetsmooth_test_cli_")
+        cls.tmp = tempfile.mkdtemp(prefix=cls.SCRATCH_PREFIX)
 
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
-    def path(self, name):
-        return os.path.join(self.tmp, name)
+    @classmethod
+    def path(cls, name):
+        return os.path.join(cls.tmp, name)
 
     def assert_one_error_line(self, proc, code, *fragments):
         self.assertEqual(proc.returncode, code, proc.stderr)

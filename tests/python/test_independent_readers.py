@@ -14,7 +14,7 @@ import unittest
 import meshio
 import numpy as np
 
-from test_cli import kuhn_lattice, missing, require_binary, run
+from test_cli import CliTestCase, kuhn_lattice, missing, require_binary, run
 
 # The reference coordinates are short binary fractions, so any writer and
 # reader that do not lose precision reproduce them exactly; this allows a
@@ -39,7 +39,7 @@ def require_gmsh():
     return gmsh
 
 
-class GmshScratchCase(unittest.TestCase):
+class GmshScratchCase(CliTestCase):
     """Tests that need the tetsmooth binary, the Gmsh API (cls.gmsh) and a
     scratch folder (cls.tmp, named after SCRATCH_PREFIX and removed after;
     path() names a file in it)."""
@@ -48,17 +48,8 @@ class GmshScratchCase(unittest.TestCase):
 
     @classmethod
     def setUpClass(cls):
-        require_binary()
-        cls.gmsh = require_gmsh()
-        cls.tmp = tempfile.mkdtemp(prefix=cls.SCRATCH_PREFIX)
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.tmp, ignore_errors=True)
-
-    @classmethod
-    def path(cls, name):
-        return os.path.join(cls.tmp, name)
+        cls.gmsh = require_gmsh()  # before the scratch folder, which a skip would leave behind
+        super().setUpClass()
 
 
 def boundary_nodes(tets):

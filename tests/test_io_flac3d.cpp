@@ -76,8 +76,8 @@ TEST(Flac3dIo, ReadsZonesFacesGroupsAndPins) {
   const TetMesh mesh = read_text(fixture());
   const FileExtras& e = mesh.extras;
   ASSERT_EQ(mesh.num_nodes(), 23u);
-  EXPECT_EQ(e.node_tags, (std::vector<long long>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 21, 22, 23, 24, 30, 40, 41, 42,
-                                                 43, 44, 45, 46}));
+  EXPECT_EQ(e.node_tags, (std::vector<long long>{1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 21,
+                                                 22, 23, 24, 30, 40, 41, 42, 43, 44, 45, 46}));
   // "g 9 2 0 0", "G<tab>10<tab>2.0...e+00", "G 11, 0.5, 0.5, 2".
   EXPECT_EQ(std::vector<double>(mesh.xyz.begin() + 24, mesh.xyz.begin() + 33),
             (std::vector<double>{2, 0, 0, 2, 1, 0, 0.5, 0.5, 2}));
@@ -109,8 +109,10 @@ TEST(Flac3dIo, ReadsZonesFacesGroupsAndPins) {
   EXPECT_EQ(block_of(mesh, "pyramid")->tags, (std::vector<int>{2}));
   EXPECT_EQ(block_of(mesh, "triangle")->tags, (std::vector<int>{1, 1}));
   EXPECT_EQ(block_of(mesh, "quad")->tags, (std::vector<int>{2}));
+  // Names: the groups, "slot=group" outside the default slot.
   EXPECT_EQ(raw(mesh, "$PhysicalNames"),
-            "5\n3 1 \"Soil layer + excavated\"\n3 2 \"Soil layer\"\n3 4 \"Rock\"\n2 1 \"bottom\"\n2 2 \"top\"\n");
+            "5\n3 1 \"Soil layer + stage 1=excavated\"\n3 2 \"Soil layer\"\n3 4 \"Rock\"\n"
+            "2 1 \"bottom\"\n2 2 \"top\"\n");
 
   // Every gridpoint of a zone other than a tet, of a face or of the pin
   // comment is pinned: all but 30.
@@ -141,6 +143,19 @@ TEST(Flac3dIo, WritesTheGridBackChangingOnlyTheLinesOfMovedGridpoints) {
   EXPECT_EQ(write_text(windows), replaced(crlf, "G 30 0.4 0.55 -0.45\r\n", "G 30 0.4 0.55 -0.5\r\n"));
 }
 
+// Records of other kinds (a gridpoint group, say, which some exporters may
+// write) and the ids after them are kept and named, not refused.
+TEST(Flac3dIo, RecordsOfOtherKindsAreKeptWithANote) {
+  const std::string text = replaced(fixture(), "* FACES\n", "GPGROUP 'Fixed' SLOT 'Default'\n 21 22\n\n 23\n* FACES\n");
+  TetMesh mesh = read_text(text);
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"records of kinds tetsmooth does not read, 'GPGROUP' (line 53), are kept in "
+                                      "FLAC3D output and left out of other formats; gridpoints they name are not "
+                                      "pinned: list those that must stay on a '* TETSMOOTH PINNED' line"}));
+  EXPECT_EQ(write_text(mesh), text);
+  EXPECT_EQ(read_text(fixture()).tets, mesh.tets);
+}
+
 TEST(Flac3dIo, AGridIsWrittenOnlyForTheMeshItWasReadWith) {
   TetMesh mesh = read_text(fixture());
   mesh.tets.resize(4 * 11);
@@ -158,20 +173,22 @@ TEST(Flac3dIo, AGridIsWrittenOnlyForTheMeshItWasReadWith) {
 TEST(Flac3dIo, ANewGridReadsBackAsWritten) {
   TetMesh mesh = read_text(fixture());
   auto& sections = mesh.extras.raw_sections;
-  sections.erase(std::remove_if(sections.begin(), sections.end(),
-                                [](const auto& s) { return s.first.rfind("flac3d:", 0) == 0; }),
-                 sections.end());
+  sections.erase(
+      std::remove_if(sections.begin(), sections.end(), [](const auto& s) { return s.first.rfind("flac3d:", 0) == 0; }),
+      sections.end());
   const std::string text = write_text(mesh);
   // Ids as the file had them, zones and faces numbered apart; the cut brick
   // is not written, its gridpoints listed as pins.
   EXPECT_NE(text.find("\nG 30 0.4 0.55 -0.45\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nZ T4 11 1 5 2 30\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("\nZ B8 1 1 2 3 4 5 6 7 8\nZ W6 2 2 9 5 7 10 8\nZ P5 3 4 7 6 11 8\n"), std::string::npos)
+  EXPECT_NE(text.find("\nZ B8 1 1 2 3 4 5 6 7 8\nZ W6 2 2 9 5 7 10 8\nZ P5 3 4 7 6 11 8\n"), std::string::npos) << text;
+  // Each group once, in its slot, read back from the regions' names.
+  EXPECT_NE(text.find("\nZGROUP \"Soil layer\" SLOT Default\n 11 12 1 13 14 15 16 2 3\nZGROUP \"excavated\" SLOT "
+                      "\"stage 1\"\n 11 12 1\nZGROUP \"Rock\" SLOT Default\n 17 18 19 20 21 22\n"),
+            std::string::npos)
       << text;
-  EXPECT_NE(text.find("\nZGROUP \"Soil layer + excavated\" SLOT 1\n 11 12 1\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("\nZGROUP \"Soil layer\" SLOT 1\n 13 14 15 16 2 3\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\nF T3 1 21 22 24\nF T3 2 21 24 23\nF Q4 3 4 7 8 6\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("\nFGROUP \"top\" SLOT 1\n 3\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\nFGROUP \"top\" SLOT Default\n 3\n"), std::string::npos) << text;
   EXPECT_NE(text.find("\n* TETSMOOTH PINNED 40 41 42 43 44 45 46\n"), std::string::npos) << text;
   EXPECT_EQ(text.find("B7"), std::string::npos) << text;
 
@@ -188,12 +205,49 @@ TEST(Flac3dIo, ANewGridReadsBackAsWritten) {
   // The groups give the same regions; the cut brick's has gone with it.
   EXPECT_TRUE(testing::same_partition(again.extras.tet_tags, mesh.extras.tet_tags));
   EXPECT_EQ(raw(again, "$PhysicalNames"),
-            "5\n3 1 \"Soil layer + excavated\"\n3 2 \"Soil layer\"\n3 3 \"Rock\"\n2 1 \"bottom\"\n2 2 \"top\"\n");
+            "5\n3 1 \"Soil layer + stage 1=excavated\"\n3 2 \"Soil layer\"\n3 3 \"Rock\"\n"
+            "2 1 \"bottom\"\n2 2 \"top\"\n");
+}
+
+// Groups as FLAC3D takes them: one name (in any case) in one slot is one
+// group however many headers list it, a zone is in one group a slot (the
+// last), and "Default", no slot and "1" name the default slot.
+TEST(Flac3dIo, GroupsAreMergedByNameAndSlotAndTheLastOfASlotHoldsAZone) {
+  const std::string grid =
+      "G 1 0 0 0\nG 2 1 0 0\nG 3 0 1 0\nG 4 0 0 1\nG 5 1 1 1\n"
+      "Z T4 1 1 2 3 4\nZ T4 2 2 5 3 4\nZ T4 3 1 2 3 5\n"
+      "ZGROUP 'Rock' SLOT 'Default'\n 1\n"
+      "* a comment among the ids\n 1\n"
+      "ZGROUP ROCK\n 2\n"
+      "ZGROUP 'A' SLOT 'x'\n 1 2 3\n"
+      "ZGROUP 'B' SLOT 'X'\n 3\n";
+  const TetMesh mesh = read_text(grid);
+  // Zones 1 and 2: Rock and A; zone 3: B only (listed in A, then in B).
+  EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1, 1, 2}));
+  EXPECT_EQ(raw(mesh, "$PhysicalNames"), "2\n3 1 \"Rock + x=A\"\n3 2 \"x=B\"\n");
+  EXPECT_EQ(mesh.extras.read_notes,
+            (std::vector<std::string>{"1 zone is listed in two groups of one slot: each is taken to be in the last, "
+                                      "as FLAC3D does"}));
+
+  // A new grid gives each group its zones once; names that are no groups of
+  // different slots are one group, and a tag whose groups another tag has
+  // got is set apart.
+  TetMesh fresh = testing::cube_with_centre();
+  fresh.extras.tet_tags = {1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 5, 5};
+  fresh.extras.raw_sections.emplace_back("$PhysicalNames",
+                                         "4\n3 1 \"Soil + stage 1=dug\"\n3 2 \"Soil\"\n3 3 \"a + b\"\n3 4 \"soil\"\n");
+  const std::string text = write_text(fresh);
+  EXPECT_NE(text.find("ZGROUP \"Soil\" SLOT Default\n 1 2 3 4\nZGROUP \"dug\" SLOT \"stage 1\"\n 1 2\n"
+                      "ZGROUP \"a + b\" SLOT Default\n 5 6\nZGROUP \"soil (tag 4)\" SLOT Default\n 7 8\n"
+                      "ZGROUP \"region 5\" SLOT Default\n 9 10 11 12\n"),
+            std::string::npos)
+      << text;
+  EXPECT_TRUE(testing::same_partition(read_text(text).extras.tet_tags, fresh.extras.tet_tags));
 }
 
 TEST(Flac3dIo, ZonesOfOtherFormatsAreWrittenRightHanded) {
-  // A unit brick, wedge and pyramid in VTK's order, and each mirrored
-  // (z flipped), over one tet; region tags without names, a line to drop.
+  // A unit brick in VTK's order, and one mirrored (z flipped), over one tet;
+  // region tags without names, a line to drop.
   TetMesh mesh;
   for (const double z : {1.0, -1.0})
     for (const auto& p : {std::array<double, 3>{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})
@@ -201,7 +255,8 @@ TEST(Flac3dIo, ZonesOfOtherFormatsAreWrittenRightHanded) {
   // Nodes 8k + 2c (+1 above) for corner c of square k (k = 0 up, 1 down).
   mesh.tets = {0, 2, 6, 1};
   const auto hex = [](int k) {
-    return std::vector<std::int32_t>{8 * k, 8 * k + 2, 8 * k + 4, 8 * k + 6, 8 * k + 1, 8 * k + 3, 8 * k + 5, 8 * k + 7};
+    return std::vector<std::int32_t>{8 * k,     8 * k + 2, 8 * k + 4, 8 * k + 6,
+                                     8 * k + 1, 8 * k + 3, 8 * k + 5, 8 * k + 7};
   };
   std::vector<std::int32_t> hexes = hex(0), down = hex(1);
   hexes.insert(hexes.end(), down.begin(), down.end());
@@ -212,7 +267,8 @@ TEST(Flac3dIo, ZonesOfOtherFormatsAreWrittenRightHanded) {
   const std::string text = write_text(mesh);
   // The brick below lists its corners mirrored (x and y swapped).
   EXPECT_NE(text.find("\nZ B8 2 1 3 7 2 5 8 4 6\nZ B8 3 9 15 11 10 13 12 16 14\n"), std::string::npos) << text;
-  EXPECT_NE(text.find("\nZGROUP \"region -3\" SLOT 1\n 1\nZGROUP \"region 7\" SLOT 1\n 2 3\n"), std::string::npos)
+  EXPECT_NE(text.find("\nZGROUP \"region -3\" SLOT Default\n 1\nZGROUP \"region 7\" SLOT Default\n 2 3\n"),
+            std::string::npos)
       << text;
   EXPECT_NE(text.find("\n* TETSMOOTH PINNED 17\n"), std::string::npos) << text;
   const TetMesh again = read_text(text);
@@ -225,6 +281,22 @@ TEST(Flac3dIo, ZonesOfOtherFormatsAreWrittenRightHanded) {
                                       again.extras.blocks[0].connectivity.end()),
             (std::vector<std::int32_t>{8, 14, 12, 10, 9, 15, 13, 11}));
   EXPECT_EQ(again.fixed[16], 1);
+}
+
+// Ids past FLAC3D's 2^31 - 1 (a Gmsh or Abaqus file may have them): a new
+// grid numbers the gridpoints 1, 2, ... and says so before the work.
+TEST(Flac3dIo, IdsPastTheLargestAreRenumberedWithANote) {
+  TetMesh mesh = testing::cube_with_centre();
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
+    mesh.extras.node_tags.push_back(3000000000LL + static_cast<long long>(i));
+  const std::vector<std::string> notes = output_losses(mesh, "out.f3grid");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "the node numbers of the file cannot all be kept (each must be positive and distinct, at most "
+                      "2,147,483,647): flac3d numbers them 1, 2, ... instead");
+  const std::string text = write_text(mesh);
+  EXPECT_NE(text.find("\nG 1 "), std::string::npos) << text;
+  EXPECT_EQ(text.find("3000000000"), std::string::npos) << text;
+  EXPECT_EQ(read_text(text).xyz, mesh.xyz);
 }
 
 TEST(Flac3dIo, SecondOrderTetsAreRefused) {
@@ -240,11 +312,18 @@ TEST(Flac3dIo, SecondOrderTetsAreRefused) {
 TEST(Flac3dIo, ErrorsNameTheFileAndLine) {
   const std::string text = fixture();
   const std::pair<std::string, std::string> cases[] = {
-      {replaced(text, "G 21 0 0 -1", "GP 21 0 0 -1"),
-       "t.f3grid:15: record 'GP' is none that a FLAC3D grid holds (G, Z, F, ZGROUP, FGROUP, or a comment after '*')"},
+      {replaced(text, "G 21 0 0 -1", "G 99999999999999999999 0 0 -1"),
+       "t.f3grid:15: gridpoint id '99999999999999999999' is out of range"},
+      {replaced(text, "G 21 0 0 -1", "G 21 0 0 1.5D+00"), "t.f3grid:15: coordinate z '1.5D+00' is not a number"},
+      {replaced(text, "G 21 0 0 -1", "G 21 0 0 1e-400"),
+       "t.f3grid:15: coordinate z '1e-400' is out of the range of a double"},
+      {replaced(text, "G 21 0 0 -1", "G 21 0 0 inf"), "t.f3grid:15: coordinate z 'inf' is not finite"},
+      {"\xFF\xFEG", "t.f3grid: UTF-16 text (as Windows PowerShell saves it): save the grid as ASCII or UTF-8"},
+      {"G 1 0 0 0\rG 2 1 0 0\r",
+       "t.f3grid: lines that end in a carriage return alone: save the grid with LF or CRLF line ends"},
       {replaced(text, "G 21 0 0 -1", "G 21 0 0"),
        "t.f3grid:15: a gridpoint is 'G id x y z', and this line has 4 values"},
-      {replaced(text, "G 21 0 0 -1", "G 21 0 0 -1x"), "t.f3grid:15: coordinate z '-1x' is not a finite number"},
+      {replaced(text, "G 21 0 0 -1", "G 21 0 0 -1x"), "t.f3grid:15: coordinate z '-1x' is not a number"},
       {replaced(text, "G 22 1 0 -1", "G 21 1 0 -1"), "t.f3grid:16: gridpoint 21 is defined a second time"},
       {replaced(text, "G 22 1 0 -1", "G 0 1 0 -1"), "t.f3grid:16: gridpoint id 0 is not positive"},
       {replaced(text, "Z W6 2 2 9 5 7 10 8", "Z W6 2 2 9 5 7 10"),
@@ -263,6 +342,8 @@ TEST(Flac3dIo, ErrorsNameTheFileAndLine) {
       {replaced(text, "* TETSMOOTH PINNED 40", "* TETSMOOTH PINNED 41 47"),
        "t.f3grid:62: pinned gridpoint 47 is not defined"},
       {"G 1 0 0 0\nZ B8 1 1 1 1 1 1 1 1 1\n", "t.f3grid: no T4 zones: tetsmooth smooths tetrahedral grids"},
+      {"", "t.f3grid: no T4 zones: tetsmooth smooths tetrahedral grids"},
+      {"\xEF\xBB\xBF", "t.f3grid: no T4 zones: tetsmooth smooths tetrahedral grids"},
       {std::string("\x0c\x00\x00\x00", 4),
        "t.f3grid, byte 0: not a FLAC3D grid: a binary file that does not start with the binary grid's mark "
        "(1375135718)"},
@@ -298,7 +379,7 @@ std::string binary_grid() {
     u32(11 + k);
     for (double v : corners[k]) f64(v);
   }
-  u32(2);                                  // zones
+  u32(2);                                                       // zones
   for (std::uint32_t v : {7u, 4u, 11u, 13u, 12u, 10u}) u32(v);  // T4 7: (0,0,0) (0,1,0) (1,0,0) apex
   u32(5);
   u32(8);
@@ -327,7 +408,8 @@ TEST(Flac3dIo, BinaryGridsAreReadAndWrittenBackByteForByte) {
   const std::string bytes = binary_grid();
   TetMesh mesh = read_text(bytes);
   EXPECT_EQ(mesh.extras.node_tags, (std::vector<long long>{10, 11, 12, 13, 14, 15, 16, 17, 18}));
-  EXPECT_EQ(std::vector<double>(mesh.xyz.begin(), mesh.xyz.begin() + 6), (std::vector<double>{0.25, 0.25, -1, 0, 0, 0}));
+  EXPECT_EQ(std::vector<double>(mesh.xyz.begin(), mesh.xyz.begin() + 6),
+            (std::vector<double>{0.25, 0.25, -1, 0, 0, 0}));
   EXPECT_EQ(mesh.tets, (std::vector<index_t>{1, 3, 2, 0}));
   EXPECT_EQ(mesh.extras.tet_element_tags, (std::vector<long long>{7}));
   ASSERT_EQ(mesh.extras.blocks.size(), 2u);
@@ -336,7 +418,7 @@ TEST(Flac3dIo, BinaryGridsAreReadAndWrittenBackByteForByte) {
   // {rock} and {rock, cut}: the tet and the brick in regions of their own.
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1}));
   EXPECT_EQ(mesh.extras.blocks[0].tags, (std::vector<int>{2}));
-  EXPECT_EQ(raw(mesh, "$PhysicalNames"), "3\n3 1 \"rock\"\n3 2 \"rock + cut\"\n2 1 \"base\"\n");
+  EXPECT_EQ(raw(mesh, "$PhysicalNames"), "3\n3 1 \"rock\"\n3 2 \"rock + stage=cut\"\n2 1 \"base\"\n");
   EXPECT_TRUE(mesh.extras.read_notes.empty());
 
   EXPECT_EQ(write_text(mesh), bytes);
@@ -362,8 +444,14 @@ TEST(Flac3dIo, BinaryGridsAreReadAndWrittenBackByteForByte) {
        "t.f3grid, byte 292: a zone of 9 gridpoints, which no zone type has (T4, B8, W6, P5 or B7)"},
       {replaced(bytes, std::string("\x09\0\0\0\x0a\0\0\0", 8), std::string("\x09\0\0\x01\x0a\0\0\0", 8)),
        "t.f3grid, byte 8: gridpoint count 16777225 is more than the rest of the file holds"},
-      {"\x01" + bytes.substr(1), "t.f3grid, byte 0: not a FLAC3D grid: a binary file that does not start with the "
-                                 "binary grid's mark (1375135718)"},
+      {"\x01" + bytes.substr(1),
+       "t.f3grid, byte 0: not a FLAC3D grid: a binary file that does not start with the "
+       "binary grid's mark (1375135718)"},
+      // A line break or a zero byte in a name, which no text format holds.
+      {replaced(bytes, std::string("\x04\0rock", 6), std::string("\x04\0ro\nk", 6)),
+       "t.f3grid, byte 340: a group name holds the control byte \\x0a"},
+      {replaced(bytes, std::string("\x04\0base", 6), std::string("\x04\0ba\0e", 6)),
+       "t.f3grid, byte 415: a group name holds the control byte \\x00"},
   };
   for (const auto& [grid, message] : cases) EXPECT_EQ(read_error(grid), message);
 }
@@ -379,25 +467,35 @@ TEST(Flac3dIo, FormatByNameAndWhatOtherFormatsLose) {
   ASSERT_EQ(to_vtu.size(), 3u);
   EXPECT_EQ(to_vtu[0], "the FLAC3D gridpoint and zone ids will not be written: vtu numbers them by position");
   EXPECT_EQ(to_vtu[1], "1 B7 zone will not be written: vtu has no place for it (its nodes were pinned)");
-  EXPECT_EQ(to_vtu[2],
-            "the names of the regions (the grid's zone and face groups) will not be written: vtu has no place for them");
+  EXPECT_EQ(
+      to_vtu[2],
+      "the names of the regions (the grid's zone and face groups) will not be written: vtu has no place for them");
   // MSH keeps the names and the gridpoint ids, not zone and face ids that
   // overlap; it pins through elements alone: the cut brick's gridpoints go
   // with it.
   const std::vector<std::string> to_msh = output_losses(mesh, "out.msh");
   ASSERT_EQ(to_msh.size(), 3u);
   EXPECT_EQ(to_msh[0], "7 pinned nodes will not be pinned in the msh41 output, so a later run may move them");
-  EXPECT_EQ(to_msh[1], "the FLAC3D zone and face ids cannot all be kept (MSH element tags must be positive and "
-                       "distinct across all elements, at most 2147482623): msh41 numbers the elements 1, 2, ... "
-                       "instead");
+  EXPECT_EQ(to_msh[1],
+            "the FLAC3D zone and face ids cannot all be kept (MSH element tags must be positive and "
+            "distinct across all elements, at most 2147482623): msh41 numbers the elements 1, 2, ... "
+            "instead");
   EXPECT_EQ(to_msh[2], "1 B7 zone will not be written: msh41 has no place for it (its nodes were pinned)");
+
+  // A new Abaqus deck names its element sets by tag.
+  const std::vector<std::string> to_inp = output_losses(mesh, "out.inp");
+  EXPECT_NE(std::find(to_inp.begin(), to_inp.end(),
+                      "the names of the regions (the grid's zone and face groups) will not be written: abaqus has no "
+                      "place for them"),
+            to_inp.end());
 
   TetMesh lines = testing::cube_grid(1);
   lines.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1}, {}, {}, {}});
   const std::vector<std::string> to_flac3d = output_losses(lines, "out.f3grid");
   ASSERT_EQ(to_flac3d.size(), 1u);
-  EXPECT_EQ(to_flac3d[0], "1 line will not be written: flac3d holds tets, bricks, wedges, pyramids, triangles and "
-                          "quads (their nodes are listed as pins)");
+  EXPECT_EQ(to_flac3d[0],
+            "1 line will not be written: flac3d holds tets, bricks, wedges, pyramids, triangles and "
+            "quads (their nodes are listed as pins)");
 }
 
 }  // namespace

@@ -270,6 +270,9 @@ TEST(Vtu, HexahedraWedgesAndPyramidsRoundTrip) {
   write_vtk(mesh, vtk, {});
   EXPECT_NE(vtk.str().find("\nCELL_TYPES 16\n10\n"), std::string::npos) << vtk.str();
   EXPECT_NE(vtk.str().find("\n12\n13\n13\n14\n"), std::string::npos) << vtk.str();
+  // VTK winds a wedge's first triangle the other way: (0 1 2 | 4 5 6) is
+  // written (0 2 1 | 4 6 5).
+  EXPECT_NE(vtk.str().find("\n6 0 2 1 4 6 5\n"), std::string::npos) << vtk.str();
   std::istringstream vtu_in(vtu.str()), vtk_in(vtk.str());
   expect_same_mesh(read_vtu(vtu_in, "mesh.vtu"), mesh);
   expect_same_mesh(read_vtk(vtk_in, "mesh.vtk"), mesh);

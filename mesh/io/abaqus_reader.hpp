@@ -15,6 +15,7 @@
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_regions.hpp"
+#include "mesh/io/region_sets.hpp"
 #include "mesh/io/abaqus_sets.hpp"
 
 namespace tetsmooth::abaqus {

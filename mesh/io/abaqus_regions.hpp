@@ -5,8 +5,6 @@
 #include <string>
 #include <vector>
 
-#include "mesh/io/region_sets.hpp"
-
 namespace tetsmooth::abaqus {
 
 // Tags for elements that carry the index (1-based; 0 for none) of their

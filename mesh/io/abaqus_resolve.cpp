@@ -9,6 +9,7 @@
 #include "mesh/second_order.hpp"
 #include "mesh/io/abaqus_reader.hpp"
 #include "mesh/io/abaqus_regions.hpp"
+#include "mesh/io/region_sets.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/text_lines.hpp"
 

@@ -7,22 +7,27 @@
 namespace tetsmooth {
 namespace {
 
-// The file's element numbers over the tets, then each block's elements, and
-// how many elements there are; the numbers are empty unless every element
-// has one.
-std::pair<std::vector<long long>, std::size_t> file_element_numbers(const TetMesh& mesh) {
-  std::vector<long long> ids = mesh.extras.tet_element_tags;
-  std::size_t count = mesh.num_tets();
-  bool complete = ids.size() == count;
+bool in_set(const ElementSet& set, const PassThroughBlock& b) { return !set.block || set.block(b); }
+
+}  // namespace
+
+std::pair<std::vector<long long>, std::size_t> file_element_numbers(const TetMesh& mesh, const ElementSet& set) {
+  std::vector<long long> ids;
+  std::size_t count = 0;
+  bool complete = true;
+  if (set.tets) {
+    ids = mesh.extras.tet_element_tags;
+    count = mesh.num_tets();
+    complete = ids.size() == count;
+  }
   for (const PassThroughBlock& b : mesh.extras.blocks) {
+    if (!in_set(set, b)) continue;
     count += elements_in(b);
     complete = complete && b.element_tags.size() == elements_in(b);
     ids.insert(ids.end(), b.element_tags.begin(), b.element_tags.end());
   }
   return {complete ? ids : std::vector<long long>{}, count};
 }
-
-}  // namespace
 
 bool usable_numbers(const std::vector<long long>& ids, std::size_t count, long long largest) {
   std::vector<long long> sorted = ids;
@@ -42,27 +47,35 @@ std::size_t elements_in(const PassThroughBlock& b) {
   return b.nodes_per_element > 0 ? b.connectivity.size() / static_cast<std::size_t>(b.nodes_per_element) : 0;
 }
 
-std::vector<long long> element_numbers(const TetMesh& mesh, long long largest) {
-  const auto [ids, count] = file_element_numbers(mesh);
+std::vector<long long> element_numbers(const TetMesh& mesh, long long largest, const ElementSet& set) {
+  const auto [ids, count] = file_element_numbers(mesh, set);
   return numbers_or_positions(ids, count, largest);
 }
 
-std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers) {
-  std::vector<std::uint8_t> by_element(mesh.num_nodes(), 0);
-  mark_element_nodes(mesh.extras.blocks, by_element);
+std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers,
+                                    const std::function<bool(const PassThroughBlock&)>& written) {
+  // Pinned: the file's pins, and the nodes of blocks not written; kept: the
+  // nodes of the written blocks, which pin them themselves.
+  std::vector<std::uint8_t> pinned(mesh.num_nodes(), 0), kept(mesh.num_nodes(), 0);
+  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i) pinned[i] = mesh.fixed[i];
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    for (std::int32_t n : b.connectivity) (!written || written(b) ? kept : pinned)[static_cast<std::size_t>(n)] = 1;
   std::vector<long long> listed;
-  for (std::size_t i = 0; i < std::min(mesh.fixed.size(), mesh.num_nodes()); ++i)
-    if (mesh.fixed[i] && !by_element[i]) listed.push_back(node_numbers[i]);
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
+    if (pinned[i] && !kept[i]) listed.push_back(node_numbers[i]);
   return listed;
 }
 
-std::string numbers_lost(const TetMesh& mesh, long long largest) {
+std::string numbers_lost(const TetMesh& mesh, long long largest, const std::vector<ElementSet>& sets) {
   const FileExtras& e = mesh.extras;
   const bool nodes = !e.node_tags.empty() && !usable_numbers(e.node_tags, mesh.num_nodes(), largest);
-  const auto [ids, count] = file_element_numbers(mesh);
-  bool any_element_ids = !e.tet_element_tags.empty();
-  for (const PassThroughBlock& b : e.blocks) any_element_ids = any_element_ids || !b.element_tags.empty();
-  const bool elements = any_element_ids && !usable_numbers(ids, count, largest);
+  bool elements = false;
+  for (const ElementSet& set : sets) {
+    bool any = set.tets && !e.tet_element_tags.empty();
+    for (const PassThroughBlock& b : e.blocks) any = any || (in_set(set, b) && !b.element_tags.empty());
+    const auto [ids, count] = file_element_numbers(mesh, set);
+    elements = elements || (any && !usable_numbers(ids, count, largest));
+  }
   return nodes && elements ? "node and element" : nodes ? "node" : elements ? "element" : "";
 }
 

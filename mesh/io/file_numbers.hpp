@@ -1,10 +1,13 @@
 #pragma once
 // The file's own node and element numbers (FileExtras::node_tags,
-// tet_element_tags and each block's element_tags) as a new deck can keep
-// them (Abaqus, Nastran): one per item, positive, distinct and at most the
-// format's largest, else 1, 2, ... in order (not a public API).
+// tet_element_tags and each block's element_tags) as a new deck or grid
+// can keep them (Abaqus, Nastran, FLAC3D): one per item, positive, distinct
+// and at most the format's largest, else 1, 2, ... in order (not a public
+// API).
 #include <cstddef>
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesh/tet_mesh.hpp"
@@ -21,17 +24,34 @@ std::vector<long long> numbers_or_positions(const std::vector<long long>& ids, s
 // Elements in a pass-through block.
 std::size_t elements_in(const PassThroughBlock& b);
 
-// The numbers of every element, the tets' first and then each block's, in
-// order, as numbers_or_positions gives them.
-std::vector<long long> element_numbers(const TetMesh& mesh, long long largest);
+// Which elements a format numbers in one sequence: the tets or not, and the
+// blocks `block` accepts (all of them where it is empty). FLAC3D numbers its
+// zones and its faces apart; the other formats all their elements as one.
+struct ElementSet {
+  bool tets = true;
+  std::function<bool(const PassThroughBlock&)> block;
+};
+
+// The file's numbers of a set's elements, the tets' first and then each
+// block's, in order, and how many elements the set has; the numbers are
+// empty unless every element of the set has one.
+std::pair<std::vector<long long>, std::size_t> file_element_numbers(const TetMesh& mesh, const ElementSet& set = {});
+
+// The numbers of a set's elements (file_element_numbers' order), as
+// numbers_or_positions gives them.
+std::vector<long long> element_numbers(const TetMesh& mesh, long long largest, const ElementSet& set = {});
 
 // The numbers (from `node_numbers`, one per node) of the pinned nodes that
-// no pass-through element pins, in node order: those a new deck lists
-// itself (a node set, a comment line) to keep them pinned.
-std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers);
+// no written element pins, in node order: those a new deck lists itself (a
+// node set, a comment line) to keep them pinned. `written` says which blocks
+// the deck writes (all where it is empty); the nodes of the others are
+// listed too.
+std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers,
+                                    const std::function<bool(const PassThroughBlock&)>& written = {});
 
 // The file's numbers that a new deck cannot keep: "node", "element", "node
-// and element", or "" when it keeps them all (or the file had none).
-std::string numbers_lost(const TetMesh& mesh, long long largest);
+// and element", or "" when it keeps them all (or the file had none). Each
+// of `sets` is numbered on its own (one set of all elements by default).
+std::string numbers_lost(const TetMesh& mesh, long long largest, const std::vector<ElementSet>& sets = {ElementSet{}});
 
 }  // namespace tetsmooth

@@ -21,6 +21,7 @@ namespace tetsmooth::flac3d {
 namespace {
 
 constexpr std::uint32_t kMark = 1375135718;
+constexpr std::uint32_t kVersion = 3;
 
 class BinaryGridParser {
  public:
@@ -54,9 +55,16 @@ class BinaryGridParser {
       fail(at, std::string(what) + " " + std::to_string(n) + " is more than the rest of the file holds");
     return n;
   }
+  // A name: control bytes are refused, as a text grid cannot hold them
+  // either (a line break, a zero byte), so that every format can write it.
   std::string text(const char* what) {
     const std::size_t n = load_le<std::uint16_t>(take(2, what));
+    const std::size_t at = pos_;
     const unsigned char* p = take(n, what);
+    for (std::size_t i = 0; i < n; ++i)
+      if (p[i] < 0x20 || p[i] == 0x7f)
+        fail(at + i,
+             std::string(what) + " holds the control byte " + text_excerpt(std::string(1, static_cast<char>(p[i]))));
     return std::string(reinterpret_cast<const char*>(p), n);
   }
   void elements(Elements& into, char record);
@@ -101,8 +109,11 @@ void BinaryGridParser::groups(char record) {
 GridRecords BinaryGridParser::parse() {
   if (bytes_.size() < 4 || load_le<std::uint32_t>(reinterpret_cast<const unsigned char*>(bytes_.data())) != kMark)
     fail(0, "not a FLAC3D grid: a binary file that does not start with the binary grid's mark (1375135718)");
-  pos_ = 8;
-  if (bytes_.size() < pos_) fail(4, "the file ends inside the header");
+  pos_ = 4;
+  if (const std::uint32_t version = u32("header"); version != kVersion)
+    r_.notes.push_back("the binary grid's version is " + std::to_string(version) + ", not " + std::to_string(kVersion) +
+                       " as the grids this reader knows have it; its records read in "
+                       "their layout");
   const std::size_t n = count("gridpoint count", 28);
   for (std::size_t k = 0; k < n; ++k) {
     r_.node_places.push_back(pos_);

@@ -39,7 +39,7 @@ struct GridRecords {
   Elements zones, faces;
   std::vector<Group> groups;
   std::vector<std::pair<long long, std::size_t>> pins;  // (gridpoint id, place) of pin comments
-  std::vector<std::string> notes;  // for FileExtras::read_notes
+  std::vector<std::string> notes;                       // for FileExtras::read_notes
 
   // "source:line" or "source, byte N".
   std::string where(std::size_t place) const {

@@ -1,5 +1,6 @@
 #pragma once
-// FLAC3D grids (.f3grid, text or binary), the grid files of Itasca's
+// FLAC3D grids (.f3grid, or .flac3d as older versions named them; text or
+// binary), the grid files of Itasca's
 // FLAC3D (zone import / zone export) that geomechanics models are built
 // from. A grid is read with its file kept, so that a smoothed grid is the
 // input with only the coordinates of moved gridpoints changed.
@@ -24,8 +25,12 @@
 //  * F type id gp...: a face, T3 or Q4 (triangle, quad blocks); face ids
 //    are their own numbering.
 //  * ZGROUP name [SLOT slot] and FGROUP name [SLOT slot], then lines of
-//    zone or face ids up to the next record or comment: a group. A name or
-//    slot may be quoted ('...' or "...", and may then hold blanks).
+//    zone or face ids up to the next record (comments may come among them):
+//    a group. A name or slot may be quoted ('...' or "...", and may then
+//    hold blanks). As in FLAC3D, headers of one name (in any case) in one
+//    slot make one group, an element is in one group a slot (the last that
+//    lists it, with a note), and "Default", "1" and no slot at all name the
+//    default slot.
 //  * Comment lines "* TETSMOOTH PINNED id ...", which the writer leaves for
 //    pins nothing else keeps.
 //
@@ -36,15 +41,22 @@
 // excavation stages and any other grouping stay in place. Faces are tagged
 // so by their FGROUPs. A grid without groups has no region tags. The names
 // of the groups holding each tag go to $PhysicalNames (dimension 3 for
-// zones, 2 for faces), which MSH output writes.
-// Refused with the file's line (InputError; a binary grid's byte offset): a
-// record other than these, ids that are not positive or are defined twice, gridpoints, zones or faces that nothing
-// defines, a zone or face with the wrong number of gridpoints, and a grid
-// without T4 zones.
+// zones, 2 for faces), which MSH output writes, as flac3d_group_names.hpp
+// spells them ("Soil + stage 1=excavated"), so that a new grid made from
+// them has the same groups in the same slots.
+// A record of another kind, and the lines of ids after it, are kept in the
+// text (FLAC3D output writes them back) and named in a note: gridpoints it
+// names are not pinned.
+// Refused with the file's line (InputError; a binary grid's byte offset):
+// ids that are not positive or are defined twice, gridpoints, zones or
+// faces that nothing defines, a zone or face with the wrong number of
+// gridpoints, values that are no numbers, a binary file without the
+// binary grid's mark, UTF-16 text, lines that end in a carriage return
+// alone, and a grid without T4 zones.
 // The grid is kept in FileExtras::raw_sections: "flac3d:text" or
-// "flac3d:binary" (the file as read), "flac3d:deck" ("<nodes> <tets>", what it describes) and
-// "flac3d:cut-bricks" (how many B7 zones it has, for a note when another
-// format drops them).
+// "flac3d:binary" (the file as read), "flac3d:deck" ("<nodes> <tets>",
+// what it describes) and "flac3d:cut-bricks" (how many B7 zones it has,
+// for a note when another format drops them).
 //
 // Writing: a mesh read from a grid is written as that grid, line for line,
 // but for the G lines of gridpoints whose coordinates changed, written
@@ -53,10 +65,12 @@
 // still have the grid's gridpoint and zone counts. New grids are text.
 // Any other mesh is written as a new grid: gridpoints, T4 zones, then B8,
 // W6 and P5 zones for hexahedron, wedge and pyramid blocks (gridpoints
-// reordered to FLAC3D's, mirrored where they would be left-handed), a
-// ZGROUP for each region tag (named by $PhysicalNames where it has a name,
-// else "region <tag>"), then T3 and Q4 faces for triangle and quad blocks
-// with an FGROUP for each of their tags, then "* TETSMOOTH PINNED" lines for
+// reordered to FLAC3D's, mirrored where they would be left-handed), the
+// ZGROUPs of the region tags (each tag's name in $PhysicalNames, else
+// "region <tag>", read as groups in their slots by flac3d_group_names.hpp;
+// a tag whose groups another tag has got is a group of its own, so that
+// the regions stay apart), then T3 and Q4 faces for triangle and quad
+// blocks with the FGROUPs of their tags, then "* TETSMOOTH PINNED" lines for
 // the pinned nodes that no written zone or face pins (including the nodes of
 // blocks FLAC3D has no place for: lines, points, second-order faces, which
 // are not written). Ids are the file's where they are positive, distinct and
@@ -76,9 +90,10 @@ TetMesh read_flac3d_file(const std::string& path);
 void write_flac3d(const TetMesh& mesh, std::ostream& out);
 void write_flac3d_file(const TetMesh& mesh, const std::string& path);
 
-// Whether a new FLAC3D grid writes the elements of a block of `kind` (as a
-// zone or a face); the others are dropped, their nodes listed as pins.
-bool flac3d_writes_kind(const std::string& kind);
+// Whether a new FLAC3D grid writes the elements of a block of `kind` with
+// `nodes_per_element` nodes (as zones or faces); the others are dropped,
+// their nodes listed as pins.
+bool flac3d_writes_kind(const std::string& kind, int nodes_per_element);
 
 // The file's own numbers that a new grid for `mesh` cannot keep (see
 // file_numbers.hpp): "node", "element", "node and element", or "".

@@ -2,6 +2,9 @@
 // (a binary one by flac3d_binary.cpp) into records, which are resolved once
 // the whole grid is read (flac3d_resolve.cpp), since a group may come
 // before the zones it holds, and ids name items by the file's numbers.
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <istream>
 #include <string_view>
@@ -36,6 +39,7 @@ class TextGridParser {
   void gridpoint();
   void element(Elements& into, char record);
   void group(char record);
+  void unread_record();
 
   const std::string& text_;
   GridRecords r_;
@@ -44,11 +48,29 @@ class TextGridParser {
   // The group whose ids the next lines may list (an index in r_.groups).
   static constexpr std::size_t kNone = ~std::size_t{0};
   std::size_t open_group_ = kNone;
+  // Whether the lines of ids that follow belong to a record not read.
+  bool skipping_ = false;
+  std::vector<std::pair<std::string, std::size_t>> unread_;  // each kind not read, and its first line
 };
+
+// Why a value that does not parse is not one: too many digits, or no
+// number at all ("1.5D+00", which FLAC3D does not write).
+std::string not_read(std::string_view value, bool real) {
+  double d = 0;
+  const auto [ptr, ec] =
+      std::from_chars(value.data() + (!value.empty() && value[0] == '+'), value.data() + value.size(), d);
+  const bool digits = std::all_of(value.begin(), value.end(), [](char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-';
+  });
+  if (ptr == value.data() + value.size() && ec == std::errc::result_out_of_range)
+    return " is out of the range of a double";
+  if (!real && digits && !value.empty()) return " is out of range";
+  return real ? " is not a number" : " is not a whole number";
+}
 
 long long TextGridParser::id(std::string_view value, const char* what) const {
   long long v = 0;
-  if (!parse_integer(value, v)) fail(std::string(what) + " " + quoted_token(value) + " is not a whole number");
+  if (!parse_integer(value, v)) fail(std::string(what) + " " + quoted_token(value) + not_read(value, false));
   if (v <= 0) fail(std::string(what) + " " + std::to_string(v) + " is not positive");
   return v;
 }
@@ -59,8 +81,9 @@ void TextGridParser::gridpoint() {
   r_.node_ids.push_back(id(values_[1], "gridpoint id"));
   for (std::size_t c = 0; c < 3; ++c) {
     double v = 0;
-    if (!parse_real(values_[2 + c], v) || !std::isfinite(v))
-      fail(std::string("coordinate ") + "xyz"[c] + " " + quoted_token(values_[2 + c]) + " is not a finite number");
+    const std::string axis = std::string("coordinate ") + "xyz"[c] + " " + quoted_token(values_[2 + c]);
+    if (!parse_real(values_[2 + c], v)) fail(axis + not_read(values_[2 + c], true));
+    if (!std::isfinite(v)) fail(axis + " is not finite");
     r_.xyz.push_back(v);
   }
   r_.node_places.push_back(line_no_);
@@ -95,6 +118,7 @@ void TextGridParser::record(std::string_view line) {
   if (values_.empty()) return;
   long long first = 0;
   if (parse_integer(values_[0], first)) {
+    if (skipping_) return;
     if (open_group_ == kNone) fail("a line of ids outside a ZGROUP or FGROUP");
     Group& g = r_.groups[open_group_];
     for (std::string_view v : values_) {
@@ -104,35 +128,51 @@ void TextGridParser::record(std::string_view line) {
     return;
   }
   open_group_ = kNone;
+  skipping_ = false;
   const std::string keyword = upper_case(values_[0]);
-  if (keyword == "G")
+  if (flac3d::is_gridpoint(values_))
     gridpoint();
   else if (keyword == "Z" || keyword == "F")
     element(keyword == "Z" ? r_.zones : r_.faces, keyword[0]);
   else if (keyword == "ZGROUP" || keyword == "FGROUP")
     group(keyword[0]);
   else
-    fail("record " + quoted_token(values_[0]) +
-         " is none that a FLAC3D grid holds (G, Z, F, ZGROUP, FGROUP, or a comment after '*')");
+    unread_record();
+}
+
+// A record of a kind not read, and the lines of ids after it, are kept in
+// the text (written back as they are) and named in a note.
+void TextGridParser::unread_record() {
+  skipping_ = true;
+  const std::string kind = upper_case(values_[0]);
+  for (const auto& [k, line] : unread_)
+    if (k == kind) return;
+  unread_.emplace_back(kind, line_no_);
 }
 
 GridRecords TextGridParser::parse() {
-  std::size_t start = text_.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
+  std::size_t start = bom_length(text_);
   while (start < text_.size()) {
     std::size_t end = text_.find('\n', start);
     if (end == std::string::npos) end = text_.size();
     const std::string_view line(text_.data() + start, end - start);
     ++line_no_;
     std::vector<std::string_view> ids;
+    // Comments leave a group's ids open: they may come among them.
     if (flac3d::pinned_comment(line, ids)) {
       for (std::string_view v : ids) r_.pins.emplace_back(id(v, "pinned gridpoint"), line_no_);
-      open_group_ = kNone;
-    } else if (flac3d::is_comment(line)) {
-      open_group_ = kNone;
-    } else {
+    } else if (!flac3d::is_comment(line)) {
       record(line);
     }
     start = end + 1;
+  }
+  if (!unread_.empty()) {
+    std::vector<std::string> kinds;
+    for (const auto& [kind, line] : unread_)
+      kinds.push_back(quoted_token(kind) + " (line " + std::to_string(line) + ")");
+    r_.notes.push_back("records of kinds tetsmooth does not read, " + joined(kinds) +
+                       ", are kept in FLAC3D output and left out of other formats; gridpoints they name are not "
+                       "pinned: list those that must stay on a '* TETSMOOTH PINNED' line");
   }
   return std::move(r_);
 }
@@ -145,9 +185,13 @@ bool is_binary(const std::string& file) { return file.find('\0') != std::string:
 
 TetMesh read_flac3d(std::istream& in, const std::string& source) {
   std::string file = read_all(in, source);
+  if (file.compare(0, 2, "\xFF\xFE") == 0 || file.compare(0, 2, "\xFE\xFF") == 0)
+    throw InputError(source, "UTF-16 text (as Windows PowerShell saves it): save the grid as ASCII or UTF-8");
+  if (file.find('\n') == std::string::npos && file.find('\r') != std::string::npos)
+    throw InputError(source, "lines that end in a carriage return alone: save the grid with LF or CRLF line ends");
   const bool binary = is_binary(file);
-  TetMesh mesh = flac3d::resolve_grid(binary ? flac3d::parse_binary_grid(file, source)
-                                             : TextGridParser(file, source).parse());
+  TetMesh mesh =
+      flac3d::resolve_grid(binary ? flac3d::parse_binary_grid(file, source) : TextGridParser(file, source).parse());
   mesh.extras.raw_sections.emplace_back(binary ? "flac3d:binary" : "flac3d:text", std::move(file));
   stamp_kept_deck(mesh, "flac3d");
   return mesh;

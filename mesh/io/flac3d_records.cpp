@@ -34,12 +34,19 @@ bool split_values(std::string_view line, std::vector<std::string_view>& values) 
   }
 }
 
+bool is_gridpoint(const std::vector<std::string_view>& values) {
+  return !values.empty() && (values[0] == "G" || values[0] == "g");
+}
+
 bool pinned_comment(std::string_view line, std::vector<std::string_view>& ids) {
   const std::size_t star = line.find('*');
   if (!is_comment(line)) return false;
+  // A comment that only talks of pins ("* tetsmooth pinned these") is none.
   std::vector<std::string_view> words;
-  split_values(line.substr(star + 1), words);
-  if (words.size() < 2 || upper_case(words[0]) != "TETSMOOTH" || upper_case(words[1]) != "PINNED") return false;
+  long long first = 0;
+  if (!split_values(line.substr(star + 1), words) || words.size() < 3 || upper_case(words[0]) != "TETSMOOTH" ||
+      upper_case(words[1]) != "PINNED" || !parse_integer(words[2], first))
+    return false;
   ids.assign(words.begin() + 2, words.end());
   return true;
 }

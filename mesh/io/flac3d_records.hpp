@@ -17,8 +17,14 @@ bool is_comment(std::string_view line);
 // when such a quote is not closed.
 bool split_values(std::string_view line, std::vector<std::string_view>& values);
 
-// The text of a comment line that lists pins ("* TETSMOOTH PINNED 4 7 9"):
-// true and the ids (as text) for such a line, else false.
+// Whether a line that is no comment, split into `values`, is a gridpoint
+// record ("G id x y z"): the reader takes the k-th such line for node k, and
+// the writer writes node k back in its place.
+bool is_gridpoint(const std::vector<std::string_view>& values);
+
+// The text of a comment line that lists pins ("* TETSMOOTH PINNED 4 7 9",
+// the words in any case, a whole number after them): true and the ids (as
+// text) for such a line, else false.
 bool pinned_comment(std::string_view line, std::vector<std::string_view>& ids);
 
 // "* TETSMOOTH PINNED", the start of a pin comment line.

@@ -5,15 +5,16 @@
 #include <map>
 #include <ostream>
 #include <set>
-#include <utility>
 #include <string_view>
+#include <utility>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/file_numbers.hpp"
+#include "mesh/io/flac3d_grid_records.hpp"
+#include "mesh/io/flac3d_group_names.hpp"
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/flac3d_records.hpp"
 #include "mesh/io/flac3d_zone_types.hpp"
-#include "mesh/io/flac3d_grid_records.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/little_endian.hpp"
 #include "mesh/io/number_text.hpp"
@@ -56,8 +57,10 @@ void write_kept_binary_grid(const TetMesh& mesh, std::string bytes, std::ostream
 void write_kept_grid(const TetMesh& mesh, std::ostream& out) {
   if (const std::string* bytes = raw_section(mesh.extras, "flac3d:binary"))
     return write_kept_binary_grid(mesh, *bytes, out);
-  const std::string& text = *raw_section(mesh.extras, "flac3d:text");
-  std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  const std::string* kept = raw_section(mesh.extras, "flac3d:text");
+  if (kept == nullptr) throw OutputError("the mesh is stamped as read from a FLAC3D grid, and carries no grid");
+  const std::string& text = *kept;
+  std::size_t start = bom_length(text);
   out << text.substr(0, start);
   std::size_t node = 0;
   std::vector<std::string_view> values;
@@ -68,8 +71,8 @@ void write_kept_grid(const TetMesh& mesh, std::ostream& out) {
     const std::string_view line(text.data() + start, end - start);
     start = end + 1;
     // The reader took each such line for the next gridpoint.
-    const bool gridpoint = !flac3d::is_comment(line) && flac3d::split_values(line, values) && values.size() == 5 &&
-                           upper_case(values[0]) == "G";
+    const bool gridpoint =
+        !flac3d::is_comment(line) && flac3d::split_values(line, values) && flac3d::is_gridpoint(values);
     bool moved = false;
     if (gridpoint) {
       if (node >= mesh.num_nodes()) throw OutputError("the kept FLAC3D grid has more G lines than the mesh nodes");
@@ -93,37 +96,13 @@ void write_kept_grid(const TetMesh& mesh, std::ostream& out) {
 
 // Whether a block's elements are written as zones or faces of `record`.
 bool written_as(const PassThroughBlock& b, char record) {
-  return flac3d_writes_kind(b.kind) && flac3d::zone_type_of_kind(b.kind)->record == record;
+  return flac3d_writes_kind(b.kind, b.nodes_per_element) && flac3d::zone_type_of_kind(b.kind)->record == record;
 }
 
-// The file's ids of the zones (record 'Z': the tets, then the elements of
-// each block written as zones) or the faces ('F'), in that order, and how
-// many there are; the ids are empty unless every one has one.
-std::pair<std::vector<long long>, std::size_t> file_ids(const TetMesh& mesh, char record) {
-  const FileExtras& e = mesh.extras;
-  std::vector<long long> ids;
-  std::size_t count = 0;
-  bool complete = true;
-  if (record == 'Z') {
-    ids = e.tet_element_tags;
-    count = mesh.num_tets();
-    complete = ids.size() == count;
-  }
-  for (const PassThroughBlock& b : e.blocks)
-    if (written_as(b, record)) {
-      count += elements_in(b);
-      complete = complete && b.element_tags.size() == elements_in(b);
-      ids.insert(ids.end(), b.element_tags.begin(), b.element_tags.end());
-    }
-  return {complete ? ids : std::vector<long long>{}, count};
-}
-
-// The ids a new grid gives the zones or the faces (file_ids' order): the
-// file's where they are positive and distinct (zones and faces are numbered
-// apart), else 1, 2, ...
-std::vector<long long> new_ids(const TetMesh& mesh, char record) {
-  const auto [ids, count] = file_ids(mesh, record);
-  return numbers_or_positions(ids, count, kLargestId);
+// The zones (record 'Z': the tets, then the elements of each block written
+// as zones) or the faces ('F'), which FLAC3D numbers apart.
+ElementSet elements_of(char record) {
+  return ElementSet{record == 'Z', [record](const PassThroughBlock& b) { return written_as(b, record); }};
 }
 
 void check_new_grid(const TetMesh& mesh) {
@@ -144,6 +123,12 @@ std::string quoted_name(std::string name) {
   return '\'' + name + '\'';
 }
 
+// A slot's name as it is where it can be (SLOT Default), else quoted.
+std::string slot_text(const std::string& slot) {
+  const bool plain = !slot.empty() && slot.find_first_of(" \t,'\"") == std::string::npos;
+  return plain ? slot : quoted_name(slot);
+}
+
 void write_ids(std::ostream& out, const char* first_line, const char* next_lines, const std::vector<long long>& ids) {
   for (std::size_t k = 0; k < ids.size(); ++k) {
     out << (k == 0 ? first_line : k % kIdsPerLine == 0 ? next_lines : " ");
@@ -160,16 +145,38 @@ class Groups {
     if (added) order_.push_back(tag);
     it->second.push_back(id);
   }
-  // One GROUP line a tag ("ZGROUP", say), named by `names` where they name
-  // it, each name once.
+  // The GROUP lines ("ZGROUP", say) of the tags: each tag's name (from
+  // `names`, else "region <tag>") read as groups in their slots
+  // (flac3d_group_names.hpp), each group once with every element of the
+  // tags it holds. A tag whose groups another tag has already got a group
+  // of its own, so that their regions stay apart.
   void write(std::ostream& out, const char* keyword, const std::map<int, std::string>& names) const {
-    std::set<std::string> used;
+    std::vector<flac3d::Membership> groups;    // in the order met
+    std::map<std::string, std::size_t> index;  // slot and group in upper case -> in groups
+    std::vector<std::vector<long long>> members;
+    std::set<std::string> held;  // the groups of each tag so far, as one key
     for (int tag : order_) {
       const auto named = names.find(tag);
-      std::string name = named != names.end() ? named->second : "region " + std::to_string(tag);
-      if (!used.insert(name).second) used.insert(name += " (tag " + std::to_string(tag) + ")");
-      out << keyword << ' ' << quoted_name(name) << " SLOT 1\n";
-      write_ids(out, " ", "\n ", members_.at(tag));
+      std::vector<flac3d::Membership> of_tag =
+          flac3d::memberships_of(named != names.end() ? named->second : "region " + std::to_string(tag));
+      std::string key;
+      for (const flac3d::Membership& m : of_tag) key += upper_case(m.slot) + '=' + upper_case(m.group) + '\n';
+      if (!held.insert(key).second)
+        of_tag = {flac3d::Membership{"Default", flac3d::region_name(of_tag) + " (tag " + std::to_string(tag) + ")"}};
+      for (const flac3d::Membership& m : of_tag) {
+        const std::string slot = flac3d::is_default_slot(m.slot) ? "Default" : m.slot;
+        const auto [it, added] = index.try_emplace(upper_case(slot) + '\n' + upper_case(m.group), groups.size());
+        if (added) {
+          groups.push_back(flac3d::Membership{slot, m.group});
+          members.emplace_back();
+        }
+        const std::vector<long long>& ids = members_.at(tag);
+        members[it->second].insert(members[it->second].end(), ids.begin(), ids.end());
+      }
+    }
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      out << keyword << ' ' << quoted_name(groups[g].group) << " SLOT " << slot_text(groups[g].slot) << '\n';
+      write_ids(out, " ", "\n ", members[g]);
     }
   }
 
@@ -209,7 +216,7 @@ void write_new_grid(const TetMesh& mesh, std::ostream& out) {
   for (const char record : {'Z', 'F'}) {
     out << (record == 'Z' ? "* ZONES\n" : "* FACES\n");
     Groups groups;
-    const std::vector<long long> ids = new_ids(mesh, record);
+    const std::vector<long long> ids = element_numbers(mesh, kLargestId, elements_of(record));
     std::size_t next = 0;  // in ids
     if (record == 'Z')
       for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
@@ -237,38 +244,24 @@ void write_new_grid(const TetMesh& mesh, std::ostream& out) {
   }
   // Pins that no zone or face written keeps: the file's own, and the nodes
   // of the elements FLAC3D has no place for.
-  std::vector<std::uint8_t> listed(mesh.num_nodes(), 0), kept(mesh.num_nodes(), 0);
-  for (std::size_t i = 0; i < mesh.fixed.size() && i < mesh.num_nodes(); ++i) listed[i] = mesh.fixed[i];
-  for (const PassThroughBlock& b : e.blocks)
-    for (std::int32_t n : b.connectivity) (flac3d_writes_kind(b.kind) ? kept : listed)[static_cast<std::size_t>(n)] = 1;
-  std::vector<long long> pins;
-  for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
-    if (listed[i] && !kept[i]) pins.push_back(node_ids[i]);
   const std::string first_line = std::string(flac3d::kPinnedComment) + " ";
-  write_ids(out, first_line.c_str(), ("\n" + first_line).c_str(), pins);
+  write_ids(out, first_line.c_str(), ("\n" + first_line).c_str(),
+            pins_to_list(mesh, node_ids,
+                         [](const PassThroughBlock& b) { return flac3d_writes_kind(b.kind, b.nodes_per_element); }));
 }
 
 constexpr DeckWriter kWriter{"flac3d", "FLAC3D grid", check_new_grid, write_kept_grid, write_new_grid};
 
 }  // namespace
 
-bool flac3d_writes_kind(const std::string& kind) {
+bool flac3d_writes_kind(const std::string& kind, int nodes_per_element) {
   const ZoneType* type = flac3d::zone_type_of_kind(kind);
-  return type != nullptr && *type->kind != '\0' && kind != "tetra";
+  return type != nullptr && *type->kind != '\0' && kind != "tetra" &&
+         type->nodes == static_cast<std::size_t>(nodes_per_element);
 }
 
 std::string flac3d_numbers_lost(const TetMesh& mesh) {
-  if (has_kept_deck(mesh, "flac3d")) return "";
-  const FileExtras& e = mesh.extras;
-  const bool nodes = !e.node_tags.empty() && !usable_numbers(e.node_tags, mesh.num_nodes(), kLargestId);
-  bool elements = false;
-  for (const char record : {'Z', 'F'}) {
-    bool any = record == 'Z' && !e.tet_element_tags.empty();
-    for (const PassThroughBlock& b : e.blocks) any = any || (written_as(b, record) && !b.element_tags.empty());
-    const auto [ids, count] = file_ids(mesh, record);
-    elements = elements || (any && !usable_numbers(ids, count, kLargestId));
-  }
-  return nodes && elements ? "node and element" : nodes ? "node" : elements ? "element" : "";
+  return has_kept_deck(mesh, "flac3d") ? "" : numbers_lost(mesh, kLargestId, {elements_of('Z'), elements_of('F')});
 }
 
 void write_flac3d(const TetMesh& mesh, std::ostream& out) { kWriter.write(mesh, out); }

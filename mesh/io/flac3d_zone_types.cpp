@@ -12,13 +12,14 @@ namespace {
 // it reads with the first triangle wound as VTK's, out of the cell, where
 // its own wedge (and Gmsh's, and tetsmooth's) winds it into the cell.
 constexpr ZoneType kTypes[] = {
-    {"T4", 'Z', "tetra", 4, {0, 1, 2, 3}, {0, 2, 1, 3}},
+    // Tets and faces are read and written as listed, and faces never mirrored.
+    {"T4", 'Z', "tetra", 4, {0, 1, 2, 3}, {}},
     {"B8", 'Z', "hexahedron", 8, {0, 1, 4, 2, 3, 6, 7, 5}, {0, 2, 1, 3, 4, 6, 5, 7}},
     {"W6", 'Z', "wedge", 6, {0, 3, 1, 2, 5, 4}, {0, 3, 2, 1, 5, 4}},
     {"P5", 'Z', "pyramid", 5, {0, 1, 4, 2, 3}, {0, 2, 1, 3, 4}},
     {"B7", 'Z', "", 7, {}, {}},
-    {"T3", 'F', "triangle", 3, {0, 1, 2}, {0, 2, 1}},
-    {"Q4", 'F', "quad", 4, {0, 1, 2, 3}, {0, 3, 2, 1}},
+    {"T3", 'F', "triangle", 3, {0, 1, 2}, {}},
+    {"Q4", 'F', "quad", 4, {0, 1, 2, 3}, {}},
 };
 
 }  // namespace

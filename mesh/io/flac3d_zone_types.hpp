@@ -24,7 +24,7 @@ struct ZoneType {
   int from_file[8];
   // mirrored[k]: the place in FLAC3D's list of the k-th gridpoint of the same
   // zone mirrored (two of its axes swapped), for a zone whose FLAC3D list
-  // would be left-handed.
+  // would be left-handed (bricks, wedges and pyramids of other formats).
   int mirrored[8];
 };
 

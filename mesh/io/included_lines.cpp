@@ -7,6 +7,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/input_file.hpp"
+#include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -38,7 +39,7 @@ bool IncludedLines::next(std::string& out) {
     if (std::getline(*s.in, out)) {
       ++s.line;
       ++lines_read_;
-      if (s.line == 1 && out.compare(0, 3, "\xEF\xBB\xBF") == 0) out.erase(0, 3);  // a UTF-8 byte order mark
+      if (s.line == 1) out.erase(0, bom_length(out));
       while (!out.empty() && out.back() == '\r') out.pop_back();
       return true;
     }

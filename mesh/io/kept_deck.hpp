@@ -1,6 +1,7 @@
 #pragma once
-// A solver's input deck kept whole with the mesh read from it (Abaqus,
-// Nastran), so that the writer writes the deck back with new coordinates:
+// A solver's input deck or grid kept whole with the mesh read from it
+// (Abaqus, Nastran, FLAC3D), so that the writer writes it back with new
+// coordinates:
 // the raw section "<format>:deck" records the nodes and tets it describes
 // (not a public API).
 #include <ostream>
@@ -14,7 +15,7 @@ namespace tetsmooth {
 void stamp_kept_deck(TetMesh& mesh, const std::string& format_key);
 
 // Whether the mesh carries a deck stamped for `format_key` ("abaqus",
-// "nastran").
+// "nastran", "flac3d").
 bool has_kept_deck(const TetMesh& mesh, const std::string& format_key);
 
 // Throws OutputError unless the deck still describes the mesh, with its

@@ -51,7 +51,7 @@ constexpr Extension kExtensions[] = {
     {".node", MeshFormat::TetGen}, {".ele", MeshFormat::TetGen}, {".vtu", MeshFormat::Vtu},   {".vtk", MeshFormat::Vtk},
     {".msh", MeshFormat::Msh41},   {".mesh", MeshFormat::Medit}, {".tsm", MeshFormat::Cache},
     {".inp", MeshFormat::Abaqus},  {".bdf", MeshFormat::Nastran}, {".nas", MeshFormat::Nastran},
-    {".f3grid", MeshFormat::Flac3d},
+    {".f3grid", MeshFormat::Flac3d}, {".flac3d", MeshFormat::Flac3d},
 };
 
 std::string lower(std::string s) {
@@ -93,7 +93,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 

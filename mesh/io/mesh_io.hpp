@@ -24,7 +24,7 @@ enum class MeshFormat {
   Cache,        // tetsmooth binary cache .tsm
   Abaqus,       // Abaqus/CalculiX input deck .inp
   Nastran,      // Nastran bulk data .bdf, .nas
-  Flac3d,       // FLAC3D grid .f3grid (text; reading also binary)
+  Flac3d,       // FLAC3D grid .f3grid, .flac3d (text or binary; new grids are text)
 };
 
 // Parses a --format value ("tetgen", "vtu", "vtk", "msh", "msh41", "msh41-binary",

@@ -26,8 +26,11 @@ void RegionNames::add(int dimension, const std::vector<int>& tags, const std::ve
 std::string RegionNames::msh_body() const {
   std::string body = std::to_string(entries_.size()) + "\n";
   for (const Entry& e : entries_) {
+    // A name is one quoted field of one line.
     std::string name = e.name;
     std::replace(name.begin(), name.end(), '"', '\'');
+    std::replace_if(
+        name.begin(), name.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, ' ');
     body += std::to_string(e.dimension) + " " + std::to_string(e.tag) + " \"" + name + "\"\n";
   }
   return body;

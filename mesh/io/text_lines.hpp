@@ -34,6 +34,10 @@ std::string upper_case(std::string_view text);
 // "a, b, c": a list for a message or a note.
 std::string joined(const std::vector<std::string>& items);
 
+// The length of the UTF-8 byte order mark that starts `text` (Windows
+// editors write one): 3, or 0 without one. It is not content.
+inline std::size_t bom_length(std::string_view text) { return text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; }
+
 class TextLines {
  public:
   // comment: a character that starts a comment running to the end of the

@@ -93,7 +93,7 @@ VtuLayout scan(std::string_view text, XmlScanner& xml) {
   // A file that is not XML at all (another format, a wrong --format) is
   // told by what it holds; "empty" only where it holds nothing.
   constexpr std::string_view kExpected = "expected <VTKFile type=\"UnstructuredGrid\">";
-  std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;  // a UTF-8 byte order mark
+  std::size_t start = bom_length(text);
   start = std::min(text.find_first_not_of(" \t\r\n", start), text.size());
   if (start == text.size()) xml.fail(0, "empty file, " + std::string(kExpected));
   if (text[start] != '<')

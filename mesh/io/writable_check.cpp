@@ -307,8 +307,7 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (f == MeshFormat::Flac3d && !flac3d) {
     std::string kinds;
     for (const PassThroughBlock& b : e.blocks)
-      if (const std::size_t n = b.connectivity.size() / static_cast<std::size_t>(std::max(b.nodes_per_element, 1));
-          n > 0 && !flac3d_writes_kind(b.kind))
+      if (const std::size_t n = elements_in(b); n > 0 && !flac3d_writes_kind(b.kind, b.nodes_per_element))
         kinds += (kinds.empty() ? "" : ", ") + count_of(n, b.kind);
     if (!kinds.empty())
       notes.push_back(kinds + " will not be written: " + name +
@@ -317,7 +316,9 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   // MSH writes the names of the regions as physical names, FLAC3D as its
   // groups' names.
   const bool keeps_names = msh || f == MeshFormat::Flac3d;
-  if ((abaqus || flac3d) && f != MeshFormat::Abaqus && !keeps_names && raw_section(e, "$PhysicalNames") != nullptr)
+  // An Abaqus deck kept keeps its set names; a new one names its sets by tag.
+  if ((abaqus || flac3d) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&
+      raw_section(e, "$PhysicalNames") != nullptr)
     notes.push_back(std::string("the names of the regions (the ") +
                     (abaqus ? "deck's element sets" : "grid's zone and face groups") + ") will not be written: " +
                     name + " has no place for them");

@@ -26,9 +26,10 @@ What is checked, and why:
   byte order mark, blank lines) read as meshio's plain grid does.
 - A binary grid (meshio's layout) smooths to the coordinates its text twin
   does, and comes back binary, byte for byte but for those coordinates.
-- Bad grids (unknown records, undefined or repeated ids, a binary grid cut
-  short, ...) are refused with exit status 3 and their file and line (or
-  byte), leaving no output and an existing output file as it was.
+- Bad grids (undefined or repeated ids, a binary grid cut short, ...) are
+  refused with exit status 3 and their file and line (or byte), leaving no
+  output and an existing output file as it was; a record of another kind is
+  kept in the smoothed grid and named in a warning.
 
 Volumes are computed here by splitting each cell into tets, in meshio's
 node order, which is VTK's for hexahedra and pyramids and Gmsh's for wedges
@@ -383,7 +384,8 @@ class MeshioGrids(Flac3dCase):
             expected[key == k] = tag
         np.testing.assert_array_equal(tags, expected)
         names = {int(tag): name for name, (tag, dim) in msh.field_data.items() if dim == 3}
-        for k, name in ((3, "lower + stage 1"), (2, "lower"), (1, "upper + stage 1"), (0, "upper")):
+        # (FLAC3D's "slot=group" outside the default slot.)
+        for k, name in ((3, "lower + 2=stage 1"), (2, "lower"), (1, "upper + 2=stage 1"), (0, "upper")):
             self.assertEqual(names[expected[key == k][0]], name)
 
     def test_format_variants_read_alike(self):
@@ -510,7 +512,6 @@ class MeshioGrids(Flac3dCase):
 
         # name: (text, the line at fault (1-based), what the message names)
         cases = {
-            "record.f3grid": (edited(last_z + 1, "ATTACH 1 2"), last_z + 2, "'ATTACH'"),
             "undefined.f3grid": (edited(first_z, " ".join(z[:-1] + ["99999"]), drop=1), first_z + 1, "99999"),
             "twice.f3grid": (edited(last_g + 1, plain[first_g].replace("0.0", "5.0")), last_g + 2, "second time"),
             "zone-twice.f3grid": (edited(last_z + 1, plain[first_z]), last_z + 2, "second time"),
@@ -518,7 +519,7 @@ class MeshioGrids(Flac3dCase):
             "zero.f3grid": (edited(first_g, "G 0 9 9 9"), first_g + 1, "not positive"),
             "group.f3grid": (edited(group + 1, plain[group + 1] + " 99999", drop=1), group + 2, "99999"),
             "quote.f3grid": (edited(group, 'ZGROUP "lower SLOT 1', drop=1), group + 1, "quote"),
-            "outside.f3grid": (edited(group + 1, "* the ids of lower:"), group + 3, "outside"),
+            "outside.f3grid": (edited(first_z + 1, " 1 2"), first_z + 2, "outside"),
             "pin.f3grid": (edited(len(plain), "* TETSMOOTH PINNED 99999"), len(plain) + 1, "99999"),
         }
         for name, (text, line, fragment) in cases.items():
@@ -530,6 +531,12 @@ class MeshioGrids(Flac3dCase):
                 self.assertIn(f"{name}:{line}: ", proc.stderr)
                 self.assertIn(fragment, proc.stderr)
                 self.assertFalse(os.path.exists(out))
+        # A record of another kind is kept, and named in a warning.
+        src, out = self.write("record.f3grid", edited(last_z + 1, "ATTACH 1 2", " 3 4")), self.path("out-record.f3grid")
+        proc = run("smooth", src, "-o", out, "--device", "cpu", check=False)
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn(f"'ATTACH' (line {last_z + 2})", proc.stderr)
+        self.assertIn("\nATTACH 1 2\n 3 4\n", read_text(out))
         # A binary grid cut short names its byte; a grid without tets has no
         # line to blame.
         meshio.write(self.path("binary.f3grid"), meshio.read(self.src), file_format="flac3d", binary=True)
@@ -700,14 +707,15 @@ class NewGrids(Flac3dCase):
                              list(map(sorted, self.cells[kind].tolist())))
         # Groups named as the physical names, "region <tag>" without one.
         self.assertEqual(sorted(mesh.cell_sets),
-                         ["face:region 6:1", "face:top:1", "zone:clay:1", "zone:region 3:1", "zone:sand:1"])
+                         ["face:region 6:Default", "face:top:Default", "zone:clay:Default", "zone:region 3:Default",
+                          "zone:sand:Default"])
         members = {key: np.concatenate(blocks) for key, blocks in mesh.cell_sets.items()}
         offset = {c.type: sum(len(b.data) for b in mesh.cells[:k]) for k, c in enumerate(mesh.cells)}
-        np.testing.assert_array_equal(members["zone:sand:1"] - offset["tetra"], np.flatnonzero(self.tet_tags == 1))
-        np.testing.assert_array_equal(members["zone:clay:1"] - offset["tetra"], np.flatnonzero(self.tet_tags == 2))
-        np.testing.assert_array_equal(members["face:top:1"] - offset["triangle"],
+        np.testing.assert_array_equal(members["zone:sand:Default"] - offset["tetra"], np.flatnonzero(self.tet_tags == 1))
+        np.testing.assert_array_equal(members["zone:clay:Default"] - offset["tetra"], np.flatnonzero(self.tet_tags == 2))
+        np.testing.assert_array_equal(members["face:top:Default"] - offset["triangle"],
                                       np.flatnonzero(self.triangle_tags == 5))
-        self.assertEqual(len(members["zone:region 3:1"]), sum(len(self.cells[k]) for k in FLIPS))
+        self.assertEqual(len(members["zone:region 3:Default"]), sum(len(self.cells[k]) for k in FLIPS))
         # Faces are T3 records, and their groups FGROUPs.
         self.assertEqual({f[0] for f in self.grid.faces}, {"T3"})
         self.assertEqual(sorted(g[1] for g in self.grid.groups if g[0] == "F"), ["region 6", "top"])

@@ -54,7 +54,7 @@ class TextGridParser {
 };
 
 // Why a value that does not parse is not one: too many digits, or no
-// number at all ("1.5D+00", which FLAC3D does not write).
+// number at all (a Fortran exponent, "1.5D+00", is none).
 std::string not_read(std::string_view value, bool real) {
   double d = 0;
   const auto [ptr, ec] =
@@ -177,8 +177,8 @@ GridRecords TextGridParser::parse() {
   return std::move(r_);
 }
 
-// A binary grid starts with a count that has zero bytes; a text grid has
-// none.
+// A binary grid has zero bytes (its version, 3, has three, and its counts
+// and ids more); a text grid has none.
 bool is_binary(const std::string& file) { return file.find('\0') != std::string::npos; }
 
 }  // namespace

@@ -64,7 +64,7 @@ std::vector<int> Resolver::tags_of(char record, const Elements& elements, const 
   std::vector<std::vector<std::int32_t>> group_in;            // per slot: each element's group, or -1
   std::vector<Membership> groups;                             // as first spelled
   std::unordered_map<std::string, std::size_t> group_of_key;  // slot key, '\n', name in upper case
-  std::size_t relisted = 0;
+  std::vector<std::uint8_t> relisted(count, 0);  // elements listed in a second group of a slot
   for (const Group& g : r_.groups) {
     if (g.record != record) continue;
     const std::string slot_key = is_default_slot(g.slot) ? "DEFAULT" : upper_case(g.slot);
@@ -83,14 +83,13 @@ std::vector<int> Resolver::tags_of(char record, const Elements& elements, const 
         fail(g.places[i], std::string(record == 'Z' ? "zone " : "face ") + std::to_string(g.ids[i]) + " of group " +
                               quoted_token(g.name) + " is not defined");
       std::int32_t& in = group_in[slot][static_cast<std::size_t>(e)];
-      relisted += in >= 0 && in != static_cast<std::int32_t>(group);
+      if (in >= 0 && in != static_cast<std::int32_t>(group)) relisted[static_cast<std::size_t>(e)] = 1;
       in = static_cast<std::int32_t>(group);
     }
   }
   if (groups.empty()) return {};
-  if (relisted > 0)
-    r_.notes.push_back(std::to_string(relisted) + (record == 'Z' ? " zone" : " face") +
-                       (relisted == 1 ? " is" : "s are") +
+  if (const auto n = static_cast<std::size_t>(std::count(relisted.begin(), relisted.end(), 1)); n > 0)
+    r_.notes.push_back(std::to_string(n) + (record == 'Z' ? " zone" : " face") + (n == 1 ? " is" : "s are") +
                        " listed in two groups of one slot: each is taken to be in the last, as FLAC3D does");
   RegionSplitter regions(count);
   std::vector<std::vector<std::size_t>> members(groups.size());

@@ -185,8 +185,9 @@ class Groups {
   std::vector<int> order_;
 };
 
-// FLAC3D's list of a zone or face from its nodes in VTK's order, mirrored
-// where the first four would be left-handed.
+// FLAC3D's list of a zone or face from its nodes in the other formats' order
+// (flac3d_zone_types.hpp), mirrored where the first four would be
+// left-handed.
 std::array<index_t, 8> file_order(const TetMesh& mesh, const ZoneType& type, const std::int32_t* nodes) {
   std::array<index_t, 8> listed{}, mirrored{};
   for (std::size_t k = 0; k < type.nodes; ++k) listed[static_cast<std::size_t>(type.from_file[k])] = nodes[k];

@@ -35,8 +35,9 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
                             whole, with the new coordinates)
   .bdf/.nas   nastran       Nastran bulk data, small, large or free field (a deck
                             read is written back whole, moved GRIDs in large field)
-  .f3grid     flac3d        FLAC3D grid, text or binary (a grid read is written back
-                            whole, with the new coordinates; zone groups are regions)
+  .f3grid     flac3d        FLAC3D grid, text or binary (.flac3d too; a grid read is
+                            written back whole, with the new coordinates; zone groups
+                            are regions)
   .tsm        tsm           tetsmooth binary cache
 )";
 

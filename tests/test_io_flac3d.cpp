@@ -216,6 +216,8 @@ TEST(Flac3dIo, GroupsAreMergedByNameAndSlotAndTheLastOfASlotHoldsAZone) {
   const std::string grid =
       "G 1 0 0 0\nG 2 1 0 0\nG 3 0 1 0\nG 4 0 0 1\nG 5 1 1 1\n"
       "Z T4 1 1 2 3 4\nZ T4 2 2 5 3 4\nZ T4 3 1 2 3 5\n"
+      "* tetsmooth pinned these by hand:\n"
+      "* TETSMOOTH PINNED 5 and more\n"
       "ZGROUP 'Rock' SLOT 'Default'\n 1\n"
       "* a comment among the ids\n 1\n"
       "ZGROUP ROCK\n 2\n"
@@ -225,24 +227,46 @@ TEST(Flac3dIo, GroupsAreMergedByNameAndSlotAndTheLastOfASlotHoldsAZone) {
   // Zones 1 and 2: Rock and A; zone 3: B only (listed in A, then in B).
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1, 1, 2}));
   EXPECT_EQ(raw(mesh, "$PhysicalNames"), "2\n3 1 \"Rock + x=A\"\n3 2 \"x=B\"\n");
+  // The pin comments are no lists of ids: they pin nothing, with a note.
+  EXPECT_TRUE(mesh.fixed.empty());
   EXPECT_EQ(mesh.extras.read_notes,
-            (std::vector<std::string>{"1 zone is listed in two groups of one slot: each is taken to be in the last, "
+            (std::vector<std::string>{"lines 9, 10: a '* TETSMOOTH PINNED' comment whose words are not all gridpoint "
+                                      "ids pins nothing",
+                                      "1 zone is listed in two groups of one slot: each is taken to be in the last, "
                                       "as FLAC3D does"}));
+  // A name with a tab (in quotes) is one line of $PhysicalNames.
+  EXPECT_EQ(raw(read_text(grid + "ZGROUP 'C\td'\n 2\n"), "$PhysicalNames").find("\t"), std::string::npos);
 
   // A new grid gives each group its zones once; names that are no groups of
-  // different slots are one group, and a tag whose groups another tag has
-  // got is set apart.
+  // different slots are one group, a tag whose groups another tag has got
+  // (in any case, order or spelling of the default slot) is set apart, and
+  // the one tag without a name gets no group.
   TetMesh fresh = testing::cube_with_centre();
-  fresh.extras.tet_tags = {1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 5, 5};
+  fresh.extras.tet_tags = {1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6};
   fresh.extras.raw_sections.emplace_back("$PhysicalNames",
-                                         "4\n3 1 \"Soil + stage 1=dug\"\n3 2 \"Soil\"\n3 3 \"a + b\"\n3 4 \"soil\"\n");
+                                         "5\n3 1 \"Soil + stage 1=dug\"\n3 2 \"Soil\"\n3 3 \"a + b\"\n"
+                                         "3 4 \"stage 1=dug + 1=soil\"\n3 5 \"'E=200'\"\n");
   const std::string text = write_text(fresh);
-  EXPECT_NE(text.find("ZGROUP \"Soil\" SLOT Default\n 1 2 3 4\nZGROUP \"dug\" SLOT \"stage 1\"\n 1 2\n"
-                      "ZGROUP \"a + b\" SLOT Default\n 5 6\nZGROUP \"soil (tag 4)\" SLOT Default\n 7 8\n"
-                      "ZGROUP \"region 5\" SLOT Default\n 9 10 11 12\n"),
-            std::string::npos)
+  EXPECT_NE(
+      text.find("ZGROUP \"Soil\" SLOT Default\n 1 2 3 4\nZGROUP \"dug\" SLOT \"stage 1\"\n 1 2\n"
+                "ZGROUP \"a + b\" SLOT Default\n 5 6\nZGROUP \"stage 1=dug + 1=soil (tag 4)\" SLOT Default\n 7 8\n"
+                "ZGROUP \"E=200\" SLOT Default\n 9 10\n* FACES\n"),
+      std::string::npos)
       << text;
-  EXPECT_TRUE(testing::same_partition(read_text(text).extras.tet_tags, fresh.extras.tet_tags));
+  const TetMesh again = read_text(text);
+  EXPECT_TRUE(testing::same_partition(again.extras.tet_tags, fresh.extras.tet_tags));
+  // Names that hold "=", " + " or quotes are quoted, and read back so.
+  EXPECT_EQ(raw(again, "$PhysicalNames"),
+            "5\n3 1 \"Soil + stage 1=dug\"\n3 2 \"Soil\"\n3 3 \"'a + b'\"\n"
+            "3 4 \"'stage 1=dug + 1=soil (tag 4)'\"\n3 5 \"'E=200'\"\n");
+  // A new grid from those names has the same groups again.
+  TetMesh twice = again;
+  auto& sections = twice.extras.raw_sections;
+  sections.erase(std::remove_if(sections.begin(), sections.end(),
+                                [](const auto& section) { return section.first.rfind("flac3d:", 0) == 0; }),
+                 sections.end());
+  const std::string text_again = write_text(twice);
+  EXPECT_EQ(text_again.substr(text_again.find("* ZONE GROUPS")), text.substr(text.find("* ZONE GROUPS")));
 }
 
 TEST(Flac3dIo, ZonesOfOtherFormatsAreWrittenRightHanded) {
@@ -291,8 +315,9 @@ TEST(Flac3dIo, IdsPastTheLargestAreRenumberedWithANote) {
     mesh.extras.node_tags.push_back(3000000000LL + static_cast<long long>(i));
   const std::vector<std::string> notes = output_losses(mesh, "out.f3grid");
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0], "the node numbers of the file cannot all be kept (each must be positive and distinct, at most "
-                      "2,147,483,647): flac3d numbers them 1, 2, ... instead");
+  EXPECT_EQ(notes[0],
+            "the node numbers of the file cannot all be kept (each must be positive and distinct, at most "
+            "2,147,483,647): flac3d numbers them 1, 2, ... instead");
   const std::string text = write_text(mesh);
   EXPECT_NE(text.find("\nG 1 "), std::string::npos) << text;
   EXPECT_EQ(text.find("3000000000"), std::string::npos) << text;
@@ -485,17 +510,24 @@ TEST(Flac3dIo, FormatByNameAndWhatOtherFormatsLose) {
   // A new Abaqus deck names its element sets by tag.
   const std::vector<std::string> to_inp = output_losses(mesh, "out.inp");
   EXPECT_NE(std::find(to_inp.begin(), to_inp.end(),
-                      "the names of the regions (the grid's zone and face groups) will not be written: abaqus has no "
-                      "place for them"),
+                      "the names of the regions (the grid's zone and face groups) will not be written: abaqus names "
+                      "the element sets of a new deck by region tag"),
             to_inp.end());
 
+  // Lines, and shapes of other sizes than FLAC3D's (a 20-node brick), are
+  // not written; their nodes are listed as pins.
   TetMesh lines = testing::cube_grid(1);
   lines.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1}, {}, {}, {}});
+  std::vector<std::int32_t> twenty(20, 2);
+  twenty[19] = 3;
+  lines.extras.blocks.push_back(PassThroughBlock{"hexahedron", 20, twenty, {}, {}, {}});
   const std::vector<std::string> to_flac3d = output_losses(lines, "out.f3grid");
   ASSERT_EQ(to_flac3d.size(), 1u);
-  EXPECT_EQ(to_flac3d[0],
-            "1 line will not be written: flac3d holds tets, bricks, wedges, pyramids, triangles and "
-            "quads (their nodes are listed as pins)");
+  EXPECT_EQ(to_flac3d[0], "1 line, 1 hexahedron will not be written: flac3d holds tets, bricks, wedges, pyramids, "
+                          "triangles and quads (their nodes are listed as pins)");
+  const std::string text = write_text(lines);
+  EXPECT_EQ(text.find("Z B8"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n* TETSMOOTH PINNED 1 2 3 4\n"), std::string::npos) << text;
 }
 
 }  // namespace

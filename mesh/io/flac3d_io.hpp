@@ -32,7 +32,8 @@
 //    lists it, with a note), and "Default", "1" and no slot at all name the
 //    default slot.
 //  * Comment lines "* TETSMOOTH PINNED id ...", which the writer leaves for
-//    pins nothing else keeps.
+//    pins nothing else keeps (one with other words than ids pins nothing,
+//    with a note).
 //
 // Reading: zones and faces other than tets pin their gridpoints, as do the
 // pin comments. A zone's region tag is the set of groups that hold it, in
@@ -48,7 +49,7 @@
 // text (FLAC3D output writes them back) and named in a note: gridpoints it
 // names are not pinned.
 // Refused with the file's line (InputError; a binary grid's byte offset):
-// ids that are not positive or are defined twice, gridpoints, zones or
+// ids that are not positive, out of range or defined twice, gridpoints, zones or
 // faces that nothing defines, a zone or face with the wrong number of
 // gridpoints, values that are no numbers, a binary file without the
 // binary grid's mark, UTF-16 text, lines that end in a carriage return
@@ -69,7 +70,8 @@
 // ZGROUPs of the region tags (each tag's name in $PhysicalNames, else
 // "region <tag>", read as groups in their slots by flac3d_group_names.hpp;
 // a tag whose groups another tag has got is a group of its own, so that
-// the regions stay apart), then T3 and Q4 faces for triangle and quad
+// the regions stay apart, and where one tag alone has no name it is in no
+// group), then T3 and Q4 faces for triangle and quad
 // blocks with the FGROUPs of their tags, then "* TETSMOOTH PINNED" lines for
 // the pinned nodes that no written zone or face pins (including the nodes of
 // blocks FLAC3D has no place for: lines, points, second-order faces, which

@@ -51,6 +51,7 @@ class TextGridParser {
   // Whether the lines of ids that follow belong to a record not read.
   bool skipping_ = false;
   std::vector<std::pair<std::string, std::size_t>> unread_;  // each kind not read, and its first line
+  std::vector<std::size_t> unread_pins_;                     // lines of pin comments that are no list of ids
 };
 
 // Why a value that does not parse is not one: too many digits, or no
@@ -159,12 +160,24 @@ GridRecords TextGridParser::parse() {
     ++line_no_;
     std::vector<std::string_view> ids;
     // Comments leave a group's ids open: they may come among them.
-    if (flac3d::pinned_comment(line, ids)) {
-      for (std::string_view v : ids) r_.pins.emplace_back(id(v, "pinned gridpoint"), line_no_);
-    } else if (!flac3d::is_comment(line)) {
-      record(line);
+    switch (flac3d::pin_comment(line, ids)) {
+      case flac3d::PinComment::Pins:
+        for (std::string_view v : ids) r_.pins.emplace_back(id(v, "pinned gridpoint"), line_no_);
+        break;
+      case flac3d::PinComment::Unread:
+        unread_pins_.push_back(line_no_);
+        break;
+      case flac3d::PinComment::None:
+        if (!flac3d::is_comment(line)) record(line);
+        break;
     }
     start = end + 1;
+  }
+  if (!unread_pins_.empty()) {
+    std::vector<std::string> lines;
+    for (std::size_t line : unread_pins_) lines.push_back(std::to_string(line));
+    r_.notes.push_back(std::string(unread_pins_.size() == 1 ? "line " : "lines ") + joined(lines) +
+                       ": a '* TETSMOOTH PINNED' comment whose words are not all gridpoint ids pins nothing");
   }
   if (!unread_.empty()) {
     std::vector<std::string> kinds;
@@ -187,9 +200,9 @@ TetMesh read_flac3d(std::istream& in, const std::string& source) {
   std::string file = read_all(in, source);
   if (file.compare(0, 2, "\xFF\xFE") == 0 || file.compare(0, 2, "\xFE\xFF") == 0)
     throw InputError(source, "UTF-16 text (as Windows PowerShell saves it): save the grid as ASCII or UTF-8");
-  if (file.find('\n') == std::string::npos && file.find('\r') != std::string::npos)
-    throw InputError(source, "lines that end in a carriage return alone: save the grid with LF or CRLF line ends");
   const bool binary = is_binary(file);
+  if (!binary && file.find('\n') == std::string::npos && file.find('\r') != std::string::npos)
+    throw InputError(source, "lines that end in a carriage return alone: save the grid with LF or CRLF line ends");
   TetMesh mesh =
       flac3d::resolve_grid(binary ? flac3d::parse_binary_grid(file, source) : TextGridParser(file, source).parse());
   mesh.extras.raw_sections.emplace_back(binary ? "flac3d:binary" : "flac3d:text", std::move(file));

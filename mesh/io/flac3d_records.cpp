@@ -1,5 +1,7 @@
 #include "mesh/io/flac3d_records.hpp"
 
+#include <algorithm>
+
 #include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::flac3d {
@@ -38,17 +40,17 @@ bool is_gridpoint(const std::vector<std::string_view>& values) {
   return !values.empty() && (values[0] == "G" || values[0] == "g");
 }
 
-bool pinned_comment(std::string_view line, std::vector<std::string_view>& ids) {
-  const std::size_t star = line.find('*');
-  if (!is_comment(line)) return false;
-  // A comment that only talks of pins ("* tetsmooth pinned these") is none.
+PinComment pin_comment(std::string_view line, std::vector<std::string_view>& ids) {
+  if (!is_comment(line)) return PinComment::None;
   std::vector<std::string_view> words;
-  long long first = 0;
-  if (!split_values(line.substr(star + 1), words) || words.size() < 3 || upper_case(words[0]) != "TETSMOOTH" ||
-      upper_case(words[1]) != "PINNED" || !parse_integer(words[2], first))
-    return false;
+  const bool split = split_values(line.substr(line.find('*') + 1), words);
+  if (words.size() < 2 || upper_case(words[0]) != "TETSMOOTH" || upper_case(words[1]) != "PINNED")
+    return PinComment::None;
   ids.assign(words.begin() + 2, words.end());
-  return true;
+  long long id = 0;
+  const bool all_ids = split && !ids.empty() &&
+                       std::all_of(ids.begin(), ids.end(), [&](std::string_view w) { return parse_integer(w, id); });
+  return all_ids ? PinComment::Pins : PinComment::Unread;
 }
 
 }  // namespace tetsmooth::flac3d

@@ -22,10 +22,12 @@ bool split_values(std::string_view line, std::vector<std::string_view>& values);
 // the writer writes node k back in its place.
 bool is_gridpoint(const std::vector<std::string_view>& values);
 
-// The text of a comment line that lists pins ("* TETSMOOTH PINNED 4 7 9",
-// the words in any case, a whole number after them): true and the ids (as
-// text) for such a line, else false.
-bool pinned_comment(std::string_view line, std::vector<std::string_view>& ids);
+// What a line is to the pins: a comment "* TETSMOOTH PINNED" (the words in
+// any case) followed by gridpoint ids alone (Pins: the ids, as text, in
+// `ids`), such a comment followed by anything else (Unread: a note says it
+// pins nothing), or neither (None).
+enum class PinComment { None, Pins, Unread };
+PinComment pin_comment(std::string_view line, std::vector<std::string_view>& ids);
 
 // "* TETSMOOTH PINNED", the start of a pin comment line.
 inline constexpr const char* kPinnedComment = "* TETSMOOTH PINNED";

@@ -64,7 +64,7 @@ std::vector<int> Resolver::tags_of(char record, const Elements& elements, const 
   std::vector<std::vector<std::int32_t>> group_in;            // per slot: each element's group, or -1
   std::vector<Membership> groups;                             // as first spelled
   std::unordered_map<std::string, std::size_t> group_of_key;  // slot key, '\n', name in upper case
-  std::vector<std::uint8_t> relisted(count, 0);  // elements listed in a second group of a slot
+  std::vector<std::uint8_t> relisted(count, 0);               // elements listed in a second group of a slot
   for (const Group& g : r_.groups) {
     if (g.record != record) continue;
     const std::string slot_key = is_default_slot(g.slot) ? "DEFAULT" : upper_case(g.slot);

@@ -1,6 +1,7 @@
 // FLAC3D grid writing (flac3d_io.hpp): a grid read with the mesh comes back
 // as it was read, the G lines of moved gridpoints rewritten; any other mesh
 // gets a new grid of its zones, faces, groups and pins.
+#include <algorithm>
 #include <array>
 #include <map>
 #include <ostream>
@@ -137,6 +138,22 @@ void write_ids(std::ostream& out, const char* first_line, const char* next_lines
   if (!ids.empty()) out << '\n';
 }
 
+// A group as FLAC3D tells groups apart: by slot (the default one however
+// spelled) and name, in any case.
+std::string group_key(const flac3d::Membership& m) {
+  return (flac3d::is_default_slot(m.slot) ? std::string("DEFAULT") : upper_case(m.slot)) + '\n' + upper_case(m.group);
+}
+
+// A set of groups, whatever their order.
+std::string set_key(const std::vector<flac3d::Membership>& groups) {
+  std::vector<std::string> keys;
+  for (const flac3d::Membership& m : groups) keys.push_back(group_key(m));
+  std::sort(keys.begin(), keys.end());
+  std::string key;
+  for (const std::string& k : keys) key += k + '\n';
+  return key;
+}
+
 // The elements of each region tag, and the tags in the order met.
 class Groups {
  public:
@@ -148,26 +165,32 @@ class Groups {
   // The GROUP lines ("ZGROUP", say) of the tags: each tag's name (from
   // `names`, else "region <tag>") read as groups in their slots
   // (flac3d_group_names.hpp), each group once with every element of the
-  // tags it holds. A tag whose groups another tag has already got a group
-  // of its own, so that their regions stay apart.
+  // tags it holds. Every tag keeps a set of groups of its own, so that the
+  // regions read back apart: a tag whose groups another tag has got gets a
+  // group of its own ("<name> (tag <tag>)"), and where one tag alone has no
+  // name (the zones a grid put in no group) it gets no group at all.
   void write(std::ostream& out, const char* keyword, const std::map<int, std::string>& names) const {
     std::vector<flac3d::Membership> groups;    // in the order met
-    std::map<std::string, std::size_t> index;  // slot and group in upper case -> in groups
+    std::map<std::string, std::size_t> index;  // slot and group, as group_key gives them -> in groups
     std::vector<std::vector<long long>> members;
-    std::set<std::string> held;  // the groups of each tag so far, as one key
+    std::set<std::string> held;  // the set of groups of each tag so far, as set_key gives it
+    std::size_t unnamed = 0;
+    for (int tag : order_) unnamed += names.count(tag) == 0;
     for (int tag : order_) {
       const auto named = names.find(tag);
-      std::vector<flac3d::Membership> of_tag =
-          flac3d::memberships_of(named != names.end() ? named->second : "region " + std::to_string(tag));
-      std::string key;
-      for (const flac3d::Membership& m : of_tag) key += upper_case(m.slot) + '=' + upper_case(m.group) + '\n';
-      if (!held.insert(key).second)
-        of_tag = {flac3d::Membership{"Default", flac3d::region_name(of_tag) + " (tag " + std::to_string(tag) + ")"}};
+      if (named == names.end() && unnamed == 1) {
+        held.insert("");
+        continue;
+      }
+      const std::string name = named != names.end() ? named->second : "region " + std::to_string(tag);
+      std::vector<flac3d::Membership> of_tag = flac3d::memberships_of(name);
+      for (int n = 0; !held.insert(set_key(of_tag)).second; ++n)
+        of_tag = {flac3d::Membership{
+            "Default", name + " (tag " + std::to_string(tag) + (n == 0 ? "" : ", " + std::to_string(n)) + ")"}};
       for (const flac3d::Membership& m : of_tag) {
-        const std::string slot = flac3d::is_default_slot(m.slot) ? "Default" : m.slot;
-        const auto [it, added] = index.try_emplace(upper_case(slot) + '\n' + upper_case(m.group), groups.size());
+        const auto [it, added] = index.try_emplace(group_key(m), groups.size());
         if (added) {
-          groups.push_back(flac3d::Membership{slot, m.group});
+          groups.push_back(flac3d::Membership{flac3d::is_default_slot(m.slot) ? "Default" : m.slot, m.group});
           members.emplace_back();
         }
         const std::vector<long long>& ids = members_.at(tag);

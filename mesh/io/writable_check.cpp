@@ -321,7 +321,8 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
       raw_section(e, "$PhysicalNames") != nullptr)
     notes.push_back(std::string("the names of the regions (the ") +
                     (abaqus ? "deck's element sets" : "grid's zone and face groups") + ") will not be written: " +
-                    name + " has no place for them");
+                    name + (f == MeshFormat::Abaqus ? " names the element sets of a new deck by region tag"
+                                                    : " has no place for them"));
   if (!msh && !abaqus && !flac3d) {
     const bool names = !keeps_names && raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);

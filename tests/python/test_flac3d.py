@@ -705,20 +705,21 @@ class NewGrids(Flac3dCase):
         for kind in FLIPS:
             self.assertEqual(list(map(sorted, mesh.cells_dict[kind].tolist())),
                              list(map(sorted, self.cells[kind].tolist())))
-        # Groups named as the physical names, "region <tag>" without one.
-        self.assertEqual(sorted(mesh.cell_sets),
-                         ["face:region 6:Default", "face:top:Default", "zone:clay:Default", "zone:region 3:Default",
-                          "zone:sand:Default"])
+        # Groups named as the physical names; the one volume and the one
+        # surface without a name are in no group, which tells them apart.
+        self.assertEqual(sorted(mesh.cell_sets), ["face:top:Default", "zone:clay:Default", "zone:sand:Default"])
         members = {key: np.concatenate(blocks) for key, blocks in mesh.cell_sets.items()}
         offset = {c.type: sum(len(b.data) for b in mesh.cells[:k]) for k, c in enumerate(mesh.cells)}
         np.testing.assert_array_equal(members["zone:sand:Default"] - offset["tetra"], np.flatnonzero(self.tet_tags == 1))
         np.testing.assert_array_equal(members["zone:clay:Default"] - offset["tetra"], np.flatnonzero(self.tet_tags == 2))
         np.testing.assert_array_equal(members["face:top:Default"] - offset["triangle"],
                                       np.flatnonzero(self.triangle_tags == 5))
-        self.assertEqual(len(members["zone:region 3:Default"]), sum(len(self.cells[k]) for k in FLIPS))
+        grouped = len(members["zone:sand:Default"]) + len(members["zone:clay:Default"])
+        self.assertEqual(sum(len(c.data) for c in mesh.cells if c.type != "triangle") - grouped,
+                         sum(len(self.cells[k]) for k in FLIPS))
         # Faces are T3 records, and their groups FGROUPs.
         self.assertEqual({f[0] for f in self.grid.faces}, {"T3"})
-        self.assertEqual(sorted(g[1] for g in self.grid.groups if g[0] == "F"), ["region 6", "top"])
+        self.assertEqual(sorted(g[1] for g in self.grid.groups if g[0] == "F"), ["top"])
         # Every node that the MSH file pins is on a zone or face written,
         # which pins it again: no pin comments.
         self.assertEqual(self.grid.pins, [])

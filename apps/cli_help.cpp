@@ -38,6 +38,9 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
   .f3grid     flac3d        FLAC3D grid, text or binary (.flac3d too; a grid read is
                             written back whole, with the new coordinates; zone groups
                             are regions)
+  .exo/.e     exodus        Exodus II (.ex2, .g and .gen too; a file read is written
+                            back whole, with the new coordinates; element blocks are
+                            regions, node and side sets pinned)
   .tsm        tsm           tetsmooth binary cache
 )";
 

@@ -12,18 +12,28 @@ namespace tetsmooth {
 // A block of non-tet elements passed through unchanged (triangles, lines,
 // points, ...). Their nodes are fixed by the reader (TetMesh::fixed).
 struct PassThroughBlock {
-  std::string kind;            // "triangle", "line", "vertex", "quad", ...
+  std::string kind;  // "triangle", "line", "vertex", "quad", ...
   int nodes_per_element = 0;
   std::vector<std::int32_t> connectivity;  // 0-based node indices
-  std::vector<int> tags;       // per element: physical/region tag, or empty
-  std::vector<int> entity_tags;  // per element: geometric entity tag (Gmsh), or empty
-  std::vector<long long> element_tags;  // per element: the file's element id (Gmsh), or empty
+  std::vector<int> tags;                   // per element: physical/region tag, or empty
+  std::vector<int> entity_tags;            // per element: geometric entity tag (Gmsh), or empty
+  std::vector<long long> element_tags;     // per element: the file's element id (Gmsh), or empty
 };
 
+// The dimension of a pass-through block's elements (0 for points, 1 for
+// lines, 2 for triangles and quads, 3 for solids), that of the physical
+// names ($PhysicalNames) of their region tags.
+inline int kind_dimension(std::string_view kind) {
+  if (kind == "vertex") return 0;
+  if (kind.substr(0, 4) == "line") return 1;
+  if (kind.substr(0, 8) == "triangle" || kind.substr(0, 4) == "quad") return 2;
+  return 3;
+}
+
 struct FileExtras {
-  std::vector<long long> node_tags;   // original node ids (sparse Gmsh tags), or empty
-  std::vector<int> tet_tags;          // per tet: physical/region attribute, or empty
-  std::vector<int> tet_entity_tags;   // per tet: geometric entity tag (Gmsh), or empty
+  std::vector<long long> node_tags;  // original node ids (sparse Gmsh tags), or empty
+  std::vector<int> tet_tags;         // per tet: physical/region attribute, or empty
+  std::vector<int> tet_entity_tags;  // per tet: geometric entity tag (Gmsh), or empty
   // Per tet: the file's element id (Gmsh element tag), or empty. Written back
   // when every element has one and they are positive and distinct, so that
   // ids a simulation deck refers to survive a round trip.

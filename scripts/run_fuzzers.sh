@@ -6,7 +6,7 @@
 #
 #   scripts/run_fuzzers.sh [target ...]      targets: gmsh medit vtu vtk
 #                                            tetgen_node tetgen_ele tsm abaqus
-#                                            nastran flac3d (default: all)
+#                                            nastran flac3d exodus (default: all)
 # Environment:
 #   FUZZ_SECONDS    time per target (default 20)
 #   FUZZ_BUILD_DIR  build folder (default build-fuzz); the growing corpus is
@@ -19,7 +19,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-20}
 jobs=${FUZZ_JOBS:-2}
-all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran flac3d)
+all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran flac3d exodus)
 targets=("$@")
 [[ ${#targets[@]} -eq 0 ]] && targets=("${all_targets[@]}")
 
@@ -99,6 +99,30 @@ h = 0xcbf29ce484222325
 for b in body:
     h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
 open(sys.argv[1], "wb").write(body + struct.pack("<Q", h))
+PY
+# fuzz_exodus reads a first byte 0 and the rest as the description of a file
+# (exodus_spec.hpp), where any bytes will do; a first byte 1 and the bytes of
+# a classic netCDF file: one tet with a side set, 64-bit offset format.
+mkdir -p "$seeds/exodus"
+head -c 256 /dev/zero | tr '\0' '\2' >"$seeds/exodus/description"
+/usr/bin/python3 - "$seeds/exodus/classic" <<'PY'
+import os, sys, tempfile
+import netCDF4
+path = os.path.join(tempfile.mkdtemp(), "tet.exo")
+with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as f:
+    for name, n in [("len_name", 33), ("num_dim", 3), ("num_nodes", 4), ("num_elem", 1), ("num_el_blk", 1),
+                    ("num_el_in_blk1", 1), ("num_nod_per_el1", 4), ("num_side_sets", 1), ("num_side_ss1", 1)]:
+        f.createDimension(name, n)
+    for c, values in zip("xyz", ([0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1])):
+        f.createVariable("coord" + c, "f8", ("num_nodes",))[:] = values
+    f.createVariable("eb_prop1", "i4", ("num_el_blk",))[:] = [1]
+    connect = f.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))
+    connect.elem_type = "TETRA"
+    connect[:] = [[1, 2, 3, 4]]
+    f.createVariable("elem_ss1", "i4", ("num_side_ss1",))[:] = [1]
+    f.createVariable("side_ss1", "i4", ("num_side_ss1",))[:] = [4]
+with open(path, "rb") as f, open(sys.argv[1], "wb") as out:
+    out.write(b"\x01" + f.read())
 PY
 
 failed=()

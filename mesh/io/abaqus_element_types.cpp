@@ -90,12 +90,7 @@ std::optional<ElementType> element_type(const std::string& name) {
   const std::string key = upper_case(name);
   for (const Family& f : kFamilies)
     if (in_family(key, f.base, f.solid_prefix)) {
-      const std::string_view kind = f.kind;
-      const int dimension = kind == "vertex"                                            ? 0
-                            : kind.substr(0, 4) == "line"                               ? 1
-                            : kind.substr(0, 8) == "triangle" || kind == "quad" ? 2
-                                                                                        : 3;
-      return ElementType{f.kind, f.nodes, dimension};
+      return ElementType{f.kind, f.nodes, kind_dimension(f.kind)};
     }
   return std::nullopt;
 }

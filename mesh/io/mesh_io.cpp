@@ -7,6 +7,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/exodus_io.hpp"
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/gmsh_io.hpp"
 #include "mesh/io/medit_io.hpp"
@@ -41,6 +42,8 @@ constexpr FormatName kNames[] = {
     {"bdf", MeshFormat::Nastran},
     {"flac3d", MeshFormat::Flac3d},
     {"f3grid", MeshFormat::Flac3d},
+    {"exodus", MeshFormat::Exodus},
+    {"exo", MeshFormat::Exodus},
 };
 
 struct Extension {
@@ -52,6 +55,8 @@ constexpr Extension kExtensions[] = {
     {".msh", MeshFormat::Msh41},   {".mesh", MeshFormat::Medit}, {".tsm", MeshFormat::Cache},
     {".inp", MeshFormat::Abaqus},  {".bdf", MeshFormat::Nastran}, {".nas", MeshFormat::Nastran},
     {".f3grid", MeshFormat::Flac3d}, {".flac3d", MeshFormat::Flac3d},
+    {".exo", MeshFormat::Exodus},  {".e", MeshFormat::Exodus}, {".ex2", MeshFormat::Exodus},
+    {".g", MeshFormat::Exodus},    {".gen", MeshFormat::Exodus},
 };
 
 std::string lower(std::string s) {
@@ -78,7 +83,7 @@ MeshFormat parse_format(const std::string& name) {
   for (const FormatName& f : kNames)
     if (key == f.name) return f.format;
   throw UsageError("unknown mesh format '" + name +
-                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran or flac3d)");
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran, flac3d or exodus)");
 }
 
 const char* format_name(MeshFormat f) {
@@ -93,7 +98,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d, .exo/.e/.g or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 
@@ -125,6 +130,8 @@ TetMesh read_mesh(const std::string& path, MeshFormat format) {
       return read_nastran_file(path);
     case MeshFormat::Flac3d:
       return read_flac3d_file(path);
+    case MeshFormat::Exodus:
+      return read_exodus_file(path);
     case MeshFormat::Auto:
       break;
   }
@@ -155,6 +162,8 @@ void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format,
       return write_nastran_file(mesh, path);
     case MeshFormat::Flac3d:
       return write_flac3d_file(mesh, path);
+    case MeshFormat::Exodus:
+      return write_exodus_file(mesh, path);
     case MeshFormat::Auto:
       break;
   }

@@ -10,9 +10,11 @@
 #include "mesh/second_order.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/exodus_io.hpp"
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/nastran_io.hpp"
+#include "mesh/io/number_text.hpp"
 #include "mesh/io/atomic_file.hpp"
 #include "mesh/io/gmsh_detail.hpp"
 #include "mesh/io/gmsh_io.hpp"
@@ -81,13 +83,11 @@ void write_probe(const TetMesh& probe, MeshFormat format, std::ostream& out) {
       return write_nastran(probe, out);
     case MeshFormat::Flac3d:
       return write_flac3d(probe, out);
+    case MeshFormat::Exodus:
+      return check_exodus_writable(probe);
     case MeshFormat::Auto:
       break;
   }
-}
-
-std::string count_of(std::size_t n, const std::string& what) {
-  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
 }
 
 bool is_msh(MeshFormat format) {
@@ -125,14 +125,15 @@ std::vector<std::uint8_t> kept_interface_nodes(const TetMesh& mesh, MeshFormat f
 
 // Pinned nodes that the format loses and that a later run would move: VTU,
 // VTK, Medit (RequiredVertices), Abaqus (the deck, or a node set) and
-// Nastran and FLAC3D (the deck or grid, or a comment it reads back) write
-// every pin, MSH only
+// Nastran and FLAC3D (the deck or grid, or a comment it reads back) and
+// Exodus (the file, or a node set) write every pin, MSH only
 // element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
 // an interface where the format keeps what tells of it.
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit ||
-      format == MeshFormat::Abaqus || format == MeshFormat::Nastran || format == MeshFormat::Flac3d)
+      format == MeshFormat::Abaqus || format == MeshFormat::Nastran || format == MeshFormat::Flac3d ||
+      format == MeshFormat::Exodus)
     return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
   if (format != MeshFormat::TetGen && format != MeshFormat::Cache) mark_element_nodes(mesh.extras.blocks, kept);
@@ -262,16 +263,23 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   const bool node_ids = !numbered_by_position(e.node_tags), element_ids = !numbered_by_position(e.tet_element_tags);
   const bool abaqus = raw_section(e, "abaqus:deck") != nullptr, nastran = raw_section(e, "nastran:deck") != nullptr;
   const bool flac3d = raw_section(e, "flac3d:deck") != nullptr;
-  const bool keeps_numbers = msh || f == MeshFormat::Abaqus || f == MeshFormat::Nastran || f == MeshFormat::Flac3d;
+  const bool exodus = raw_section(e, "exodus:deck") != nullptr;
+  const bool keeps_numbers = msh || f == MeshFormat::Abaqus || f == MeshFormat::Nastran || f == MeshFormat::Flac3d ||
+                             f == MeshFormat::Exodus;
   if (!keeps_numbers && (node_ids || element_ids))
-    notes.push_back(std::string(abaqus ? "the Abaqus " : nastran ? "the Nastran " : flac3d ? "the FLAC3D " : "the Gmsh ") +
+    notes.push_back(std::string(abaqus    ? "the Abaqus "
+                                : nastran ? "the Nastran "
+                                : flac3d  ? "the FLAC3D "
+                                : exodus  ? "the Exodus "
+                                          : "the Gmsh ") +
                     (flac3d ? (node_ids && element_ids ? "gridpoint and zone" : node_ids ? "gridpoint" : "zone")
                             : (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element")) +
-                    (abaqus ? " numbers" : nastran || flac3d ? " ids" : " tags") + " will not be written: " + name +
+                    (abaqus ? " numbers" : nastran || flac3d || exodus ? " ids" : " tags") + " will not be written: " + name +
                     " numbers them by position");
   const std::string lost = f == MeshFormat::Abaqus ? abaqus_numbers_lost(mesh)
                            : f == MeshFormat::Nastran ? nastran_numbers_lost(mesh)
                            : f == MeshFormat::Flac3d  ? flac3d_numbers_lost(mesh)
+                           : f == MeshFormat::Exodus  ? exodus_numbers_lost(mesh)
                                                       : "";
   // MSH numbers every element in one sequence: ids that are distinct only
   // within their kind (FLAC3D's zones and faces) cannot all be kept.
@@ -283,7 +291,7 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (!lost.empty())
     notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct" +
                     (f == MeshFormat::Nastran ? ", at most 99,999,999"
-                     : f == MeshFormat::Flac3d ? ", at most 2,147,483,647"
+                     : f == MeshFormat::Flac3d || f == MeshFormat::Exodus ? ", at most 2,147,483,647"
                                                : "") +
                     "): " + name + " numbers them 1, 2, ... instead");
   if (const std::string* files = raw_section(e, "abaqus:includes"); files != nullptr && f == MeshFormat::Abaqus)
@@ -304,6 +312,12 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back(*count + (one ? " B7 zone" : " B7 zones") + " will not be written: " + name + " has no place for " +
                     (one ? "it (its nodes were pinned)" : "them (their nodes were pinned)"));
   }
+  if (const std::string* rest = raw_section(e, "exodus:rest"); rest != nullptr && f != MeshFormat::Exodus)
+    notes.push_back("the rest of the Exodus file (" + *rest + ") will not be written: " + name +
+                    " holds the mesh alone");
+  if (const std::string* types = raw_section(e, "exodus:uncarried"); types != nullptr && f != MeshFormat::Exodus)
+    notes.push_back("the elements of " + *types + " will not be written: " + name +
+                    " has no place for them (their nodes were pinned)");
   if (f == MeshFormat::Flac3d && !flac3d) {
     std::string kinds;
     for (const PassThroughBlock& b : e.blocks)
@@ -314,16 +328,20 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                       " holds tets, bricks, wedges, pyramids, triangles and quads (their nodes are listed as pins)");
   }
   // MSH writes the names of the regions as physical names, FLAC3D as its
-  // groups' names.
-  const bool keeps_names = msh || f == MeshFormat::Flac3d;
+  // groups' names, Exodus as its blocks' names. (Exodus writes every kind
+  // of element the readers give: none is dropped.)
+  const bool keeps_names = msh || f == MeshFormat::Flac3d || f == MeshFormat::Exodus;
   // An Abaqus deck kept keeps its set names; a new one names its sets by tag.
-  if ((abaqus || flac3d) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&
+  if ((abaqus || flac3d || exodus) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&
       raw_section(e, "$PhysicalNames") != nullptr)
     notes.push_back(std::string("the names of the regions (the ") +
-                    (abaqus ? "deck's element sets" : "grid's zone and face groups") + ") will not be written: " +
+                    (abaqus   ? "deck's element sets"
+                     : flac3d ? "grid's zone and face groups"
+                              : "file's element block names") +
+                    ") will not be written: " +
                     name + (f == MeshFormat::Abaqus ? " names the element sets of a new deck by region tag"
                                                     : " has no place for them"));
-  if (!msh && !abaqus && !flac3d) {
+  if (!msh && !abaqus && !flac3d && !exodus) {
     const bool names = !keeps_names && raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);
     if (names || entities)

@@ -361,6 +361,11 @@ TEST(ExodusFiles, ErrorsNameTheVariable) {
   const std::string not_netcdf =
       testing::input_error_message([] { read_exodus("$MeshFormat\n4.1 0 8\n", "t.exo"); }, "an MSH file");
   EXPECT_NE(not_netcdf.find("t.exo: not an Exodus II file"), std::string::npos) << not_netcdf;
+  // A netCDF-4 file one byte off a good one, which crashes HDF5 1.10 as
+  // netCDF opens it (in its global heap reader): refused, not a crash.
+  const std::string corrupt = testing::input_error_message(
+      [] { read_exodus_file(testing::data_path("exodus_hdf5_corrupt.exo")); }, "a corrupt HDF5 file");
+  EXPECT_NE(corrupt.find("exodus_hdf5_corrupt.exo: "), std::string::npos) << corrupt;
   std::string cut = build_exodus(grid_spec(2));
   cut.resize(cut.size() / 2);
   const std::string cut_message = testing::input_error_message([&] { read_exodus(cut, "t.exo"); }, "a file cut short");

@@ -108,6 +108,11 @@ TEST(ClassicHeader, CorruptionIsRefusedAtItsByte) {
   p = {};
   p.begin = 4;  // inside the header
   expect(p, "the data of variable 'v' lie outside the file");
+  std::string streaming = file({});
+  streaming.replace(4, 4, "\xFF\xFF\xFF\xFF");  // netCDF 4.9 would take 2^32 - 1 records
+  EXPECT_NE(testing::input_error_message([&] { netcdf::check_classic_header(streaming, "t.exo"); }, "streaming")
+                .find("t.exo: byte 4: the record count is that of a file still being written"),
+            std::string::npos);
   const std::string cut = file({}).substr(0, 14);
   EXPECT_NE(testing::input_error_message([&] { netcdf::check_classic_header(cut, "t.exo"); }, "14 bytes")
                 .find("t.exo: byte 12: the header ends early"),

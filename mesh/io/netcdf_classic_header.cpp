@@ -57,7 +57,10 @@ class HeaderCheck {
       fail(0, "not a classic netCDF file");
     at_ = 4;
     numrecs_ = count();
-    if (numrecs_ == (version_ == 5 ? kStreaming64 : kStreaming32)) numrecs_ = 0;
+    // netCDF 4.9 takes a streaming count for 2^32 - 1 records (and pads a
+    // file written back to them).
+    if (numrecs_ == (version_ == 5 ? kStreaming64 : kStreaming32))
+      fail(4, "the record count is that of a file still being written (streaming)");
     dimensions();
     attributes();
     variables();
@@ -197,7 +200,9 @@ class HeaderCheck {
         if (d.record) record_size = d.slab;
     const std::uint64_t size = bytes_.size();
     for (const Data& d : data) {
-      bool past = d.begin < at_ || d.begin > size;
+      // Without records, netCDF places the record variables after the end
+      // of the file.
+      bool past = d.begin < at_ || (d.begin > size && !(d.record && numrecs_ == 0));
       if (!d.record) {
         past = past || d.slab > size - std::min(d.begin, size);
       } else if (numrecs_ > 0) {
@@ -214,7 +219,7 @@ class HeaderCheck {
     // variables' slabs, one after another within a record.
     std::vector<const Data*> order;
     for (const Data& d : data)
-      if (d.slab > 0) order.push_back(&d);
+      if (d.slab > 0 && (!d.record || numrecs_ > 0)) order.push_back(&d);
     std::stable_sort(order.begin(), order.end(), [](const Data* a, const Data* b) {
       return a->record != b->record ? !a->record : a->begin < b->begin;
     });

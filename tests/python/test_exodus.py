@@ -499,6 +499,18 @@ class RichFiles(ExodusCase):
         # A file without results smooths without that warning.
         plain = run("smooth", self.path("plain.exo"), "-o", self.path("plain-again.exo"), "--device", "cpu")
         self.assertNotIn("time step", plain.stderr)
+        # Nor does one whose results are defined before any time step: a
+        # classic file with two record variables and no records, whose
+        # second record variable netCDF places past the end of the file (a
+        # header check once took that for a file cut short).
+        blank = Model(self.model.xyz, [("TETRA", 1, "", self.tets, None)],
+                      nodal={"temp": np.zeros((0, len(self.model.xyz))), "pore": np.zeros((0, len(self.model.xyz)))})
+        for fmt in ("NETCDF3_CLASSIC", "NETCDF3_64BIT_OFFSET", "NETCDF3_64BIT_DATA", "NETCDF4"):
+            with self.subTest(format=fmt):
+                src = write_exodus(self.path(f"blank-{fmt}.exo"), blank, fmt)
+                proc = run("smooth", src, "-o", self.path(f"blank-{fmt}-out.exo"), "--device", "cpu")
+                self.assertNotIn("time step", proc.stderr)
+                self.assertEqual(contents(self.path(f"blank-{fmt}-out.exo"))["dimensions"]["time_step"][0], 0)
 
     def test_the_pins_are_exactly_what_the_file_names(self):
         # VTU output marks the file's pins as tetsmooth:fixed (the boundary

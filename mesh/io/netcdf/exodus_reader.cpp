@@ -64,13 +64,25 @@ class ExodusReader {
            joined(expected) + ")");
   }
 
-  // The length of a list (blocks, node sets, side sets): each entry of one
-  // has an id of 4 bytes or more in the file, so no file holds more than
-  // check_size lets 4-byte values be.
-  std::size_t list_length(const std::string& name) const {
-    const std::size_t n = dimension(name);
-    file_->check_size("dimension '" + name + "'", n, 4);
-    return n;
+  // The numbers N, in order, of the items of a list (blocks, node sets,
+  // side sets) that have a dimension or variable `prefix`N among `names`,
+  // up to the list's length: the others are empty. Going by what the file
+  // has, not by the length it declares, keeps a file of a few bytes that
+  // declares 10^8 blocks from costing 10^8 lookups.
+  std::vector<std::size_t> items(const std::vector<std::string>& names, const std::string& prefix,
+                                 const std::string& length) const {
+    const std::size_t declared = dimension(length);
+    std::vector<std::size_t> numbers;
+    for (const std::string& name : names) {
+      if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+          name.find_first_not_of("0123456789", prefix.size()) != std::string::npos || name[prefix.size()] == '0' ||
+          name.size() - prefix.size() > 18)
+        continue;
+      const std::size_t n = std::stoull(name.substr(prefix.size()));
+      if (n <= declared) numbers.push_back(n);
+    }
+    std::sort(numbers.begin(), numbers.end());
+    return numbers;
   }
 
   // A 1-based node number from `variable` (its `entry`-th value) as a
@@ -124,36 +136,33 @@ class ExodusReader {
     pinned_.assign(nodes, 0);
   }
 
-  // Region tags: the blocks' ids, or 1, 2, ... in block order where one
-  // does not fit an int or two blocks share one (with a note), so that the
-  // blocks stay apart.
-  std::vector<int> block_tags(std::size_t blocks) {
-    std::vector<long long> ids;
-    if (file_->has_variable("eb_prop1")) {
-      require_dimensions("eb_prop1", {"num_el_blk"});
-      ids = file_->integers("eb_prop1");
-    } else {
-      for (std::size_t b = 0; b < blocks; ++b) ids.push_back(static_cast<long long>(b) + 1);
-    }
+  // Region tags of the blocks numbered `blocks` (1-based): their ids, or
+  // 1, 2, ... in block order where an id does not fit an int or two blocks
+  // share one (with a note), so that the blocks stay apart.
+  std::vector<int> block_tags(const std::vector<std::size_t>& blocks) {
+    if (!file_->has_variable("eb_prop1"))
+      return std::vector<int>(blocks.begin(), blocks.end());  // numbered as the file numbers them
+    require_dimensions("eb_prop1", {"num_el_blk"});
+    const std::vector<long long> ids = file_->integers("eb_prop1");
     const bool fit = std::all_of(ids.begin(), ids.end(), [](long long id) { return id >= INT_MIN && id <= INT_MAX; });
     std::map<long long, std::size_t> first_with;
     std::string repeated;
-    for (std::size_t b = 0; b < blocks && repeated.empty(); ++b)
+    for (std::size_t b = 0; b < ids.size() && repeated.empty(); ++b)
       if (const auto [it, added] = first_with.try_emplace(ids[b], b); !added)
         repeated = "id " + std::to_string(ids[b]) + " is that of blocks " + std::to_string(it->second + 1) + " and " +
                    std::to_string(b + 1);
-    std::vector<int> tags;
-    for (std::size_t b = 0; b < blocks; ++b)
-      tags.push_back(fit && repeated.empty() ? static_cast<int>(ids[b]) : static_cast<int>(b) + 1);
     if (!fit || !repeated.empty())
       mesh_.extras.read_notes.push_back(
           std::string(!fit ? "block ids past 32-bit ints" : "block ids that repeat (" + repeated + ")") +
           ": the blocks are read as region tags 1, 2, ... in block order, so that they stay apart");
+    std::vector<int> tags;
+    for (std::size_t b : blocks)
+      tags.push_back(fit && repeated.empty() ? static_cast<int>(ids[b - 1]) : static_cast<int>(b));
     return tags;
   }
 
   void read_blocks() {
-    const std::size_t blocks = list_length("num_el_blk");
+    const std::vector<std::size_t> blocks = items(file_->all_dimension_names(), "num_el_in_blk", "num_el_blk");
     const std::size_t elements = dimension("num_elem");
     const std::vector<int> tags = block_tags(blocks);
     std::vector<std::string> names;
@@ -166,8 +175,9 @@ class ExodusReader {
     std::map<std::string, std::size_t> uncarried;  // "HEX20 (20 nodes)" -> elements
     FileExtras& e = mesh_.extras;
     std::size_t next_element = 0;
-    for (std::size_t b = 0; b < blocks; ++b) {
-      const std::string n = std::to_string(b + 1);
+    for (std::size_t listed = 0; listed < blocks.size(); ++listed) {
+      const std::size_t b = blocks[listed] - 1;
+      const std::string n = std::to_string(blocks[listed]);
       const std::size_t count = dimension("num_el_in_blk" + n);
       const std::string variable = "connect" + n;
       if (count == 0) continue;  // a null block
@@ -187,7 +197,7 @@ class ExodusReader {
       if (!one_row) require_dimensions(variable, {"num_el_in_blk" + n, "num_nod_per_el" + n});
       std::vector<int> nodes = file_->ints(variable);
       for (std::size_t k = 0; k < nodes.size(); ++k) nodes[k] = node_index(nodes[k], variable, k);
-      const int tag = tags[b];
+      const int tag = tags[listed];
       const std::string name = b < names.size() ? names[b] : "";
       const auto id_of = [&](std::size_t k) { return element_ids.empty() ? 0 : element_ids[next_element + k]; };
       BlockRange& range = ranges_.emplace_back(BlockRange{next_element, count, -1});
@@ -243,11 +253,10 @@ class ExodusReader {
   }
 
   void read_node_sets() {
-    node_sets_ = list_length("num_node_sets");
-    for (std::size_t s = 0; s < node_sets_; ++s) {
-      const std::string n = std::to_string(s + 1);
+    node_sets_ = dimension("num_node_sets");
+    for (std::size_t s : items(file_->variable_names(), "node_ns", "num_node_sets")) {
+      const std::string n = std::to_string(s);
       const std::string variable = "node_ns" + n;
-      if (!file_->has_variable(variable)) continue;  // an empty set
       require_dimensions(variable, {"num_nod_ns" + n});
       const std::vector<int> members = file_->ints(variable);
       for (std::size_t k = 0; k < members.size(); ++k)
@@ -256,10 +265,9 @@ class ExodusReader {
   }
 
   void read_side_sets() {
-    side_sets_ = list_length("num_side_sets");
-    for (std::size_t s = 0; s < side_sets_; ++s) {
-      const std::string n = std::to_string(s + 1);
-      if (!file_->has_variable("elem_ss" + n)) continue;  // an empty set
+    side_sets_ = dimension("num_side_sets");
+    for (std::size_t s : items(file_->variable_names(), "elem_ss", "num_side_sets")) {
+      const std::string n = std::to_string(s);
       if (!file_->has_variable("side_ss" + n)) fail("elem_ss" + n + " without side_ss" + n);
       require_dimensions("elem_ss" + n, {"num_side_ss" + n});
       require_dimensions("side_ss" + n, {"num_side_ss" + n});
@@ -304,14 +312,16 @@ class ExodusReader {
                          [&](const std::string& v) { return v.rfind(prefix, 0) == 0; });
     };
     // Results are the values of variables over the time steps (meshio
-    // writes a time step with none).
+    // writes a time step with none, and a file may define results before
+    // any step).
     const std::size_t steps = dimension("time_step");
-    if (any_named("vals_")) rest.push_back("results over " + count_of(steps, "time step"));
+    const bool results = steps > 0 && any_named("vals_");
+    if (results) rest.push_back("results over " + count_of(steps, "time step"));
     if (any_named("attrib")) rest.push_back("element attributes");
     if (any_named("qa_records") || any_named("info_records")) rest.push_back("QA and info records");
     if (!rest.empty()) e.raw_sections.emplace_back("exodus:rest", joined(rest));
     if (!uncarried_.empty()) e.raw_sections.emplace_back("exodus:uncarried", uncarried_);
-    if (any_named("vals_"))
+    if (results)
       e.read_notes.push_back("the file holds results over " + count_of(steps, "time step") +
                              ", computed on the mesh as it was: Exodus output keeps them unchanged");
     if (real_bytes_ == 4)

@@ -145,27 +145,30 @@ class BlockPlan {
 
   // Exodus readers (SEACAS's IOSS) refuse a file whose blocks and sets
   // share a name: a name met again (a volume and a surface of one Gmsh
-  // physical name, say) takes its block's type and then its id after it.
+  // physical name, say) takes its block's type, then its id, then a count.
   void name_blocks_apart() {
-    for (Block& b : blocks_) {
-      if (b.name.empty()) continue;
-      b.name = b.name.substr(0, kLongestName);
-      if (names_used_.insert(b.name).second) continue;
-      std::string other = b.name + "_" + b.type;
-      if (!names_used_.insert(other).second) {
-        other += "_" + std::to_string(b.id);
-        names_used_.insert(other);
-      }
-      b.name = other;
-    }
+    for (Block& b : blocks_)
+      if (!b.name.empty()) b.name = unused_name(b.name, {"_" + std::string(b.type), "_" + std::to_string(b.id)});
   }
 
  public:
   // A name for a set that no block has.
-  std::string free_name(const std::string& wanted) {
-    std::string name = wanted;
-    for (int n = 2; !names_used_.insert(name).second; ++n) name = wanted + "_" + std::to_string(n);
-    return name;
+  std::string free_name(const std::string& wanted) { return unused_name(wanted, {}); }
+
+ private:
+  // `wanted`, or it with the first `suffixes` then _2, _3, ... after it, the
+  // first that no block or set has; cut to kLongestName bytes (at a UTF-8
+  // character's start) before its suffixes.
+  std::string unused_name(const std::string& wanted, const std::vector<std::string>& suffixes) {
+    std::string taken;  // the suffixes tried so far, each after the last
+    for (std::size_t k = 0;; ++k) {
+      if (k > 0 && k <= suffixes.size()) taken += suffixes[k - 1];
+      const std::string suffix = k <= suffixes.size() ? taken : taken + "_" + std::to_string(k - suffixes.size() + 1);
+      std::size_t keep = std::min(wanted.size(), kLongestName - std::min(suffix.size(), kLongestName));
+      while (keep > 0 && keep < wanted.size() && (static_cast<unsigned char>(wanted[keep]) & 0xC0) == 0x80) --keep;
+      std::string name = wanted.substr(0, keep) + suffix;
+      if (names_used_.insert(name).second) return name;
+    }
   }
 
   const TetMesh& mesh_;

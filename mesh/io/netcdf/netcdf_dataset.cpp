@@ -2,9 +2,11 @@
 
 #include <netcdf.h>
 #include <netcdf_mem.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -99,6 +101,43 @@ void put_reals(int ncid, const std::vector<std::pair<std::string, const std::vec
   }
 }
 
+// HDF5 can crash on a corrupt netCDF-4 file (1.10's global heap reader,
+// reached while netCDF opens one, for instance). A child process opens it
+// first and asks after every variable, dimension and attribute, so that a
+// crash there is a refusal here. Only where the child cannot be made is
+// the file opened without this probe.
+void probe_in_child(const std::string& bytes, const std::string& source) {
+  const pid_t pid = ::fork();
+  if (pid < 0) return;
+  if (pid == 0) {
+    int ncid = -1;
+    if (nc_open_mem("probe", NC_NOWRITE, bytes.size(), const_cast<char*>(bytes.data()), &ncid) == NC_NOERR) {
+      int variables = 0;
+      nc_inq_nvars(ncid, &variables);
+      for (int v = 0; v < variables; ++v) {
+        char name[NC_MAX_NAME + 1];
+        nc_type type = NC_NAT;
+        int dims = 0, attributes = 0;
+        int dim_ids[NC_MAX_VAR_DIMS];
+        if (nc_inq_var(ncid, v, name, &type, &dims, dim_ids, &attributes) != NC_NOERR) continue;
+        for (int a = 0; a < attributes; ++a) {
+          char attribute[NC_MAX_NAME + 1];
+          std::size_t length = 0;
+          if (nc_inq_attname(ncid, v, a, attribute) == NC_NOERR) nc_inq_att(ncid, v, attribute, &type, &length);
+        }
+      }
+      nc_close(ncid);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (WIFSIGNALED(status))
+    throw InputError(source, "the netCDF-4 (HDF5) file is corrupt: reading its header crashed HDF5 (signal " +
+                                 std::to_string(WTERMSIG(status)) + ")");
+}
+
 }  // namespace
 
 std::string format_of(const std::string& bytes) {
@@ -121,9 +160,12 @@ std::string format_of(const std::string& bytes) {
 
 Dataset::Dataset(const std::string& bytes, std::string source) : source_(std::move(source)) {
   const std::string format = format_of(bytes);
-  // netCDF trusts a classic header (netcdf_classic_header.hpp); HDF5 checks
-  // its own.
-  if (format.rfind("CDF", 0) == 0) check_classic_header(bytes, source_);
+  // netCDF trusts a classic header (netcdf_classic_header.hpp), and HDF5
+  // may crash on a corrupt one of its own (probe_in_child).
+  if (format.rfind("CDF", 0) == 0)
+    check_classic_header(bytes, source_);
+  else
+    probe_in_child(bytes, source_);
   largest_bytes_ = format.rfind("CDF", 0) == 0 ? bytes.size() : 1100 * bytes.size() + 65536;
   // Opened read-only, netCDF never writes to the memory it is given.
   const int status = nc_open_mem(source_.c_str(), NC_NOWRITE, bytes.size(), const_cast<char*>(bytes.data()), &ncid_);
@@ -313,6 +355,19 @@ std::vector<std::string> Dataset::variable_names() const {
   return names;
 }
 
+std::vector<std::string> Dataset::all_dimension_names() const {
+  int count = 0;
+  if (const int status = nc_inq_dimids(ncid_, &count, nullptr, 0); status != NC_NOERR) fail("the dimensions", status);
+  std::vector<int> ids(static_cast<std::size_t>(std::max(count, 0)));
+  if (const int status = nc_inq_dimids(ncid_, &count, ids.data(), 0); status != NC_NOERR)
+    fail("the dimensions", status);
+  std::vector<std::string> names;
+  char name[NC_MAX_NAME + 1];
+  for (int id : ids)
+    if (nc_inq_dimname(ncid_, id, name) == NC_NOERR) names.emplace_back(name);
+  return names;
+}
+
 std::string overwrite_reals(const std::string& bytes,
                             const std::vector<std::pair<std::string, const std::vector<double>*>>& values) {
   if (format_of(bytes) == "netCDF-4") {
@@ -360,7 +415,6 @@ std::string overwrite_reals(const std::string& bytes,
 
 NewDataset::NewDataset(bool large) {
   check(nc_create_mem("new Exodus file", large ? NC_64BIT_DATA : NC_64BIT_OFFSET, 0, &ncid_), "create the file");
-  check(nc_set_fill(ncid_, NC_NOFILL, nullptr), "set the fill mode");
 }
 
 NewDataset::~NewDataset() {

@@ -56,8 +56,10 @@ class Dataset {
   std::vector<std::string> rows_of_text(const std::string& name) const;
   // A text attribute of a variable, or nothing.
   std::optional<std::string> text_attribute(const std::string& variable, const std::string& name) const;
-  // The names of every variable, in the order of their ids.
+  // The names of every variable, in the order of their ids, and of every
+  // dimension.
   std::vector<std::string> variable_names() const;
+  std::vector<std::string> all_dimension_names() const;
 
  private:
   int id_of(const std::string& name) const;

@@ -29,8 +29,8 @@
 // Refused with the file's name and the variable at fault (InputError): a
 // file that is not netCDF, a classic file whose header is corrupt, that is
 // cut short or still being written (netcdf_classic_header.hpp, with the
-// byte), a netCDF-4 file whose header crashes HDF5 (opened in a child
-// process first, netcdf_dataset.cpp), netCDF without
+// byte), a netCDF-4 file whose header crashes HDF5 or sets it looping
+// (opened in a child process first, netcdf_dataset.cpp), netCDF without
 // Exodus's dimensions and variables, variables over other dimensions than
 // the data model gives them (a transposed coord or connect), variables
 // larger than the file could hold, num_dim other than 3, node indices out

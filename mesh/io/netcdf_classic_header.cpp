@@ -199,10 +199,15 @@ class HeaderCheck {
       for (const Data& d : data)
         if (d.record) record_size = d.slab;
     const std::uint64_t size = bytes_.size();
+    const Data* first_record = nullptr;
+    for (const Data& d : data)
+      if (d.record && first_record == nullptr) first_record = &d;
     for (const Data& d : data) {
       // Without records, netCDF places the record variables after the end
-      // of the file.
-      bool past = d.begin < at_ || (d.begin > size && !(d.record && numrecs_ == 0));
+      // of the file, the first of them at that end (padded to 4 bytes): a
+      // file written back is padded to it.
+      const bool unplaced = d.record && numrecs_ == 0 && &d != first_record;
+      bool past = d.begin < at_ || (d.begin > (d.record && numrecs_ == 0 ? padded(size) : size) && !unplaced);
       if (!d.record) {
         past = past || d.slab > size - std::min(d.begin, size);
       } else if (numrecs_ > 0) {

@@ -1,12 +1,16 @@
 #include "mesh/io/netcdf/netcdf_dataset.hpp"
 
+#include <fcntl.h>
 #include <netcdf.h>
 #include <netcdf_mem.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -102,40 +106,87 @@ void put_reals(int ncid, const std::vector<std::pair<std::string, const std::vec
 }
 
 // HDF5 can crash on a corrupt netCDF-4 file (1.10's global heap reader,
-// reached while netCDF opens one, for instance). A child process opens it
-// first and asks after every variable, dimension and attribute, so that a
-// crash there is a refusal here. Only where the child cannot be made is
-// the file opened without this probe.
-void probe_in_child(const std::string& bytes, const std::string& source) {
-  const pid_t pid = ::fork();
-  if (pid < 0) return;
-  if (pid == 0) {
-    int ncid = -1;
-    if (nc_open_mem("probe", NC_NOWRITE, bytes.size(), const_cast<char*>(bytes.data()), &ncid) == NC_NOERR) {
-      int variables = 0;
-      nc_inq_nvars(ncid, &variables);
-      for (int v = 0; v < variables; ++v) {
-        char name[NC_MAX_NAME + 1];
-        nc_type type = NC_NAT;
-        int dims = 0, attributes = 0;
-        int dim_ids[NC_MAX_VAR_DIMS];
-        if (nc_inq_var(ncid, v, name, &type, &dims, dim_ids, &attributes) != NC_NOERR) continue;
-        for (int a = 0; a < attributes; ++a) {
-          char attribute[NC_MAX_NAME + 1];
-          std::size_t length = 0;
-          if (nc_inq_attname(ncid, v, a, attribute) == NC_NOERR) nc_inq_att(ncid, v, attribute, &type, &length);
-        }
-      }
-      nc_close(ncid);
+// reached while netCDF opens one, for instance), or loop without end (the
+// same reader). A child process opens it first and asks after every
+// dimension, variable and attribute, within kProbeSeconds (far more than
+// any header takes), so that a crash or a loop there is a refusal here.
+// Only where the child cannot be made or waited for is the file opened
+// without this probe.
+constexpr int kProbeSeconds = 30;
+
+// The child: it dies with the parent, leaves no core file, writes nowhere,
+// runs no handler of the parent's (temp_file_cleanup.hpp's would remove the
+// parent's temporaries), and ends by itself if the parent's wait does not.
+[[noreturn]] void run_probe(const std::string& bytes, pid_t parent) {
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::_exit(0);
+  ::prctl(PR_SET_DUMPABLE, 0);
+  const struct rlimit no_core = {0, 0};
+  ::setrlimit(RLIMIT_CORE, &no_core);
+  for (int sig = 1; sig < NSIG; ++sig)
+    if (sig != SIGKILL && sig != SIGSTOP) ::signal(sig, SIG_DFL);
+  if (const int null = ::open("/dev/null", O_RDWR); null >= 0)
+    for (int fd = 0; fd <= 2; ++fd) ::dup2(null, fd);
+  ::alarm(kProbeSeconds + 5);
+  int ncid = -1;
+  if (nc_open_mem("probe", NC_NOWRITE, bytes.size(), const_cast<char*>(bytes.data()), &ncid) == NC_NOERR) {
+    char name[NC_MAX_NAME + 1];
+    int dims = 0, variables = 0, globals = 0, unlimited = -1;
+    nc_inq(ncid, &dims, &variables, &globals, &unlimited);
+    for (int d = 0; d < dims; ++d) {
+      std::size_t length = 0;
+      nc_inq_dim(ncid, d, name, &length);
     }
-    ::_exit(0);
+    for (int v = NC_GLOBAL; v < variables; ++v) {
+      nc_type type = NC_NAT;
+      int rank = 0, attributes = globals;
+      int dim_ids[NC_MAX_VAR_DIMS];
+      if (v != NC_GLOBAL && nc_inq_var(ncid, v, name, &type, &rank, dim_ids, &attributes) != NC_NOERR) continue;
+      for (int a = 0; a < attributes; ++a) {
+        std::size_t length = 0;
+        if (nc_inq_attname(ncid, v, a, name) == NC_NOERR) nc_inq_att(ncid, v, name, &type, &length);
+      }
+    }
+    nc_close(ncid);
   }
+  ::_exit(0);
+}
+
+void probe_in_child(const std::string& bytes, const std::string& source) {
+  // An ignored SIGCHLD would have the child reaped unseen.
+  struct sigaction previous {};
+  struct sigaction reap {};
+  reap.sa_handler = SIG_DFL;
+  ::sigaction(SIGCHLD, &reap, &previous);
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid == 0) run_probe(bytes, parent);
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  bool ended = false, looped = false;
+  for (int waited_ms = 0; pid > 0; waited_ms += 10) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) {
+      ended = true;
+      break;
+    }
+    if (done < 0 && errno != EINTR) break;
+    if (waited_ms >= 1000 * kProbeSeconds) {
+      ::kill(pid, SIGKILL);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      looped = true;
+      break;
+    }
+    ::usleep(10000);
   }
-  if (WIFSIGNALED(status))
-    throw InputError(source, "the netCDF-4 (HDF5) file is corrupt: reading its header crashed HDF5 (signal " +
-                                 std::to_string(WTERMSIG(status)) + ")");
+  ::sigaction(SIGCHLD, &previous, nullptr);
+  if (looped)
+    throw InputError(source, "the netCDF-4 (HDF5) file is corrupt: reading its header did not end in " +
+                                 std::to_string(kProbeSeconds) + " s");
+  if (ended && WIFSIGNALED(status))
+    throw InputError(source, "the netCDF-4 (HDF5) file is corrupt: reading its header " +
+                                 std::string(WTERMSIG(status) == SIGALRM ? "did not end" : "crashed HDF5") +
+                                 " (signal " + std::to_string(WTERMSIG(status)) + ")");
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 # already there. The CUDA toolkit is optional and not installed here.
 set -euo pipefail
 packages=(cmake g++ make libtet1.5-dev libbenchmark-dev libbenchmark-tools libgtest-dev nlohmann-json3-dev
-          zlib1g-dev liblzma-dev libnetcdf-dev libomp-dev clang libclang-rt-dev python3 python3-pandas python3-matplotlib
+          zlib1g-dev liblzma-dev libnetcdf-dev libexodusii-dev libomp-dev clang libclang-rt-dev python3 python3-pandas python3-matplotlib
           python3-meshio python3-gmsh python3-scipy python3-netcdf4 git)
 missing=()
 for p in "${packages[@]}"; do

@@ -3,10 +3,12 @@
 // mesh gets a new file of its blocks, names, ids and pins.
 #include <netcdf.h>
 
+#include <algorithm>
 #include <climits>
 #include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/exodus_element_types.hpp"

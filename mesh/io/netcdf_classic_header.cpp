@@ -62,7 +62,7 @@ class HeaderCheck {
     if (numrecs_ == (version_ == 5 ? kStreaming64 : kStreaming32))
       fail(4, "the record count is that of a file still being written (streaming)");
     dimensions();
-    attributes();
+    attributes("");
     variables();
   }
 
@@ -123,17 +123,22 @@ class HeaderCheck {
     }
   }
 
-  void attributes() {
+  // An attribute list: the file's (`owner` empty) or a variable's
+  // ("variable 'v'").
+  void attributes(const std::string& owner) {
     const std::uint64_t n = list(kAttributeTag, 12, "attribute");
     std::set<std::string> names;
     for (std::uint64_t a = 0; a < n; ++a) {
       name(names, "attribute");
       const std::size_t start = at_;
       const std::uint64_t size = type_size(tag(), version_);
-      if (size == 0) fail(start, "an attribute of an unknown type");
+      if (size == 0)
+        fail(start,
+             owner.empty() ? "an attribute of an unknown type" : "an attribute of " + owner + " has an unknown type");
       const std::uint64_t values = count();
       if (values > left() / size || padded(values * size) > left())
-        fail(start, "an attribute's values run past the end");
+        fail(start, owner.empty() ? "an attribute's values run past the end"
+                                  : "an attribute of " + owner + " runs past the end");
       at_ += static_cast<std::size_t>(padded(values * size));
     }
   }
@@ -171,18 +176,7 @@ class HeaderCheck {
         overflow = overflow || (length != 0 && values > UINT64_MAX / length);
         values *= length;
       }
-      std::set<std::string> attribute_names;
-      const std::uint64_t attributes = list(kAttributeTag, 12, "attribute");
-      for (std::uint64_t a = 0; a < attributes; ++a) {
-        name(attribute_names, "attribute");
-        const std::size_t type_at = at_;
-        const std::uint64_t size = type_size(tag(), version_);
-        if (size == 0) fail(type_at, "an attribute of variable '" + var + "' has an unknown type");
-        const std::uint64_t count_of_values = count();
-        if (count_of_values > left() / size || padded(count_of_values * size) > left())
-          fail(type_at, "an attribute of variable '" + var + "' runs past the end");
-        at_ += static_cast<std::size_t>(padded(count_of_values * size));
-      }
+      attributes("variable '" + var + "'");
       const std::size_t type_at = at_;
       const std::uint64_t size = type_size(tag(), version_);
       if (size == 0) fail(type_at, "variable '" + var + "' has an unknown type");

@@ -14,6 +14,7 @@
 #include "mesh/io/netcdf/netcdf_dataset.hpp"
 #include "mesh/io/number_text.hpp"
 #include "mesh/io/region_sets.hpp"
+#include "mesh/io/text_lines.hpp"
 #include "mesh/second_order.hpp"
 #include "mesh/validate.hpp"
 
@@ -26,12 +27,6 @@ struct BlockRange {
   std::size_t first_element = 0, elements = 0;
   long long first_tet = -1;  // -1: not a tet block
 };
-
-std::string joined(const std::vector<std::string>& parts) {
-  std::string text;
-  for (const std::string& p : parts) text += (text.empty() ? "" : ", ") + p;
-  return text;
-}
 
 class ExodusReader {
  public:

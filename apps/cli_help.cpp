@@ -41,6 +41,9 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
   .exo/.e     exodus        Exodus II (.ex2, .g and .gen too; a file read is written
                             back whole, with the new coordinates; element blocks are
                             regions, node and side sets pinned)
+  .cdb        ansys         ANSYS Mechanical APDL archive (CDWRITE; a file read is
+                            written back whole, moved NBLOCK records rewritten;
+                            materials are regions, node components pinned)
   .tsm        tsm           tetsmooth binary cache
 )";
 

@@ -6,7 +6,7 @@
 #
 #   scripts/run_fuzzers.sh [target ...]      targets: gmsh medit vtu vtk
 #                                            tetgen_node tetgen_ele tsm abaqus
-#                                            nastran flac3d exodus (default: all)
+#                                            nastran flac3d exodus ansys (default: all)
 # Environment:
 #   FUZZ_SECONDS    time per target (default 20)
 #   FUZZ_BUILD_DIR  build folder (default build-fuzz); the growing corpus is
@@ -19,7 +19,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${FUZZ_BUILD_DIR:-$root/build-fuzz}
 seconds=${FUZZ_SECONDS:-20}
 jobs=${FUZZ_JOBS:-2}
-all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran flac3d exodus)
+all_targets=(gmsh medit vtu vtk tetgen_node tetgen_ele tsm abaqus nastran flac3d exodus ansys)
 targets=("$@")
 [[ ${#targets[@]} -eq 0 ]] && targets=("${all_targets[@]}")
 
@@ -99,6 +99,34 @@ h = 0xcbf29ce484222325
 for b in body:
     h = ((h ^ b) * 0x100000001b3) & 0xFFFFFFFFFFFFFFFF
 open(sys.argv[1], "wb").write(body + struct.pack("<Q", h))
+PY
+# ANSYS: a deck in the older (3i8,6e20.13) layout with a degenerate
+# SOLID185 tet, SOLID285 tets of two materials, a shell, a non-solid EBLOCK,
+# components and loads; and mapdl-archive's TetBeam example where
+# install_deps.sh has put it.
+seed ansys "$root"/.deps/python/mapdl_archive/examples/TetBeam.cdb
+/usr/bin/python3 - "$seeds/ansys/small.cdb" <<'PY'
+import sys
+ints = lambda values, width: "".join(str(v).rjust(width) for v in values)
+nodes = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0), (0, 0, 1), (1, 0, 1), (0, 1, 1), (1, 1, 1), (0.4, 0.5, 0.6)]
+quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
+lines = ["/PREP7", "ET,1,SOLID285", "ET,2,185", "ET,3,181", "NBLOCK,6,SOLID,9,9", "(3i8,6e20.13)"]
+lines += [ints([i + 1, 0, 0], 8) + "".join("%20.13E" % c for c in p) for i, p in enumerate(nodes)]
+lines += ["N,R5.3,LOC,       -1,", "EBLOCK,19,SOLID,14,14", "(19i8)"]
+number = 0
+for q in quads:
+    for tet in ((9, q[0] + 1, q[1] + 1, q[2] + 1), (9, q[0] + 1, q[2] + 1, q[3] + 1)):
+        number += 1
+        if number == 1:
+            lines.append(ints([1, 2, 1, 1, 0, 0, 0, 0, 8, 0, number, tet[0], tet[1], tet[2], tet[2]] + [tet[3]] * 4, 8))
+        else:
+            lines.append(ints([1 + number % 2, 1, 1, 1, 0, 0, 0, 0, 4, 0, number] + list(tet), 8))
+lines.append(ints([1, 3, 1, 1, 0, 0, 0, 0, 4, 0, 13, 1, 2, 4, 3], 8))
+lines += ["       -1", "ET,4,154", "EBLOCK,10,,,1", "(15i9)", ints([14, 4, 4, 4, 12, 5, 6, 8, 8], 9), "       -1"]
+lines += ["CMBLOCK,TOP,NODE,        2", "(8i10)", ints([5, -8], 10)]
+lines += ["CMBLOCK,HALF,ELEM,        2", "(8i10)", ints([1, -6], 10)]
+lines += ["D,2,UX,0.0 $ F,3,FY,1.0 ! loads", "CP,1,UX,4,6", "FINISH"]
+open(sys.argv[1], "w").write("\n".join(lines) + "\n")
 PY
 # fuzz_exodus reads a first byte 0 and the rest as the description of a file
 # (exodus_spec.hpp), where any bytes will do; a first byte 1 and the bytes of

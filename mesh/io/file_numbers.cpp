@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <set>
 #include <utility>
 
 namespace tetsmooth {
@@ -64,6 +65,36 @@ std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long 
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i)
     if (pinned[i] && !kept[i]) listed.push_back(node_numbers[i]);
   return listed;
+}
+
+std::map<int, int> new_positive_ids(const TetMesh& mesh, long long largest,
+                                    const std::function<bool(const PassThroughBlock&)>& block) {
+  std::set<int> kept;       // tags that are ids as they are
+  std::vector<int> others;  // tags that are not; 0 for elements without one
+  const auto visit = [&](const std::vector<int>& tags, std::size_t elements) {
+    if (elements > 0 && tags.size() != elements) others.push_back(0);
+    for (int tag : tags)
+      if (tag > 0 && tag <= largest)
+        kept.insert(tag);
+      else
+        others.push_back(tag);
+  };
+  visit(mesh.extras.tet_tags, mesh.num_tets());
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (!block || block(b)) visit(b.tags, elements_in(b));
+  // 0 first, then -1, -2, ..., then the tags past the largest id, each the
+  // next id that no tag holds: above the largest kept, then from 1 up.
+  std::sort(others.begin(), others.end(), [](int a, int b) { return a <= 0 && b <= 0 ? a > b : a < b; });
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  std::map<int, int> renumbered;
+  long long next = kept.empty() ? 1 : *kept.rbegin() + 1;
+  for (int tag : others) {
+    if (next > largest) next = 1;
+    while (kept.count(static_cast<int>(next)) != 0) ++next;
+    renumbered[tag] = static_cast<int>(next);
+    kept.insert(static_cast<int>(next++));
+  }
+  return renumbered;
 }
 
 std::string numbers_lost(const TetMesh& mesh, long long largest, const std::vector<ElementSet>& sets) {

@@ -6,6 +6,7 @@
 // API).
 #include <cstddef>
 #include <functional>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,15 @@ std::vector<long long> element_numbers(const TetMesh& mesh, long long largest, c
 // listed too.
 std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long long>& node_numbers,
                                     const std::function<bool(const PassThroughBlock&)>& written = {});
+
+// New ids for the region tags that a format cannot take as ids (0 and
+// below, and past `largest`), and for elements without a tag (as tag 0),
+// over the tags of the tets and of the blocks `block` accepts (all where it
+// is empty): ids that no tag holds, from above the largest tag kept on
+// (then from 1 up), 0 first, then -1, -2, ..., then the large tags in
+// order. Nastran's PIDs and ANSYS's materials are positive.
+std::map<int, int> new_positive_ids(const TetMesh& mesh, long long largest,
+                                    const std::function<bool(const PassThroughBlock&)>& block = {});
 
 // The file's numbers that a new deck cannot keep: "node", "element", "node
 // and element", or "" when it keeps them all (or the file had none). Each

@@ -7,6 +7,7 @@
 
 #include "mesh/errors.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/ansys_io.hpp"
 #include "mesh/io/exodus_io.hpp"
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/gmsh_io.hpp"
@@ -44,6 +45,8 @@ constexpr FormatName kNames[] = {
     {"f3grid", MeshFormat::Flac3d},
     {"exodus", MeshFormat::Exodus},
     {"exo", MeshFormat::Exodus},
+    {"ansys", MeshFormat::Ansys},
+    {"cdb", MeshFormat::Ansys},
 };
 
 struct Extension {
@@ -56,7 +59,7 @@ constexpr Extension kExtensions[] = {
     {".inp", MeshFormat::Abaqus},  {".bdf", MeshFormat::Nastran}, {".nas", MeshFormat::Nastran},
     {".f3grid", MeshFormat::Flac3d}, {".flac3d", MeshFormat::Flac3d},
     {".exo", MeshFormat::Exodus},  {".e", MeshFormat::Exodus}, {".ex2", MeshFormat::Exodus},
-    {".g", MeshFormat::Exodus},    {".gen", MeshFormat::Exodus},
+    {".g", MeshFormat::Exodus},    {".gen", MeshFormat::Exodus}, {".cdb", MeshFormat::Ansys},
 };
 
 std::string lower(std::string s) {
@@ -83,7 +86,7 @@ MeshFormat parse_format(const std::string& name) {
   for (const FormatName& f : kNames)
     if (key == f.name) return f.format;
   throw UsageError("unknown mesh format '" + name +
-                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran, flac3d or exodus)");
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran, flac3d, exodus or ansys)");
 }
 
 const char* format_name(MeshFormat f) {
@@ -98,7 +101,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d, .exo/.e/.g or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d, .exo/.e/.g, .cdb or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 
@@ -132,6 +135,8 @@ TetMesh read_mesh(const std::string& path, MeshFormat format) {
       return read_flac3d_file(path);
     case MeshFormat::Exodus:
       return read_exodus_file(path);
+    case MeshFormat::Ansys:
+      return read_ansys_file(path);
     case MeshFormat::Auto:
       break;
   }
@@ -164,6 +169,8 @@ void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format,
       return write_flac3d_file(mesh, path);
     case MeshFormat::Exodus:
       return write_exodus_file(mesh, path);
+    case MeshFormat::Ansys:
+      return write_ansys_file(mesh, path);
     case MeshFormat::Auto:
       break;
   }

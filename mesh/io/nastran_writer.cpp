@@ -5,7 +5,6 @@
 #include <functional>
 #include <map>
 #include <ostream>
-#include <set>
 #include <sstream>
 
 #include "mesh/errors.hpp"
@@ -166,33 +165,10 @@ constexpr DeckWriter kWriter{"nastran", "Nastran deck", check_new_deck, write_de
 }  // namespace
 
 std::map<int, int> nastran_new_pids(const TetMesh& mesh) {
-  std::set<int> kept;       // tags that are PIDs as they are
-  std::vector<int> others;  // tags that are not; 0 for elements without one
-  const auto visit = [&](const std::vector<int>& tags, std::size_t elements) {
-    if (elements > 0 && tags.size() != elements) others.push_back(0);
-    for (int tag : tags)
-      if (tag > 0 && tag <= kLargestId)
-        kept.insert(tag);
-      else
-        others.push_back(tag);
-  };
-  visit(mesh.extras.tet_tags, mesh.num_tets());
-  for (const PassThroughBlock& b : mesh.extras.blocks)
-    if (const nastran::EntryType* entry = nastran::entry_type_of_kind(b.kind); entry != nullptr && entry->has_pid)
-      visit(b.tags, elements_in(b));
-  // 0 first, then -1, -2, ..., then the tags past the largest id, each the
-  // next id that no tag holds: above the largest kept, then from 1 up.
-  std::sort(others.begin(), others.end(), [](int a, int b) { return a <= 0 && b <= 0 ? a > b : a < b; });
-  others.erase(std::unique(others.begin(), others.end()), others.end());
-  std::map<int, int> renumbered;
-  long long next = kept.empty() ? 1 : *kept.rbegin() + 1;
-  for (int tag : others) {
-    if (next > kLargestId) next = 1;
-    while (kept.count(static_cast<int>(next)) != 0) ++next;
-    renumbered[tag] = static_cast<int>(next);
-    kept.insert(static_cast<int>(next++));
-  }
-  return renumbered;
+  return new_positive_ids(mesh, kLargestId, [](const PassThroughBlock& b) {
+    const nastran::EntryType* entry = nastran::entry_type_of_kind(b.kind);
+    return entry != nullptr && entry->has_pid;
+  });
 }
 
 std::string nastran_numbers_lost(const TetMesh& mesh) {

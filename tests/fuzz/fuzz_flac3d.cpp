@@ -16,14 +16,9 @@ namespace {
 using namespace tetsmooth;
 
 TetMesh read_back(const TetMesh& mesh, const char* what) {
-  std::stringstream file;
-  write_flac3d(mesh, file);
-  try {
-    return read_flac3d(file, "again.f3grid");
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "the %s does not read back: %s\n", what, e.what());
-    std::abort();
-  }
+  return fuzz::read_back(
+      mesh, [](const TetMesh& m, std::ostream& out) { write_flac3d(m, out); },
+      [](std::istream& in, const char* source) { return read_flac3d(in, source); }, what);
 }
 
 // Tags as regions: no tags are one region of all `count` elements.

@@ -17,14 +17,9 @@ namespace {
 using namespace tetsmooth;
 
 TetMesh read_back(const TetMesh& mesh, const char* what) {
-  std::stringstream file;
-  write_nastran(mesh, file);
-  try {
-    return read_nastran(file, "again.bdf");
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "the %s does not read back: %s\n", what, e.what());
-    std::abort();
-  }
+  return fuzz::read_back(
+      mesh, [](const TetMesh& m, std::ostream& out) { write_nastran(m, out); },
+      [](std::istream& in, const char* source) { return read_nastran(in, source); }, what);
 }
 
 std::vector<std::array<index_t, 4>> corner_sets(const TetMesh& mesh) {

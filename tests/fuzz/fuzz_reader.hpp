@@ -26,6 +26,21 @@ int run_reader(const std::uint8_t* data, std::size_t size, Read read) {
   return 0;
 }
 
+// The mesh as `read(stream, name)` reads back what `write(mesh, stream)`
+// wrote of it. What the writer writes must read back: a failure is a bug,
+// reported with `what` (abort, so that libFuzzer saves the input).
+template <class Write, class Read>
+TetMesh read_back(const TetMesh& mesh, Write write, Read read, const char* what) {
+  std::stringstream file;
+  write(mesh, file);
+  try {
+    return read(file, "again");
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "the %s does not read back: %s\n", what, e.what());
+    std::abort();
+  }
+}
+
 // A mesh that was read must read back the same after writing.
 inline void require_same(const TetMesh& again, const TetMesh& mesh, const char* what) {
   if (again.xyz != mesh.xyz || again.tets != mesh.tets || again.fixed != mesh.fixed) {

@@ -1,0 +1,362 @@
+// ANSYS file reading (ansys_io.hpp): the lines, commands and blocks.
+#include "mesh/io/ansys_reader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/ansys_element_types.hpp"
+#include "mesh/io/ansys_io.hpp"
+#include "mesh/io/input_file.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/validate.hpp"
+
+namespace tetsmooth::ansys {
+namespace {
+
+// `text` split at `separator` outside single quotes (APDL's strings).
+std::vector<std::string_view> split(std::string_view text, char separator) {
+  std::vector<std::string_view> parts;
+  bool quoted = false;
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\'') quoted = !quoted;
+    if (text[i] == separator && !quoted) {
+      parts.push_back(text.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  parts.push_back(text.substr(start));
+  return parts;
+}
+
+// `line` up to its '!' comment (outside quotes).
+std::string_view without_comment(std::string_view line) {
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == '\'') quoted = !quoted;
+    if (line[i] == '!' && !quoted) return line.substr(0, i);
+  }
+  return line;
+}
+
+std::string_view field(const std::vector<std::string_view>& fields, std::size_t k) {
+  return k < fields.size() ? trimmed(fields[k]) : std::string_view{};
+}
+
+void add_once(std::vector<std::string>& list, const std::string& item) {
+  if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
+}
+
+// The end of a record's data: its length without trailing blanks.
+std::size_t data_length(std::string_view record) {
+  std::size_t n = record.size();
+  while (n > 0 && (record[n - 1] == ' ' || record[n - 1] == '\t')) --n;
+  return n;
+}
+
+}  // namespace
+
+bool FileReader::next_line() {
+  if (at_ >= text_.size()) return false;
+  std::size_t end = text_.find('\n', at_);
+  const std::size_t next = end == std::string::npos ? text_.size() : end + 1;
+  if (end == std::string::npos) end = text_.size();
+  raw_ = std::string_view(text_).substr(at_, next - at_);
+  line_ = std::string_view(text_).substr(at_, end - at_);
+  if (!line_.empty() && line_.back() == '\r') line_.remove_suffix(1);
+  at_ = next;
+  ++line_no_;
+  return true;
+}
+
+void FileReader::keep(std::string_view text, bool nblock) {
+  if (nblock != kept_nblock_) {
+    if (!kept_.empty()) mesh_.extras.raw_sections.emplace_back(kept_nblock_ ? "ansys:nblock" : "ansys:text", kept_);
+    kept_.clear();
+    kept_nblock_ = nblock;
+  }
+  kept_ += text;
+}
+
+void FileReader::fail(const std::string& what) const { fail_at(line_no_, what); }
+
+void FileReader::fail_at(std::size_t line, const std::string& what) const {
+  throw InputError(source_ + ":" + std::to_string(line), what);
+}
+
+long long FileReader::int_field(std::string_view record, const BlockFormat& f, std::size_t k, const char* what) const {
+  long long value = 0;
+  const std::string_view text =
+      field_at(record, k * static_cast<std::size_t>(f.int_width), static_cast<std::size_t>(f.int_width));
+  if (!integer_field(text, value)) fail(std::string("expected ") + what + ", found " + quoted_token(trimmed(text)));
+  return value;
+}
+
+BlockFormat FileReader::block_format(const char* block) {
+  if (!next_line()) fail(std::string("the file ends after ") + block + ", before its format line");
+  keep(raw_, std::string_view(block) == "NBLOCK");
+  const std::optional<BlockFormat> f = parse_block_format(line_);
+  if (!f)
+    fail(std::string(block) + "'s format line must be a Fortran format such as (3i9,6e21.13e3), not " +
+         quoted_token(line_));
+  return *f;
+}
+
+void FileReader::nblock() {
+  const BlockFormat f = block_format("NBLOCK");
+  if (f.reals < 3) fail("NBLOCK's format gives " + std::to_string(f.reals) + " real fields: X, Y and Z need 3");
+  const std::size_t iw = static_cast<std::size_t>(f.int_width), rw = static_cast<std::size_t>(f.real_width);
+  const std::size_t ints_end = static_cast<std::size_t>(f.ints) * iw;
+  while (true) {
+    const std::size_t start = at_;
+    if (!next_line()) fail("the file ends inside an NBLOCK, before its closing N,R5.3,LOC,-1 or -1 record");
+    const std::string_view first = trimmed(line_);
+    if (first.size() >= 2 && (first[0] == 'N' || first[0] == 'n') && first[1] == ',') {
+      at_ = start;  // the closing command, read as one
+      --line_no_;
+      return;
+    }
+    if (first.empty()) fail("a blank line inside an NBLOCK (each record is a node)");
+    // The closing -1 comes in the width of the block's fields, or in
+    // another: a line of -1 alone ends the block either way.
+    const long long number = first == "-1" ? -1 : int_field(line_, f, 0, "a node number");
+    if (number == -1) {
+      keep(raw_, false);
+      return;
+    }
+    keep(raw_, true);
+    if (number <= 0) fail("node number " + std::to_string(number) + ": node numbers are positive");
+    for (std::size_t k = 1; k < static_cast<std::size_t>(f.ints); ++k) int_field(line_, f, k, "a whole number");
+    if (data_length(line_) > ints_end + static_cast<std::size_t>(f.reals) * rw)
+      fail("the NBLOCK record is longer than its format (values past its last field)");
+    for (std::size_t c = 0; c < static_cast<std::size_t>(f.reals); ++c) {
+      double v = 0;
+      const std::string_view text = field_at(line_, ints_end + c * rw, rw);
+      if (!real_field(text, v))
+        fail("expected a real number in field " + std::to_string(f.ints + static_cast<int>(c) + 1) + " of node " +
+             std::to_string(number) + ", found " + quoted_token(trimmed(text)));
+      if (c < 3) mesh_.xyz.push_back(v);
+    }
+    node_numbers_.push_back(number);
+    node_lines_.push_back(line_no_);
+  }
+}
+
+void FileReader::eblock(bool solid, long long nodes_per_record) {
+  const BlockFormat f = block_format("EBLOCK");
+  if (f.reals != 0) fail("EBLOCK's format must hold integers alone, such as (19i9)");
+  const std::size_t per_line = static_cast<std::size_t>(f.ints);
+  const std::size_t header = solid ? 11 : 5;
+  if (per_line <= header) fail("EBLOCK's format holds " + std::to_string(per_line) + " fields a line: too few");
+  if (!solid && nodes_per_record > static_cast<long long>(per_line - header))
+    fail("a non-solid EBLOCK of " + std::to_string(nodes_per_record) + " nodes an element and " +
+         std::to_string(per_line) + " fields a line: records over more than one line are not read");
+  const auto check_length = [&] {
+    if (data_length(line_) > per_line * static_cast<std::size_t>(f.int_width))
+      fail("the EBLOCK record is longer than its format (values past its last field)");
+  };
+  while (true) {
+    if (!next_line()) fail("the file ends inside an EBLOCK, before its closing -1 record");
+    keep(raw_, false);
+    if (trimmed(line_).empty()) fail("a blank line inside an EBLOCK (each record is an element)");
+    const long long lead =
+        trimmed(line_) == "-1" ? -1 : int_field(line_, f, 0, solid ? "a material number" : "an element number");
+    if (lead == -1) return;
+    check_length();
+    Element e;
+    e.solid = solid;
+    e.line = line_no_;
+    e.first = element_nodes_.size();
+    long long count = 0;
+    const auto material = [&](long long mat) {
+      if (mat < -999999999 || mat > 999999999) fail("material number " + std::to_string(mat) + " is out of range");
+      return static_cast<int>(mat);
+    };
+    if (solid) {
+      e.mat = material(lead);
+      e.type = int_field(line_, f, 1, "an element type");
+      count = int_field(line_, f, 8, "a node count");
+      e.number = int_field(line_, f, 10, "an element number");
+      if (count <= 0 || count > 200) fail("an element of " + std::to_string(count) + " nodes");
+      for (std::size_t k = 2; k < header; ++k) int_field(line_, f, k, "a whole number");
+      std::size_t k = header;
+      for (long long taken = 0; taken < count; ++taken, ++k) {
+        if (k == per_line) {
+          if (!next_line()) fail("the file ends inside an EBLOCK record");
+          keep(raw_, false);
+          check_length();
+          k = 0;
+        }
+        element_nodes_.push_back(int_field(line_, f, k, "a node number"));
+      }
+    } else {
+      e.number = lead;
+      e.type = int_field(line_, f, 1, "an element type");
+      e.mat = material(int_field(line_, f, 3, "a material number"));
+      for (std::size_t k = 2; k < header; ++k) int_field(line_, f, k, "a whole number");
+      // The record's nodes run to its last field; a blank one is none.
+      const std::size_t fields =
+          (data_length(line_) + static_cast<std::size_t>(f.int_width) - 1) / static_cast<std::size_t>(f.int_width);
+      for (std::size_t k = header; k < fields; ++k) element_nodes_.push_back(int_field(line_, f, k, "a node number"));
+      count = static_cast<long long>(element_nodes_.size() - e.first);
+    }
+    if (e.number <= 0) fail("element number " + std::to_string(e.number) + ": element numbers are positive");
+    for (std::size_t i = e.first; i < element_nodes_.size(); ++i)
+      if (element_nodes_[i] < 0)
+        fail("element " + std::to_string(e.number) + " lists node " + std::to_string(element_nodes_[i]) +
+             ": node numbers are positive (0 for none)");
+    e.count = static_cast<std::size_t>(count);
+    elements_.push_back(e);
+  }
+}
+
+void FileReader::cmblock(const std::vector<std::string_view>& fields) {
+  Component c;
+  c.name = std::string(field(fields, 1));
+  const std::string entity = upper_case(field(fields, 2));
+  c.line = line_no_;
+  long long count = 0;
+  if (!parse_integer(field(fields, 3), count) || count < 0)
+    fail("CMBLOCK " + quoted_token(c.name) + " needs its count of items, not " + quoted_token(field(fields, 3)));
+  const BlockFormat f = block_format("CMBLOCK");
+  if (f.reals != 0) fail("CMBLOCK's format must hold integers alone, such as (8i10)");
+  long long taken = 0;
+  while (taken < count) {
+    if (!next_line())
+      fail("the file ends inside CMBLOCK " + quoted_token(c.name) + ", which lists " + std::to_string(count) +
+           " items");
+    keep(raw_, false);
+    if (data_length(line_) > static_cast<std::size_t>(f.ints * f.int_width))
+      fail("the CMBLOCK record is longer than its format (values past its last field)");
+    for (std::size_t k = 0; k < static_cast<std::size_t>(f.ints) && taken < count; ++k, ++taken) {
+      const std::size_t width = static_cast<std::size_t>(f.int_width);
+      if (trimmed(field_at(line_, k * width, width)).empty())
+        fail("CMBLOCK " + quoted_token(c.name) + " holds " + std::to_string(taken) +
+             " items on its lines, and its count says " + std::to_string(count));
+      const long long v = int_field(line_, f, k, "an item number");
+      if (v > 0) {
+        c.ranges.emplace_back(v, v);
+      } else if (v < 0 && !c.ranges.empty() && c.ranges.back().first == c.ranges.back().second &&
+                 -v >= c.ranges.back().first) {
+        c.ranges.back().second = -v;  // the range from the number before to -v
+      } else {
+        fail("CMBLOCK " + quoted_token(c.name) + " lists " + std::to_string(v) +
+             (v == 0 ? ": item numbers are positive" : ", which follows no number it could end a range from"));
+      }
+    }
+  }
+  if (entity == "NODE" || entity == "ELEM" || entity == "ELEMENT") {
+    c.nodes = entity == "NODE";
+    components_.push_back(std::move(c));
+  }
+}
+
+void FileReader::element_type(const std::vector<std::string_view>& fields) {
+  long long itype = 0;
+  if (!parse_integer(field(fields, 1), itype) || itype <= 0)
+    fail("ET needs a positive element type number, not " + quoted_token(field(fields, 1)));
+  ElementType t;
+  t.name = upper_case(field(fields, 2));
+  t.number = type_number_of(t.name);
+  t.line = line_no_;
+  const auto [it, added] = types_.emplace(itype, t);
+  if (!added && it->second.number != t.number)
+    fail("element type " + std::to_string(itype) + " is defined again, as " + quoted_token(t.name) + " (line " +
+         std::to_string(it->second.line) + " made it " + quoted_token(it->second.name) + ")");
+}
+
+void FileReader::pin_fields(const std::vector<std::string_view>& fields, std::initializer_list<std::size_t> places,
+                            const std::string& name) {
+  for (std::size_t k : places) {
+    const std::string_view text = field(fields, k);
+    long long number = 0;
+    if (text.empty()) continue;
+    if (parse_integer(text, number)) {
+      if (number > 0) pinned_.emplace_back(number, line_no_);
+      continue;
+    }
+    const std::string word = upper_case(text);
+    if (word == "ALL" || word == "P" || word == "P51X") add_once(by_selection_, name);
+    // Any other word names a component: its nodes are pinned as every node
+    // component's are.
+  }
+}
+
+void FileReader::command(const std::vector<std::string_view>& fields) {
+  const std::string name = upper_case(field(fields, 0));
+  if (name.empty()) return;
+  const std::string second = upper_case(field(fields, 1));
+  // CDWRITE's marks ("N,R5.3,LOC,-1" closing an NBLOCK, "EN,R5.5,ATTR,-1")
+  // and its block forms of other commands carry a release as field 2.
+  const bool release_form =
+      second.size() > 2 && second[0] == 'R' && std::isdigit(static_cast<unsigned char>(second[1]));
+  if (name == "NBLOCK") return nblock();
+  if (name == "EBLOCK") {
+    long long nodes = 0;
+    if (!parse_integer(field(fields, 1), nodes) || nodes <= 0)
+      fail("EBLOCK needs its count of fields, not " + quoted_token(field(fields, 1)));
+    return eblock(upper_case(field(fields, 2)) == "SOLID", nodes);
+  }
+  if (name == "CMBLOCK") return cmblock(fields);
+  if (name == "ET") return element_type(fields);
+  if ((name == "N" || name == "EN") && release_form) return;
+  if (changes_mesh(name))
+    fail("the " + name + " command " +
+         (name == "CDREAD" || name == "/INPUT" || name.substr(0, 4) == "/INP" || name.find("READ") != std::string::npos
+              ? "reads another file into the model"
+              : "makes, moves or deletes nodes or elements") +
+         ", which tetsmooth would not see: only NBLOCK and EBLOCK define the mesh it reads (write the model with "
+         "CDWRITE)");
+  add_once(commands_, text_excerpt(name));
+  if (release_form && (name == "D" || name == "F" || name == "CP" || name == "CE" || name == "BF" || name == "IC")) {
+    add_once(cdwrite_forms_, name);
+  } else if (name == "D" || name == "F" || name == "BF" || name == "IC" || name == "M") {
+    pin_fields(fields, {1}, name);
+  } else if (name == "CP") {
+    pin_fields(fields, {3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19}, name);
+  } else if (name == "CE") {
+    pin_fields(fields, {3, 6, 9}, name);
+  }
+}
+
+void FileReader::commands(std::string_view line) {
+  for (std::string_view one : split(without_comment(line), '$')) {
+    if (trimmed(one).empty()) continue;
+    command(split(one, ','));
+  }
+}
+
+TetMesh FileReader::read() {
+  // A UTF-8 byte order mark is no command.
+  const std::size_t bom = bom_length(text_);
+  while (next_line()) {
+    keep(raw_, false);
+    std::string_view line = line_;
+    if (line_no_ == 1) line.remove_prefix(std::min(bom, line.size()));
+    commands(line);
+  }
+  keep("", !kept_nblock_);  // the last piece
+  if (node_numbers_.empty())
+    throw InputError(source_, "no NBLOCK with nodes: not an ANSYS mesh (write it with CDWRITE)");
+  resolve();
+  keep_notes();
+  validate_mesh(mesh_, source_);
+  return std::move(mesh_);
+}
+
+}  // namespace tetsmooth::ansys
+
+namespace tetsmooth {
+
+TetMesh read_ansys(std::istream& in, const std::string& source) {
+  return ansys::FileReader(read_all(in, source), source).read();
+}
+
+TetMesh read_ansys_file(const std::string& path) {
+  std::ifstream in = open_input(path);
+  return read_ansys(in, path);
+}
+
+}  // namespace tetsmooth

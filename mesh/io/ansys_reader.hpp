@@ -1,0 +1,98 @@
+#pragma once
+// The ANSYS file reader's state (not a public API: read_ansys in
+// ansys_io.hpp is). ansys_reader.cpp walks the file's lines, its commands
+// and blocks, keeping what they list by the file's numbers;
+// ansys_resolve.cpp then turns numbers into the mesh, its regions and its
+// pins, since a component or a load may name items before or after the
+// block that defines them.
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "mesh/io/ansys_fields.hpp"
+#include "mesh/io/id_index.hpp"
+#include "mesh/tet_mesh.hpp"
+
+namespace tetsmooth::ansys {
+
+class FileReader {
+ public:
+  FileReader(std::string text, std::string source) : text_(std::move(text)), source_(std::move(source)) {}
+  TetMesh read();
+
+ private:
+  // An element as its EBLOCK record lists it.
+  struct Element {
+    long long number = 0, type = 0;
+    int mat = 0;
+    bool solid = true;                 // from an EBLOCK with SOLID (else its nodes only pin)
+    std::size_t first = 0, count = 0;  // its nodes in element_nodes_
+    std::size_t line = 0;
+  };
+  // A CMBLOCK: its items as ranges of numbers (first, last).
+  struct Component {
+    std::string name;
+    bool nodes = true;  // NODE, else ELEM
+    std::vector<std::pair<long long, long long>> ranges;
+    std::size_t line = 0;
+  };
+  struct ElementType {
+    int number = -1;   // the ANSYS type (187), or -1
+    std::string name;  // as ET gave it
+    std::size_t line = 0;
+  };
+
+  // ansys_reader.cpp: lines, commands and blocks.
+  bool next_line();
+  void keep(std::string_view text, bool nblock);
+  void commands(std::string_view line);
+  void command(const std::vector<std::string_view>& fields);
+  void element_type(const std::vector<std::string_view>& fields);
+  void pin_fields(const std::vector<std::string_view>& fields, std::initializer_list<std::size_t> places,
+                  const std::string& name);
+  BlockFormat block_format(const char* block);
+  void nblock();
+  void eblock(bool solid, long long nodes_per_record);
+  void cmblock(const std::vector<std::string_view>& fields);
+  long long int_field(std::string_view record, const BlockFormat& f, std::size_t k, const char* what) const;
+  [[noreturn]] void fail(const std::string& what) const;
+  [[noreturn]] void fail_at(std::size_t line, const std::string& what) const;
+
+  // ansys_resolve.cpp: numbers into the mesh.
+  void resolve();
+  void resolve_elements(const IdIndex& nodes);
+  void resolve_regions();
+  void resolve_pins(const IdIndex& nodes);
+  void keep_notes();
+
+  std::string text_;
+  std::string source_;
+  std::size_t at_ = 0;       // the next line's first byte in text_
+  std::size_t line_no_ = 0;  // the current line's number
+  std::string_view line_;    // the current line, without its end ('\n', and a '\r' before it)
+  std::string_view raw_;     // the current line with its end
+
+  TetMesh mesh_;
+  std::string kept_;          // text since the last switch between NBLOCK records and the rest
+  bool kept_nblock_ = false;  // whether kept_ holds NBLOCK records
+  std::vector<long long> node_numbers_;
+  std::vector<std::size_t> node_lines_;
+  std::vector<Element> elements_;
+  std::vector<long long> element_nodes_;
+  std::vector<Component> components_;
+  std::map<long long, ElementType> types_;
+  std::vector<std::pair<long long, std::size_t>> pinned_;  // node numbers that commands name, and the line
+  std::vector<std::string> commands_;                      // other command names, once each
+  std::vector<std::string> uncarried_;                     // element types that only pin
+  std::vector<std::string> by_selection_;                  // commands that named nodes through the selection
+  std::vector<std::string> cdwrite_forms_;                 // commands in a form whose nodes are not read
+  // Tets as elements_ places, and each element's tet (or -1).
+  std::vector<std::size_t> tet_elements_;
+  std::vector<long long> tet_of_element_;
+};
+
+}  // namespace tetsmooth::ansys

@@ -1,0 +1,213 @@
+// ANSYS file reading (ansys_io.hpp): the file's numbers into the mesh, its
+// regions and its pins, once every line is read.
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "mesh/errors.hpp"
+#include "mesh/io/ansys_element_types.hpp"
+#include "mesh/io/ansys_reader.hpp"
+#include "mesh/io/kept_deck.hpp"
+#include "mesh/io/region_sets.hpp"
+#include "mesh/io/text_lines.hpp"
+#include "mesh/second_order.hpp"
+
+namespace tetsmooth::ansys {
+namespace {
+
+// The kinds of pass-through elements that solids give.
+const char* kind_of(Shape shape) {
+  switch (shape) {
+    case Shape::Hexahedron:
+      return "hexahedron";
+    case Shape::Wedge:
+      return "wedge";
+    case Shape::Pyramid:
+      return "pyramid";
+    default:
+      return nullptr;
+  }
+}
+
+// The places of a 10-node tet's midside nodes in the list append_file_tet
+// takes (its corners then kTetEdges' midside nodes).
+constexpr MidsidePlaces kInOrder = {4, 5, 6, 7, 8, 9};
+
+// A list for a note: the first `most` items, then how many more.
+std::string listed(const std::vector<std::string>& items, std::size_t most) {
+  if (items.size() <= most) return joined(items);
+  const std::vector<std::string> first(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(most));
+  return joined(first) + " and " + std::to_string(items.size() - most) + " more";
+}
+
+}  // namespace
+
+void FileReader::resolve_elements(const IdIndex& nodes) {
+  FileExtras& e = mesh_.extras;
+  std::map<const char*, std::size_t> block_of;  // pass-through kind -> its block in e.blocks
+  std::vector<std::uint8_t>& fixed = mesh_.fixed;
+  int tet_nodes = 0;
+  tet_of_element_.assign(elements_.size(), -1);
+  for (std::size_t i = 0; i < elements_.size(); ++i) {
+    const Element& el = elements_[i];
+    const long long* listed_nodes = element_nodes_.data() + el.first;
+    index_t index[200];
+    for (std::size_t k = 0; k < el.count; ++k) {
+      index[k] = -1;
+      if (listed_nodes[k] == 0) continue;
+      const long long n = nodes.find(listed_nodes[k]);
+      if (n < 0)
+        fail_at(el.line, "element " + std::to_string(el.number) + " lists node " + std::to_string(listed_nodes[k]) +
+                             ", which no NBLOCK defines");
+      index[k] = static_cast<index_t>(n);
+    }
+    const auto type = types_.find(el.type);
+    if (type == types_.end())
+      fail_at(el.line, "element " + std::to_string(el.number) + " is of type " + std::to_string(el.type) +
+                           ", which no ET command defines");
+    const Family family = el.solid ? family_of(type->second.number) : Family::Other;
+    const SolidShape shape = solid_shape(family, listed_nodes, static_cast<int>(el.count));
+    if (shape.shape == Shape::Tet4 || shape.shape == Shape::Tet10) {
+      const int count = shape.count;
+      if (tet_nodes != 0 && tet_nodes != count) fail_at(el.line, mixed_tet_kinds(count));
+      tet_nodes = count;
+      index_t tet[10];
+      for (int k = 0; k < count; ++k) tet[k] = index[shape.places[k]];
+      tet_of_element_[i] = static_cast<long long>(tet_elements_.size());
+      tet_elements_.push_back(i);
+      append_file_tet(mesh_, tet, count == 10, kInOrder);
+      e.tet_tags.push_back(el.mat);
+      e.tet_element_tags.push_back(el.number);
+      continue;
+    }
+    // Every other element pins its nodes.
+    for (std::size_t k = 0; k < el.count; ++k)
+      if (index[k] >= 0) fixed[static_cast<std::size_t>(index[k])] = 1;
+    if (const char* kind = kind_of(shape.shape); kind != nullptr) {
+      const auto [at, added] = block_of.emplace(kind, e.blocks.size());
+      if (added) {
+        PassThroughBlock& b = e.blocks.emplace_back();
+        b.kind = kind;
+        b.nodes_per_element = shape.count;
+      }
+      PassThroughBlock& b = e.blocks[at->second];
+      for (int k = 0; k < shape.count; ++k) b.connectivity.push_back(index[shape.places[k]]);
+      b.tags.push_back(el.mat);
+      b.element_tags.push_back(el.number);
+      continue;
+    }
+    const std::string& name = type->second.name;
+    if (std::find(uncarried_.begin(), uncarried_.end(), name) == uncarried_.end()) uncarried_.push_back(name);
+  }
+  if (tet_elements_.empty())
+    throw InputError(source_,
+                     "no tets among the EBLOCK elements: a volume mesh of tets is needed (SOLID285, "
+                     "SOLID187, or a SOLID185/186 with the nodes of a tet)");
+}
+
+void FileReader::resolve_regions() {
+  FileExtras& e = mesh_.extras;
+  const IdIndex elements([&] {
+    std::vector<long long> numbers;
+    for (const Element& el : elements_) numbers.push_back(el.number);
+    return numbers;
+  }());
+  // Each element component's tets, as tet indices in order, once each.
+  std::vector<std::pair<const Component*, std::vector<std::size_t>>> tet_sets;
+  for (const Component& c : components_) {
+    if (c.nodes) continue;
+    std::vector<std::size_t> places, tets;
+    for (const auto& [first, last] : c.ranges) {
+      if (first == last && elements.find(first) < 0)
+        fail_at(c.line, "component " + quoted_token(c.name) + " lists element " + std::to_string(first) +
+                            ", which no EBLOCK defines");
+      elements.append_range(first, last, 1, places);
+    }
+    for (std::size_t p : places)
+      if (tet_of_element_[p] >= 0) tets.push_back(static_cast<std::size_t>(tet_of_element_[p]));
+    std::sort(tets.begin(), tets.end());
+    tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
+    if (!tets.empty()) tet_sets.emplace_back(&c, std::move(tets));
+  }
+  if (tet_sets.empty()) return;
+  // Regions: the materials, split further where a component holds some of a
+  // material's tets and not the others.
+  std::map<int, std::vector<std::size_t>> by_mat;
+  for (std::size_t t = 0; t < e.tet_tags.size(); ++t) by_mat[e.tet_tags[t]].push_back(t);
+  RegionSplitter splitter(e.tet_tags.size());
+  for (const auto& [mat, tets] : by_mat) splitter.split(tets);
+  for (const auto& [component, tets] : tet_sets) splitter.split(tets);
+  const std::vector<int> regions = splitter.tags();
+  const int count = regions.empty() ? 0 : *std::max_element(regions.begin(), regions.end());
+  if (static_cast<std::size_t>(count) != by_mat.size()) {
+    e.tet_tags = regions;
+    e.read_notes.push_back("element components divide materials, so the " + std::to_string(count) +
+                           " regions they make (the tets that share a material and their components) are numbered "
+                           "1, 2, ... in order of their first tets");
+  }
+  std::map<int, std::size_t> region_size;
+  for (int tag : e.tet_tags) ++region_size[tag];
+  RegionNames names;
+  for (const auto& [component, tets] : tet_sets) {
+    const int tag = e.tet_tags[tets.front()];
+    const bool one = std::all_of(tets.begin(), tets.end(), [&](std::size_t t) { return e.tet_tags[t] == tag; });
+    if (one && region_size[tag] == tets.size()) names.add(3, tag, component->name);
+  }
+  if (!names.empty()) e.raw_sections.emplace_back("$PhysicalNames", names.msh_body());
+}
+
+void FileReader::resolve_pins(const IdIndex& nodes) {
+  std::vector<std::uint8_t>& fixed = mesh_.fixed;
+  for (const Component& c : components_) {
+    if (!c.nodes) continue;
+    std::vector<std::size_t> places;
+    for (const auto& [first, last] : c.ranges) {
+      if (first == last && nodes.find(first) < 0)
+        fail_at(c.line, "component " + quoted_token(c.name) + " lists node " + std::to_string(first) +
+                            ", which no NBLOCK defines");
+      nodes.append_range(first, last, 1, places);
+    }
+    for (std::size_t p : places) fixed[p] = 1;
+  }
+  for (const auto& [number, line] : pinned_) {
+    const long long n = nodes.find(number);
+    if (n < 0) fail_at(line, "node " + std::to_string(number) + " is named here, and no NBLOCK defines it");
+    fixed[static_cast<std::size_t>(n)] = 1;
+  }
+}
+
+void FileReader::resolve() {
+  FileExtras& e = mesh_.extras;
+  const IdIndex nodes(node_numbers_);
+  if (const auto twice = nodes.repeated())
+    fail_at(node_lines_[*twice], "node " + std::to_string(node_numbers_[*twice]) + " is defined a second time");
+  {
+    std::vector<long long> numbers;
+    for (const Element& el : elements_) numbers.push_back(el.number);
+    if (const auto twice = IdIndex(numbers).repeated())
+      fail_at(elements_[*twice].line, "element " + std::to_string(numbers[*twice]) + " is defined a second time");
+  }
+  e.node_tags = node_numbers_;
+  mesh_.fixed.assign(node_numbers_.size(), 0);
+  resolve_elements(nodes);
+  resolve_regions();
+  resolve_pins(nodes);
+  if (std::find(mesh_.fixed.begin(), mesh_.fixed.end(), 1) == mesh_.fixed.end()) mesh_.fixed.clear();
+}
+
+void FileReader::keep_notes() {
+  FileExtras& e = mesh_.extras;
+  stamp_kept_deck(mesh_, "ansys");
+  if (!commands_.empty()) e.raw_sections.emplace_back("ansys:commands", listed(commands_, 12));
+  if (!uncarried_.empty()) e.raw_sections.emplace_back("ansys:uncarried", joined(uncarried_));
+  if (!by_selection_.empty())
+    e.read_notes.push_back("the file's " + joined(by_selection_) +
+                           " commands name nodes through APDL's selection (ALL, P), which tetsmooth does not "
+                           "follow: their nodes are pinned only where a node component or an element pins them");
+  if (!cdwrite_forms_.empty())
+    e.read_notes.push_back("the file's " + joined(cdwrite_forms_) +
+                           " commands in CDWRITE's block form are not read: their nodes are pinned only where a node "
+                           "component or an element pins them");
+}
+
+}  // namespace tetsmooth::ansys

@@ -71,13 +71,19 @@ bool FileReader::next_line() {
   return true;
 }
 
-void FileReader::keep(std::string_view text, bool nblock) {
-  if (nblock != kept_nblock_) {
-    if (!kept_.empty()) mesh_.extras.raw_sections.emplace_back(kept_nblock_ ? "ansys:nblock" : "ansys:text", kept_);
-    kept_.clear();
-    kept_nblock_ = nblock;
-  }
-  kept_ += text;
+void FileReader::keep(bool nblock) {
+  const auto at = static_cast<std::size_t>(raw_.data() - text_.data());
+  if (nblock != kept_nblock_) flush_kept();
+  if (kept_begin_ == kept_end_) kept_begin_ = at;
+  kept_nblock_ = nblock;
+  kept_end_ = at + raw_.size();
+}
+
+void FileReader::flush_kept() {
+  if (kept_end_ > kept_begin_)
+    mesh_.extras.raw_sections.emplace_back(kept_nblock_ ? "ansys:nblock" : "ansys:text",
+                                           text_.substr(kept_begin_, kept_end_ - kept_begin_));
+  kept_begin_ = kept_end_;
 }
 
 void FileReader::fail(const std::string& what) const { fail_at(line_no_, what); }
@@ -96,7 +102,7 @@ long long FileReader::int_field(std::string_view record, const BlockFormat& f, s
 
 BlockFormat FileReader::block_format(const char* block) {
   if (!next_line()) fail(std::string("the file ends after ") + block + ", before its format line");
-  keep(raw_, std::string_view(block) == "NBLOCK");
+  keep(std::string_view(block) == "NBLOCK");
   const std::optional<BlockFormat> f = parse_block_format(line_);
   if (!f)
     fail(std::string(block) + "'s format line must be a Fortran format such as (3i9,6e21.13e3), not " +
@@ -123,10 +129,10 @@ void FileReader::nblock() {
     // another: a line of -1 alone ends the block either way.
     const long long number = first == "-1" ? -1 : int_field(line_, f, 0, "a node number");
     if (number == -1) {
-      keep(raw_, false);
+      keep(false);
       return;
     }
-    keep(raw_, true);
+    keep(true);
     if (number <= 0) fail("node number " + std::to_string(number) + ": node numbers are positive");
     for (std::size_t k = 1; k < static_cast<std::size_t>(f.ints); ++k) int_field(line_, f, k, "a whole number");
     if (data_length(line_) > ints_end + static_cast<std::size_t>(f.reals) * rw)
@@ -159,7 +165,7 @@ void FileReader::eblock(bool solid, long long nodes_per_record) {
   };
   while (true) {
     if (!next_line()) fail("the file ends inside an EBLOCK, before its closing -1 record");
-    keep(raw_, false);
+    keep(false);
     if (trimmed(line_).empty()) fail("a blank line inside an EBLOCK (each record is an element)");
     const long long lead =
         trimmed(line_) == "-1" ? -1 : int_field(line_, f, 0, solid ? "a material number" : "an element number");
@@ -185,7 +191,7 @@ void FileReader::eblock(bool solid, long long nodes_per_record) {
       for (long long taken = 0; taken < count; ++taken, ++k) {
         if (k == per_line) {
           if (!next_line()) fail("the file ends inside an EBLOCK record");
-          keep(raw_, false);
+          keep(false);
           check_length();
           k = 0;
         }
@@ -227,7 +233,7 @@ void FileReader::cmblock(const std::vector<std::string_view>& fields) {
     if (!next_line())
       fail("the file ends inside CMBLOCK " + quoted_token(c.name) + ", which lists " + std::to_string(count) +
            " items");
-    keep(raw_, false);
+    keep(false);
     if (data_length(line_) > static_cast<std::size_t>(f.ints * f.int_width))
       fail("the CMBLOCK record is longer than its format (values past its last field)");
     for (std::size_t k = 0; k < static_cast<std::size_t>(f.ints) && taken < count; ++k, ++taken) {
@@ -332,12 +338,12 @@ TetMesh FileReader::read() {
   // A UTF-8 byte order mark is no command.
   const std::size_t bom = bom_length(text_);
   while (next_line()) {
-    keep(raw_, false);
+    keep(false);
     std::string_view line = line_;
     if (line_no_ == 1) line.remove_prefix(std::min(bom, line.size()));
     commands(line);
   }
-  keep("", !kept_nblock_);  // the last piece
+  flush_kept();
   if (node_numbers_.empty())
     throw InputError(source_, "no NBLOCK with nodes: not an ANSYS mesh (write it with CDWRITE)");
   resolve();

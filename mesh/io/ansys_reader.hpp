@@ -48,7 +48,10 @@ class FileReader {
 
   // ansys_reader.cpp: lines, commands and blocks.
   bool next_line();
-  void keep(std::string_view text, bool nblock);
+  // Keeps the current line in the raw section of its kind: the file's
+  // text, or NBLOCK records; flush_kept closes the section.
+  void keep(bool nblock);
+  void flush_kept();
   void commands(std::string_view line);
   void command(const std::vector<std::string_view>& fields);
   void element_type(const std::vector<std::string_view>& fields);
@@ -77,8 +80,10 @@ class FileReader {
   std::string_view raw_;     // the current line with its end
 
   TetMesh mesh_;
-  std::string kept_;          // text since the last switch between NBLOCK records and the rest
-  bool kept_nblock_ = false;  // whether kept_ holds NBLOCK records
+  // The bytes of text_ not yet in a raw section, since the last switch
+  // between NBLOCK records and the rest, and which of the two they are.
+  std::size_t kept_begin_ = 0, kept_end_ = 0;
+  bool kept_nblock_ = false;
   std::vector<long long> node_numbers_;
   std::vector<std::size_t> node_lines_;
   std::vector<Element> elements_;

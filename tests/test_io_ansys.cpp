@@ -62,7 +62,7 @@ std::string ints(const std::vector<long long>& values, int width) {
 std::string deck(const TetMesh& mesh, const std::string& types, const std::string& elements,
                  const std::string& extra = "") {
   std::string text = "/PREP7\n" + types + "NBLOCK,6,SOLID," + std::to_string(mesh.num_nodes()) + "\n(3i9,6e21.13e3)\n";
-  const BlockFormat f{3, 9, 6, 21, 13, 3};
+  const BlockFormat f{3, 9, 6, 21, 13, 3, 0};
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
     std::string line = ints({static_cast<long long>(i) + 1, 0, 0}, 9);
     for (int c = 0; c < 3; ++c) ansys::format_real(mesh.xyz[3 * i + static_cast<std::size_t>(c)], f, line);
@@ -152,7 +152,7 @@ TEST(AnsysFields, RealsInFortranForms) {
 }
 
 TEST(AnsysFields, RealsWrittenAsMapdlDoes) {
-  const BlockFormat wide{3, 9, 6, 21, 13, 3}, narrow{3, 8, 6, 20, 13, 2};
+  const BlockFormat wide{3, 9, 6, 21, 13, 3, 0}, narrow{3, 8, 6, 20, 13, 2, 0};
   std::string out;
   ASSERT_TRUE(ansys::format_real(-0.5, wide, out));
   EXPECT_EQ(out, "-5.0000000000000E-001");
@@ -300,6 +300,23 @@ TEST(AnsysRead, ComponentsAndLoadsPin) {
   ASSERT_EQ(m.extras.read_notes.size(), 1u);
   EXPECT_NE(m.extras.read_notes[0].find("the file's D commands name nodes through APDL's selection"), std::string::npos)
       << m.extras.read_notes[0];
+}
+
+TEST(AnsysRead, LoadRangesAndRecentReleasesForms) {
+  const TetMesh grid = testing::cube_grid(3, 0.1);
+  // D from node 22 to 42 in steps of 4: 22, 26, 30 (boundary), 34, 38, 42;
+  // M from 23 to 27 in steps of 4: 23, 27.
+  const TetMesh m = read_text(deck(grid, "ET,1,285\n", tet_records(grid), "D,22,UX,0,,42,4\nM,23,UX,27,4\n"));
+  for (std::size_t node : {21u, 22u, 25u, 26u, 37u, 41u}) EXPECT_TRUE(pinned(m, node)) << node;
+  EXPECT_FALSE(pinned(m, 38));
+  EXPECT_FALSE(pinned(m, 42));
+  // An NBLOCK closed by "N,UNBL,LOC,-1" and the types in an ETBLOCK.
+  const std::string etblock = "ETBLOCK,        1,        1\n(2i9,19a9)\n" + ints({1, 285, 0, 0}, 9) + "\n       -1\n";
+  const std::string recent =
+      replaced(deck(grid, etblock, tet_records(grid)), "N,R5.3,LOC,       -1,", "N,UNBL,LOC,       -1,");
+  EXPECT_EQ(read_text(recent).tets, grid.tets);
+  EXPECT_NE(read_error(replaced(recent, "(2i9,19a9)", "(1i9,19a9)")).find("t.cdb:3: ETBLOCK's format must start"),
+            std::string::npos);
 }
 
 TEST(AnsysRead, ElementComponentsSplitAndNameRegions) {

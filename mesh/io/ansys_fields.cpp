@@ -31,13 +31,18 @@ bool take_item(std::string_view& s, BlockFormat& f) {
   int width = 0;
   if (!take_count(s, width) || width == 0) return false;
   if (kind == 'i') {
-    if (f.ints != 0 || f.reals != 0) return false;  // integers once, before any real
+    if (f.ints != 0 || f.reals != 0 || f.texts != 0) return false;  // integers once, first
     f.ints = count;
     f.int_width = width;
     return true;
   }
+  if (kind == 'a') {  // text fields after the integers (ETBLOCK's KEYOPTs)
+    if (f.ints == 0 || f.reals != 0 || f.texts != 0) return false;
+    f.texts = count;
+    return true;
+  }
   if (kind != 'e' && kind != 'd' && kind != 'g') return false;
-  if (f.reals != 0 || s.empty() || s.front() != '.') return false;
+  if (f.reals != 0 || f.texts != 0 || s.empty() || s.front() != '.') return false;
   s.remove_prefix(1);
   if (!take_count(s, f.decimals)) return false;
   f.exponent_digits = 2;

@@ -11,10 +11,12 @@ namespace tetsmooth::ansys {
 // "(3i9,6e21.13e3)": `ints` integer fields of `int_width` characters, then
 // `reals` real fields of `real_width` with `decimals` digits after the
 // point and an exponent of `exponent_digits` (2 unless the format says
-// "e3"); "(19i9)" and "(8i10)" have integers alone.
+// "e3"); "(19i9)" and "(8i10)" have integers alone; "(2i9,19a9)" has
+// `texts` text fields after them.
 struct BlockFormat {
   int ints = 0, int_width = 0;
   int reals = 0, real_width = 0, decimals = 0, exponent_digits = 2;
+  int texts = 0;
 };
 
 // The format of a block's second line, or nullopt when the line is not one

@@ -13,7 +13,8 @@
 //    other integers, the solid model's entity and place, are kept as read),
 //    then X, Y, Z and the rotation angles THXY, THYZ, THZX; values left off
 //    the end of a line, or blank, are 0. The block ends at "N,R5.3,LOC,-1"
-//    or at a record whose number is -1.
+//    (or "N,UNBL,LOC,-1", as recent releases write it) or at a record whose
+//    number is -1.
 //  * EBLOCK,NUM_NODES,SOLID,NDMAX,NDSEL then "(19i9)": an element a record,
 //    its fields MAT, TYPE, REAL, SECNUM, ESYS, birth/death, solid model
 //    reference, shape, node count, exclude key, element number, then the
@@ -23,17 +24,21 @@
 //    ends at a record of -1.
 //  * CMBLOCK,NAME,NODE|ELEM,count then "(8i10)": a component's items, a
 //    negative number -n meaning the range from the number before it to n.
+//  * ETBLOCK,count,NMAX then "(2i9,19a9)": element types as recent
+//    releases write them, ITYPE and the element's number a record (then
+//    its KEYOPTs, not read), up to a record of -1.
 //
 // Reading:
 //  * Element types come from ET,ITYPE,ENAME (a number, 187, or a name,
-//    SOLID187). Elements of 3-D solid types (ansys_element_types.hpp) with
+//    SOLID187) and ETBLOCK. Elements of 3-D solid types (ansys_element_types.hpp) with
 //    the nodes of a tet are the tets: 4 nodes (SOLID285, or a 187 without
 //    midside nodes), 10 (SOLID187, 92, ...: corners I, J, K, L then the
 //    midside nodes of IJ, JK, KI, IL, JL, KL, as kTetEdges), a brick's 8 as
 //    I,J,K,K,M,M,M,M (SOLID185's degenerate tet) or its 20 likewise
-//    (SOLID186). Solids of brick, wedge and pyramid shape pass through as
-//    hexahedra, wedges and pyramids (tag = MAT); every other element pins
-//    its nodes and stays in the file alone.
+//    (SOLID186). 8-node solids of brick, wedge and pyramid shape pass
+//    through as hexahedra, wedges and pyramids (tag = MAT); every other
+//    element (20-node bricks among them) pins its nodes and stays in the
+//    file alone.
 //  * Numbers: node and element numbers are kept (FileExtras::node_tags,
 //    tet_element_tags). The region of a tet is its MAT; element components
 //    of tets split regions further (RegionSplitter), and then the regions
@@ -41,8 +46,8 @@
 //    region's tets names it ($PhysicalNames).
 //  * Pins: the nodes of every node component (the named selections that
 //    loads and supports are put on), of elements other than tets, and the
-//    nodes that D, F, BF, IC and M name by number, and CP and CE list
-//    (their NODE fields). Commands that name nodes through the selection
+//    nodes that D, F, BF, IC and M name by number (with the ranges NEND,
+//    NINC of D, F, IC and M), and CP and CE list (their NODE fields). Commands that name nodes through the selection
 //    (ALL, P) are noted: tetsmooth does not follow APDL's selection.
 //  * Refused with the file's line: commands that define, move or delete
 //    nodes or elements outside the blocks (N, E, EN, NGEN, NMODIF, VMESH,

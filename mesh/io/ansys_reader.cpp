@@ -112,6 +112,7 @@ BlockFormat FileReader::block_format(const char* block) {
 
 void FileReader::nblock() {
   const BlockFormat f = block_format("NBLOCK");
+  if (f.texts != 0) fail("NBLOCK's format must hold integers and reals alone, such as (3i9,6e21.13e3)");
   if (f.reals < 3) fail("NBLOCK's format gives " + std::to_string(f.reals) + " real fields: X, Y and Z need 3");
   const std::size_t iw = static_cast<std::size_t>(f.int_width), rw = static_cast<std::size_t>(f.real_width);
   const std::size_t ints_end = static_cast<std::size_t>(f.ints) * iw;
@@ -152,7 +153,7 @@ void FileReader::nblock() {
 
 void FileReader::eblock(bool solid, long long nodes_per_record) {
   const BlockFormat f = block_format("EBLOCK");
-  if (f.reals != 0) fail("EBLOCK's format must hold integers alone, such as (19i9)");
+  if (f.reals != 0 || f.texts != 0) fail("EBLOCK's format must hold integers alone, such as (19i9)");
   const std::size_t per_line = static_cast<std::size_t>(f.ints);
   const std::size_t header = solid ? 11 : 5;
   if (per_line <= header) fail("EBLOCK's format holds " + std::to_string(per_line) + " fields a line: too few");
@@ -227,7 +228,7 @@ void FileReader::cmblock(const std::vector<std::string_view>& fields) {
   if (!parse_integer(field(fields, 3), count) || count < 0)
     fail("CMBLOCK " + quoted_token(c.name) + " needs its count of items, not " + quoted_token(field(fields, 3)));
   const BlockFormat f = block_format("CMBLOCK");
-  if (f.reals != 0) fail("CMBLOCK's format must hold integers alone, such as (8i10)");
+  if (f.reals != 0 || f.texts != 0) fail("CMBLOCK's format must hold integers alone, such as (8i10)");
   long long taken = 0;
   while (taken < count) {
     if (!next_line())
@@ -280,7 +281,7 @@ void FileReader::pin_fields(const std::vector<std::string_view>& fields, std::in
     long long number = 0;
     if (text.empty()) continue;
     if (parse_integer(text, number)) {
-      if (number > 0) pinned_.emplace_back(number, line_no_);
+      if (number > 0) pinned_.push_back({number, number, 1, line_no_});
       continue;
     }
     const std::string word = upper_case(text);
@@ -290,14 +291,43 @@ void FileReader::pin_fields(const std::vector<std::string_view>& fields, std::in
   }
 }
 
+void FileReader::pin_range(const std::vector<std::string_view>& fields, std::size_t node, std::size_t end,
+                           const std::string& name) {
+  const std::size_t first = pinned_.size();
+  pin_fields(fields, {node}, name);
+  long long last = 0, step = 1;
+  if (pinned_.size() == first || !parse_integer(field(fields, end), last)) return;  // one node, or none
+  if (!parse_integer(field(fields, end + 1), step) || step == 0) step = 1;
+  PinnedRange& range = pinned_.back();
+  if (last > range.first) {
+    range.last = last;
+    range.step = step < 0 ? -step : step;
+  }
+}
+
+void FileReader::etblock() {
+  const BlockFormat f = block_format("ETBLOCK");
+  if (f.ints < 2) fail("ETBLOCK's format must start with two integers, such as (2i9,19a9)");
+  while (true) {
+    if (!next_line()) fail("the file ends inside an ETBLOCK, before its closing -1 record");
+    keep(false);
+    const std::string_view first = trimmed(line_);
+    if (first.empty()) fail("a blank line inside an ETBLOCK (each record is an element type)");
+    if (first == "-1" || int_field(line_, f, 0, "an element type number") == -1) return;
+    const std::string itype = std::to_string(int_field(line_, f, 0, "an element type number"));
+    const std::string number = std::to_string(int_field(line_, f, 1, "an element number"));
+    element_type({"ET", itype, number});
+  }
+}
+
 void FileReader::command(const std::vector<std::string_view>& fields) {
   const std::string name = upper_case(field(fields, 0));
   if (name.empty()) return;
   const std::string second = upper_case(field(fields, 1));
   // CDWRITE's marks ("N,R5.3,LOC,-1" closing an NBLOCK, "EN,R5.5,ATTR,-1")
   // and its block forms of other commands carry a release as field 2.
-  const bool release_form =
-      second.size() > 2 && second[0] == 'R' && std::isdigit(static_cast<unsigned char>(second[1]));
+  const bool release_form = second == "UNBL" || (second.size() > 2 && second[0] == 'R' &&
+                                                 std::isdigit(static_cast<unsigned char>(second[1])));
   if (name == "NBLOCK") return nblock();
   if (name == "EBLOCK") {
     long long nodes = 0;
@@ -307,6 +337,7 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
   }
   if (name == "CMBLOCK") return cmblock(fields);
   if (name == "ET") return element_type(fields);
+  if (name == "ETBLOCK") return etblock();
   if ((name == "N" || name == "EN") && release_form) return;
   if (changes_mesh(name))
     fail("the " + name + " command " +
@@ -318,7 +349,11 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
   add_once(commands_, text_excerpt(name));
   if (release_form && (name == "D" || name == "F" || name == "CP" || name == "CE" || name == "BF" || name == "IC")) {
     add_once(cdwrite_forms_, name);
-  } else if (name == "D" || name == "F" || name == "BF" || name == "IC" || name == "M") {
+  } else if (name == "D" || name == "F" || name == "IC") {
+    pin_range(fields, 1, 5, name);  // NODE, Lab, VALUE, VALUE2, NEND, NINC
+  } else if (name == "M") {
+    pin_range(fields, 1, 3, name);  // NODE, Lab1, NEND, NINC
+  } else if (name == "BF") {
     pin_fields(fields, {1}, name);
   } else if (name == "CP") {
     pin_fields(fields, {3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19}, name);

@@ -57,6 +57,11 @@ class FileReader {
   void element_type(const std::vector<std::string_view>& fields);
   void pin_fields(const std::vector<std::string_view>& fields, std::initializer_list<std::size_t> places,
                   const std::string& name);
+  // A command's node (field `node`) and, where it gives them, the range's
+  // end and step (fields `end` and `end + 1`: D, F and IC's NEND, NINC).
+  void pin_range(const std::vector<std::string_view>& fields, std::size_t node, std::size_t end,
+                 const std::string& name);
+  void etblock();
   BlockFormat block_format(const char* block);
   void nblock();
   void eblock(bool solid, long long nodes_per_record);
@@ -90,11 +95,17 @@ class FileReader {
   std::vector<long long> element_nodes_;
   std::vector<Component> components_;
   std::map<long long, ElementType> types_;
-  std::vector<std::pair<long long, std::size_t>> pinned_;  // node numbers that commands name, and the line
-  std::vector<std::string> commands_;                      // other command names, once each
-  std::vector<std::string> uncarried_;                     // element types that only pin
-  std::vector<std::string> by_selection_;                  // commands that named nodes through the selection
-  std::vector<std::string> cdwrite_forms_;                 // commands in a form whose nodes are not read
+  // Node numbers that commands name: first, first + step, ... up to last
+  // (a single node is the range (n, n, 1)), and the command's line.
+  struct PinnedRange {
+    long long first, last, step;
+    std::size_t line;
+  };
+  std::vector<PinnedRange> pinned_;
+  std::vector<std::string> commands_;       // other command names, once each
+  std::vector<std::string> uncarried_;      // element types that only pin
+  std::vector<std::string> by_selection_;   // commands that named nodes through the selection
+  std::vector<std::string> cdwrite_forms_;  // commands in a form whose nodes are not read
   // Tets as elements_ places, and each element's tet (or -1).
   std::vector<std::size_t> tet_elements_;
   std::vector<long long> tet_of_element_;

@@ -169,10 +169,13 @@ void FileReader::resolve_pins(const IdIndex& nodes) {
     }
     for (std::size_t p : places) fixed[p] = 1;
   }
-  for (const auto& [number, line] : pinned_) {
-    const long long n = nodes.find(number);
-    if (n < 0) fail_at(line, "node " + std::to_string(number) + " is named here, and no NBLOCK defines it");
-    fixed[static_cast<std::size_t>(n)] = 1;
+  std::vector<std::size_t> places;
+  for (const PinnedRange& range : pinned_) {
+    if (nodes.find(range.first) < 0)
+      fail_at(range.line, "node " + std::to_string(range.first) + " is named here, and no NBLOCK defines it");
+    places.clear();
+    nodes.append_range(range.first, range.last, range.step, places);
+    for (std::size_t p : places) fixed[p] = 1;
   }
 }
 

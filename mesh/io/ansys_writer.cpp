@@ -24,9 +24,9 @@ using ansys::BlockFormat;
 // them apart for readers that split on blanks.
 constexpr long long kLargestNumber = 99999999;
 // What MAPDL's CDWRITE writes.
-constexpr BlockFormat kNodeFormat{3, 9, 6, 21, 13, 3};
-constexpr BlockFormat kElementFormat{19, 9, 0, 0, 0, 2};
-constexpr BlockFormat kComponentFormat{8, 10, 0, 0, 0, 2};
+constexpr BlockFormat kNodeFormat{3, 9, 6, 21, 13, 3, 0};
+constexpr BlockFormat kElementFormat{19, 9, 0, 0, 0, 2, 0};
+constexpr BlockFormat kComponentFormat{8, 10, 0, 0, 0, 2, 0};
 const char* const kPinnedComponent = "TETSMOOTH_PINNED";
 
 // --- A file read with the mesh ---------------------------------------------

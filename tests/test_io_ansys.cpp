@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <climits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -319,6 +320,24 @@ TEST(AnsysRead, LoadRangesAndRecentReleasesForms) {
             std::string::npos);
 }
 
+TEST(AnsysRead, ParametersAndConstraintsWorkbenchWrites) {
+  const TetMesh grid = testing::cube_grid(3, 0.1);
+  // Workbench names its element types by parameter; loads may give a node
+  // as a whole real; CERIG names a master and a slave; a component that no
+  // CMBLOCK defines (made by selection) is noted.
+  const std::string types = "*SET,tid,1\ncid = 1\nET,tid,285\nET,cid,285\n";
+  const TetMesh m = read_text(deck(grid, types, tet_records(grid), "D,22.0,UX,0\nCERIG,23,26,ALL\nD,FIXED,ALL\n"));
+  for (std::size_t node : {21u, 22u, 25u}) EXPECT_TRUE(pinned(m, node)) << node;
+  EXPECT_FALSE(pinned(m, 26));
+  ASSERT_EQ(m.extras.read_notes.size(), 1u);
+  EXPECT_NE(m.extras.read_notes[0].find("no node CMBLOCK defines (D FIXED)"), std::string::npos)
+      << m.extras.read_notes[0];
+  // A parameter set again to a word no longer names a number.
+  EXPECT_NE(read_error(deck(grid, types + "*SET,tid,'x'\nET,tid,285\n", tet_records(grid)))
+                .find("ET needs a positive element type number, not 'tid'"),
+            std::string::npos);
+}
+
 TEST(AnsysRead, ElementComponentsSplitAndNameRegions) {
   const TetMesh cube = testing::cube_with_centre(0.4, 0.5, 0.6);
   // Tets 1-12 all MAT 1; the component ROCK holds 1-6, and FILL holds 7-12.
@@ -435,6 +454,11 @@ TEST(AnsysRead, ErrorsNameFileAndLine) {
        "t.cdb:30: component 'TOP' lists node 44"},
       {replaced(good, "FINISH\n", "D,77,UX,0\n"), "t.cdb:30: node 77 is named here, and no NBLOCK defines it"},
       {replaced(good, "ET,1,285\n", "ET,1,285\nET,1,187\n"), "t.cdb:3: element type 1 is defined again"},
+      {replaced(good, "       -1\n", "       -1\n" + ints({1, 1, 1, 1, 0, 0, 0, 0, 4, 0, 13, 1, 2, 3, 4}, 9) + "\n"),
+       "t.cdb:30: a record after the closing -1 of the block above (line 29)"},
+      {replaced(good, "FINISH\n", "NUMOFF,NODE,100\nFINISH\n"), "t.cdb:30: NUMOFF after an NBLOCK"},
+      {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,2\n(8i20)\n" + ints({1, LLONG_MIN}, 20) + "\n"),
+       "t.cdb:32: CMBLOCK 'C' lists -9223372036854775808"},
   };
   for (const Case& c : cases) {
     EXPECT_NE(read_error(c.text).find(c.expected), std::string::npos) << read_error(c.text);

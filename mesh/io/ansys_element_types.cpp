@@ -12,13 +12,15 @@ namespace {
 constexpr int kTets[] = {72, 87, 92, 98, 123, 127, 168, 187, 227, 232, 237, 285};
 constexpr int kBricks[] = {5, 45, 65, 69, 70, 90, 95, 96, 97, 117, 122, 164, 185, 186, 226, 231, 236, 278, 279};
 
-// Commands that make, move or delete nodes or elements, or read another
+// Commands that make, move, reorder or delete nodes or elements (solid
+// model commands among them, which carry a mesh along), or read another
 // file into the model.
 constexpr std::string_view kMeshCommands[] = {
-    "N",     "E",        "EN",      "EMORE",   "EGEN",   "ENGEN", "NGEN",   "NMODIF", "EMODIF", "NDELE",
-    "EDELE", "NSYM",     "ESYM",    "NSCALE",  "NFILL",  "FILL",  "NKPT",   "MOVE",   "NUMMRG", "NUMCMP",
-    "VMESH", "AMESH",    "LMESH",   "KMESH",   "VSWEEP", "ESURF", "EINTF",  "CDREAD", "/INPUT", "EREAD",
-    "NREAD", "EEXTRUDE", "NREFINE", "EREFINE", "VEXT",   "VDRAG", "VROTAT", "ACLEAR", "VCLEAR"};
+    "N",       "E",     "EN",     "EMORE",  "EGEN",   "ENGEN",  "NGEN",   "NMODIF", "EMODIF", "NDELE",    "EDELE",
+    "NSYM",    "ESYM",  "NSCALE", "NFILL",  "FILL",   "NKPT",   "MOVE",   "NUMMRG", "NUMCMP", "VMESH",    "AMESH",
+    "LMESH",   "KMESH", "VSWEEP", "ESURF",  "EINTF",  "CDREAD", "/INPUT", "EREAD",  "NREAD",  "EEXTRUDE", "NREFINE",
+    "EREFINE", "VEXT",  "VDRAG",  "VROTAT", "ACLEAR", "VCLEAR", "KCLEAR", "LCLEAR", "UPGEOM", "MORPH",    "EMID",
+    "EORIENT", "ENSYM", "VTRAN",  "VGEN",   "VSYMM",  "CZMESH", "*USE"};
 
 bool listed(const int* first, const int* last, int n) { return std::find(first, last, n) != last; }
 

@@ -1,5 +1,6 @@
 #include "mesh/io/ansys_fields.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -101,7 +102,10 @@ bool real_field(std::string_view field, double& value) {
 
 bool format_real(double value, const BlockFormat& format, std::string& out) {
   char buf[64];
-  const int decimals = format.decimals > 30 ? 30 : format.decimals;
+  // A field narrower than its decimals need (a sign, a digit, the point,
+  // the exponent) gets as many as fit.
+  int decimals = std::min(format.decimals, format.real_width - 5 - format.exponent_digits);
+  decimals = std::max(0, std::min(decimals, 30));
   std::snprintf(buf, sizeof buf, "%.*E", decimals, value);
   // buf: [-]d.dddE±xx(x); rewrite the exponent with the format's digits.
   std::string text(buf);

@@ -37,7 +37,8 @@ bool integer_field(std::string_view field, long long& value);
 bool real_field(std::string_view field, double& value);
 
 // `value` as Fortran's 1PE writes it in a field of the format's real width
-// and decimals ("-5.0000000000000E-01", right-aligned), into `out`; values
+// and decimals ("-5.0000000000000E-01", right-aligned; fewer decimals where
+// the width has no room for them), into `out`; values
 // whose exponent needs more digits than the format has are written as 0
 // when smaller than 1e-99 (a rounding residue) and refused (false) when
 // larger. The decimal digits are correctly rounded from the double.

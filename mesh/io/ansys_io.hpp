@@ -30,7 +30,9 @@
 //
 // Reading:
 //  * Element types come from ET,ITYPE,ENAME (a number, 187, or a name,
-//    SOLID187) and ETBLOCK. Elements of 3-D solid types (ansys_element_types.hpp) with
+//    SOLID187) and ETBLOCK. ITYPE and node numbers may be whole reals
+//    ("7.0") or scalar parameters that *SET,NAME,VALUE or NAME=VALUE give
+//    (Workbench's "*SET,cid,3" then "ET,cid,174"). Elements of 3-D solid types (ansys_element_types.hpp) with
 //    the nodes of a tet are the tets: 4 nodes (SOLID285, or a 187 without
 //    midside nodes), 10 (SOLID187, 92, ...: corners I, J, K, L then the
 //    midside nodes of IJ, JK, KI, IL, JL, KL, as kTetEdges), a brick's 8 as
@@ -47,11 +49,22 @@
 //  * Pins: the nodes of every node component (the named selections that
 //    loads and supports are put on), of elements other than tets, and the
 //    nodes that D, F, BF, IC and M name by number (with the ranges NEND,
-//    NINC of D, F, IC and M), and CP and CE list (their NODE fields). Commands that name nodes through the selection
+//    NINC of D, F, IC and M), CP and CE list (their NODE fields), CERIG
+//    names (master and slave), RBE3 names (master, and the component of
+//    its slaves) and CPNGEN spans. Words where a node goes that no node
+//    CMBLOCK defines (a component made by selection with CM, a parameter
+//    tetsmooth cannot evaluate) are noted, as are ALL and P and CPINTF and
+//    CEINTF: tetsmooth does not follow APDL's selection. Commands that name nodes through the selection
 //    (ALL, P) are noted: tetsmooth does not follow APDL's selection.
-//  * Refused with the file's line: commands that define, move or delete
-//    nodes or elements outside the blocks (N, E, EN, NGEN, NMODIF, VMESH,
-//    ..., ansys_element_types.cpp), /INPUT and CDREAD of other files,
+//  * Lines that cannot be command names (a number first: the data lines of
+//    blocks tetsmooth does not read, RLBLOCK's or SFE's) are kept and not
+//    read, but for one right after a block's closing -1 (a -1 among the
+//    records would end the block early): that is refused.
+//  * Refused with the file's line: commands that define, move, reorder or
+//    delete nodes or elements outside the blocks (N, E, EN, NGEN, NMODIF,
+//    VMESH, EORIENT, ..., ansys_element_types.cpp), NUMOFF after an NBLOCK,
+//    /INPUT, *USE and CDREAD of other files, an element of more than 200
+//    nodes,
 //    NBLOCK and EBLOCK records that break their format, nodes or elements
 //    numbered twice, nodes that no NBLOCK defines, element types that no ET
 //    defines, and 4- and 10-node tets mixed.

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
+#include <cmath>
 #include <fstream>
 
 #include "mesh/errors.hpp"
@@ -47,6 +49,13 @@ std::string_view field(const std::vector<std::string_view>& fields, std::size_t 
 
 void add_once(std::vector<std::string>& list, const std::string& item) {
   if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
+}
+
+// Whether a line's first field can be an APDL command name: the data lines
+// of blocks tetsmooth does not read (SFE's values, RLBLOCK, ...) are not.
+bool command_like(std::string_view name) {
+  return !name.empty() &&
+         (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '/' || name[0] == '*' || name[0] == '_');
 }
 
 // The end of a record's data: its length without trailing blanks.
@@ -131,11 +140,13 @@ void FileReader::nblock() {
     const long long number = first == "-1" ? -1 : int_field(line_, f, 0, "a node number");
     if (number == -1) {
       keep(false);
+      block_closed_ = line_no_;
       return;
     }
     keep(true);
     if (number <= 0) fail("node number " + std::to_string(number) + ": node numbers are positive");
-    for (std::size_t k = 1; k < static_cast<std::size_t>(f.ints); ++k) int_field(line_, f, k, "a whole number");
+    for (std::size_t k = 1; k < static_cast<std::size_t>(f.ints) && k * iw < data_length(line_); ++k)
+      int_field(line_, f, k, "a whole number");
     if (data_length(line_) > ints_end + static_cast<std::size_t>(f.reals) * rw)
       fail("the NBLOCK record is longer than its format (values past its last field)");
     for (std::size_t c = 0; c < static_cast<std::size_t>(f.reals); ++c) {
@@ -170,7 +181,10 @@ void FileReader::eblock(bool solid, long long nodes_per_record) {
     if (trimmed(line_).empty()) fail("a blank line inside an EBLOCK (each record is an element)");
     const long long lead =
         trimmed(line_) == "-1" ? -1 : int_field(line_, f, 0, solid ? "a material number" : "an element number");
-    if (lead == -1) return;
+    if (lead == -1) {
+      block_closed_ = line_no_;
+      return;
+    }
     check_length();
     Element e;
     e.solid = solid;
@@ -186,7 +200,8 @@ void FileReader::eblock(bool solid, long long nodes_per_record) {
       e.type = int_field(line_, f, 1, "an element type");
       count = int_field(line_, f, 8, "a node count");
       e.number = int_field(line_, f, 10, "an element number");
-      if (count <= 0 || count > 200) fail("an element of " + std::to_string(count) + " nodes");
+      if (count <= 0 || count > static_cast<long long>(kMostNodes))
+        fail("an element of " + std::to_string(count) + " nodes (at most " + std::to_string(kMostNodes) + " are read)");
       for (std::size_t k = 2; k < header; ++k) int_field(line_, f, k, "a whole number");
       std::size_t k = header;
       for (long long taken = 0; taken < count; ++taken, ++k) {
@@ -206,6 +221,9 @@ void FileReader::eblock(bool solid, long long nodes_per_record) {
       // The record's nodes run to its last field; a blank one is none.
       const std::size_t fields =
           (data_length(line_) + static_cast<std::size_t>(f.int_width) - 1) / static_cast<std::size_t>(f.int_width);
+      if (fields > header + kMostNodes)
+        fail("an element of " + std::to_string(fields - header) + " nodes (at most " + std::to_string(kMostNodes) +
+             " are read)");
       for (std::size_t k = header; k < fields; ++k) element_nodes_.push_back(int_field(line_, f, k, "a node number"));
       count = static_cast<long long>(element_nodes_.size() - e.first);
     }
@@ -245,8 +263,8 @@ void FileReader::cmblock(const std::vector<std::string_view>& fields) {
       const long long v = int_field(line_, f, k, "an item number");
       if (v > 0) {
         c.ranges.emplace_back(v, v);
-      } else if (v < 0 && !c.ranges.empty() && c.ranges.back().first == c.ranges.back().second &&
-                 -v >= c.ranges.back().first) {
+      } else if (v < 0 && !c.ranges.empty() && c.ranges.back().first == c.ranges.back().second && v > LLONG_MIN &&
+                 v <= -c.ranges.back().first) {
         c.ranges.back().second = -v;  // the range from the number before to -v
       } else {
         fail("CMBLOCK " + quoted_token(c.name) + " lists " + std::to_string(v) +
@@ -262,7 +280,7 @@ void FileReader::cmblock(const std::vector<std::string_view>& fields) {
 
 void FileReader::element_type(const std::vector<std::string_view>& fields) {
   long long itype = 0;
-  if (!parse_integer(field(fields, 1), itype) || itype <= 0)
+  if (!number_of(field(fields, 1), itype) || itype <= 0)
     fail("ET needs a positive element type number, not " + quoted_token(field(fields, 1)));
   ElementType t;
   t.name = upper_case(field(fields, 2));
@@ -280,14 +298,15 @@ void FileReader::pin_fields(const std::vector<std::string_view>& fields, std::in
     const std::string_view text = field(fields, k);
     long long number = 0;
     if (text.empty()) continue;
-    if (parse_integer(text, number)) {
+    if (number_of(text, number)) {
       if (number > 0) pinned_.push_back({number, number, 1, line_no_});
       continue;
     }
     const std::string word = upper_case(text);
-    if (word == "ALL" || word == "P" || word == "P51X") add_once(by_selection_, name);
-    // Any other word names a component: its nodes are pinned as every node
-    // component's are.
+    if (word == "ALL" || word == "P" || word == "P51X")
+      add_once(by_selection_, name);
+    else  // a component: its nodes are pinned as every node component's are, where a CMBLOCK defines it
+      named_components_.emplace_back(word, name);
   }
 }
 
@@ -296,8 +315,8 @@ void FileReader::pin_range(const std::vector<std::string_view>& fields, std::siz
   const std::size_t first = pinned_.size();
   pin_fields(fields, {node}, name);
   long long last = 0, step = 1;
-  if (pinned_.size() == first || !parse_integer(field(fields, end), last)) return;  // one node, or none
-  if (!parse_integer(field(fields, end + 1), step) || step == 0) step = 1;
+  if (pinned_.size() == first || !number_of(field(fields, end), last)) return;  // one node, or none
+  if (!number_of(field(fields, end + 1), step) || step == 0 || step == LLONG_MIN) step = 1;
   PinnedRange& range = pinned_.back();
   if (last > range.first) {
     range.last = last;
@@ -313,16 +332,59 @@ void FileReader::etblock() {
     keep(false);
     const std::string_view first = trimmed(line_);
     if (first.empty()) fail("a blank line inside an ETBLOCK (each record is an element type)");
-    if (first == "-1" || int_field(line_, f, 0, "an element type number") == -1) return;
+    if (first == "-1" || int_field(line_, f, 0, "an element type number") == -1) {
+      block_closed_ = line_no_;
+      return;
+    }
     const std::string itype = std::to_string(int_field(line_, f, 0, "an element type number"));
     const std::string number = std::to_string(int_field(line_, f, 1, "an element number"));
     element_type({"ET", itype, number});
   }
 }
 
+bool FileReader::number_of(std::string_view text, long long& value) const {
+  if (parse_integer(text, value)) return true;
+  double real = 0;
+  // A whole real ("7.0"), as APDL takes a node number.
+  if (parse_real(text, real) && std::isfinite(real) && real == std::floor(real) && std::fabs(real) < 9e15) {
+    value = static_cast<long long>(real);
+    return true;
+  }
+  const auto it = parameters_.find(upper_case(text));
+  if (it == parameters_.end()) return false;
+  value = it->second;
+  return true;
+}
+
+void FileReader::parameter(std::string_view name, std::string_view value) {
+  long long number = 0;
+  const std::string key = upper_case(trimmed(name));
+  if (number_of(trimmed(value), number))
+    parameters_[key] = number;
+  else
+    parameters_.erase(key);  // no longer a number tetsmooth knows
+}
+
 void FileReader::command(const std::vector<std::string_view>& fields) {
   const std::string name = upper_case(field(fields, 0));
   if (name.empty()) return;
+  // Scalar parameters, which element types and loads may name ("*SET,cid,2"
+  // or "cid=2", as Workbench writes its contact types).
+  if (const std::size_t equals = name.find('='); equals != std::string::npos) {
+    std::string_view value = trimmed(fields[0]);
+    value.remove_prefix(value.find('=') + 1);
+    return parameter(std::string_view(name).substr(0, equals), value);
+  }
+  if (name == "*SET" || name == "*SE") return parameter(field(fields, 1), field(fields, 2));
+  if (!command_like(name)) {
+    // The data lines of blocks tetsmooth does not read (RLBLOCK, SFE's
+    // values, ...) are kept as they are; right after a block's -1, though,
+    // a record means that the block ended early.
+    if (block_closed_ + 1 == line_no_)
+      fail("a record after the closing -1 of the block above (line " + std::to_string(block_closed_) +
+           "): is a -1 among its records?");
+    return;
+  }
   const std::string second = upper_case(field(fields, 1));
   // CDWRITE's marks ("N,R5.3,LOC,-1" closing an NBLOCK, "EN,R5.5,ATTR,-1")
   // and its block forms of other commands carry a release as field 2.
@@ -339,14 +401,18 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
   if (name == "ET") return element_type(fields);
   if (name == "ETBLOCK") return etblock();
   if ((name == "N" || name == "EN") && release_form) return;
+  if (name == "NUMOFF" && !node_numbers_.empty())
+    fail(
+        "NUMOFF after an NBLOCK renumbers the nodes and elements the file has defined, which tetsmooth does not "
+        "follow");
   if (changes_mesh(name))
     fail("the " + name + " command " +
-         (name == "CDREAD" || name == "/INPUT" || name.substr(0, 4) == "/INP" || name.find("READ") != std::string::npos
+         (name == "CDREAD" || name.substr(0, 4) == "/INP" || name == "*USE" || name.find("READ") != std::string::npos
               ? "reads another file into the model"
               : "makes, moves or deletes nodes or elements") +
          ", which tetsmooth would not see: only NBLOCK and EBLOCK define the mesh it reads (write the model with "
          "CDWRITE)");
-  add_once(commands_, text_excerpt(name));
+  if (seen_commands_.insert(name).second) commands_.push_back(text_excerpt(name));
   if (release_form && (name == "D" || name == "F" || name == "CP" || name == "CE" || name == "BF" || name == "IC")) {
     add_once(cdwrite_forms_, name);
   } else if (name == "D" || name == "F" || name == "IC") {
@@ -359,6 +425,14 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
     pin_fields(fields, {3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19}, name);
   } else if (name == "CE") {
     pin_fields(fields, {3, 6, 9}, name);
+  } else if (name == "CERIG") {
+    pin_fields(fields, {1, 2}, name);  // MASTE, SLAVE
+  } else if (name == "RBE3") {
+    pin_fields(fields, {1, 3}, name);  // Master, and the component of its Slaves
+  } else if (name == "CPNGEN") {
+    pin_range(fields, 3, 4, name);  // NSET, Lab, NODE1, NODE2, NINC
+  } else if (name == "CPINTF" || name == "CEINTF") {
+    add_once(by_selection_, name);
   }
 }
 

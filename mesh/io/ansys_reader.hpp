@@ -5,11 +5,13 @@
 // ansys_resolve.cpp then turns numbers into the mesh, its regions and its
 // pins, since a component or a load may name items before or after the
 // block that defines them.
+#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -18,6 +20,9 @@
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::ansys {
+
+// The most nodes an element record may list (ANSYS's have 20 at most).
+constexpr std::size_t kMostNodes = 200;
 
 class FileReader {
  public:
@@ -62,6 +67,10 @@ class FileReader {
   void pin_range(const std::vector<std::string_view>& fields, std::size_t node, std::size_t end,
                  const std::string& name);
   void etblock();
+  // A text as a whole number: an integer, a whole real, or a parameter
+  // that *SET or NAME=value gave one.
+  bool number_of(std::string_view text, long long& value) const;
+  void parameter(std::string_view name, std::string_view value);
   BlockFormat block_format(const char* block);
   void nblock();
   void eblock(bool solid, long long nodes_per_record);
@@ -73,7 +82,7 @@ class FileReader {
   // ansys_resolve.cpp: numbers into the mesh.
   void resolve();
   void resolve_elements(const IdIndex& nodes);
-  void resolve_regions();
+  void resolve_regions(const IdIndex& elements);
   void resolve_pins(const IdIndex& nodes);
   void keep_notes();
 
@@ -102,13 +111,22 @@ class FileReader {
     std::size_t line;
   };
   std::vector<PinnedRange> pinned_;
-  std::vector<std::string> commands_;       // other command names, once each
+  std::vector<std::string> commands_;  // other command names, once each
+  std::unordered_set<std::string> seen_commands_;
+  std::map<std::string, long long> parameters_;  // scalar parameters with whole values
+  // Words that loads give where a node goes (component names, mostly), and
+  // the command: those that no CMBLOCK defines are noted.
+  std::vector<std::pair<std::string, std::string>> named_components_;
+  std::size_t block_closed_ = 0;            // the line of the last block's closing -1
   std::vector<std::string> uncarried_;      // element types that only pin
   std::vector<std::string> by_selection_;   // commands that named nodes through the selection
   std::vector<std::string> cdwrite_forms_;  // commands in a form whose nodes are not read
   // Tets as elements_ places, and each element's tet (or -1).
   std::vector<std::size_t> tet_elements_;
   std::vector<long long> tet_of_element_;
+  // Each element's MAT where it passes through as a solid, else kNoSolid.
+  static constexpr long long kNoSolid = LLONG_MIN;
+  std::vector<long long> solid_tag_of_element_;
 };
 
 }  // namespace tetsmooth::ansys

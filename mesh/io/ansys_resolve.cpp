@@ -2,7 +2,9 @@
 // regions and its pins, once every line is read.
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
+#include <tuple>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/ansys_element_types.hpp"
@@ -33,6 +35,18 @@ const char* kind_of(Shape shape) {
 // takes (its corners then kTetEdges' midside nodes).
 constexpr MidsidePlaces kInOrder = {4, 5, 6, 7, 8, 9};
 
+// `ranges` (first, last) sorted, those that overlap or touch made one.
+std::vector<std::pair<long long, long long>> merged(std::vector<std::pair<long long, long long>> ranges) {
+  std::sort(ranges.begin(), ranges.end());
+  std::vector<std::pair<long long, long long>> out;
+  for (const auto& r : ranges)
+    if (!out.empty() && r.first - 1 <= out.back().second)
+      out.back().second = std::max(out.back().second, r.second);
+    else
+      out.push_back(r);
+  return out;
+}
+
 // A list for a note: the first `most` items, then how many more.
 std::string listed(const std::vector<std::string>& items, std::size_t most) {
   if (items.size() <= most) return joined(items);
@@ -47,11 +61,14 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
   std::map<const char*, std::size_t> block_of;  // pass-through kind -> its block in e.blocks
   std::vector<std::uint8_t>& fixed = mesh_.fixed;
   int tet_nodes = 0;
+  std::vector<index_t> index;  // an element's nodes, -1 where it lists none
+  std::set<std::string> uncarried;
   tet_of_element_.assign(elements_.size(), -1);
+  solid_tag_of_element_.assign(elements_.size(), kNoSolid);
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const Element& el = elements_[i];
     const long long* listed_nodes = element_nodes_.data() + el.first;
-    index_t index[200];
+    index.assign(el.count, -1);
     for (std::size_t k = 0; k < el.count; ++k) {
       index[k] = -1;
       if (listed_nodes[k] == 0) continue;
@@ -94,10 +111,11 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
       for (int k = 0; k < shape.count; ++k) b.connectivity.push_back(index[shape.places[k]]);
       b.tags.push_back(el.mat);
       b.element_tags.push_back(el.number);
+      solid_tag_of_element_[i] = el.mat;
       continue;
     }
     const std::string& name = type->second.name;
-    if (std::find(uncarried_.begin(), uncarried_.end(), name) == uncarried_.end()) uncarried_.push_back(name);
+    if (uncarried.insert(name).second) uncarried_.push_back(name);
   }
   if (tet_elements_.empty())
     throw InputError(source_,
@@ -105,78 +123,119 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
                      "SOLID187, or a SOLID185/186 with the nodes of a tet)");
 }
 
-void FileReader::resolve_regions() {
+void FileReader::resolve_regions(const IdIndex& elements) {
   FileExtras& e = mesh_.extras;
-  const IdIndex elements([&] {
-    std::vector<long long> numbers;
-    for (const Element& el : elements_) numbers.push_back(el.number);
-    return numbers;
-  }());
-  // Each element component's tets, as tet indices in order, once each.
-  std::vector<std::pair<const Component*, std::vector<std::size_t>>> tet_sets;
+  // Each element component's solids (tets and pass-through solids), as
+  // places in elements_, in order, once each.
+  std::vector<std::pair<const Component*, std::vector<std::size_t>>> solid_sets;
   for (const Component& c : components_) {
     if (c.nodes) continue;
-    std::vector<std::size_t> places, tets;
-    for (const auto& [first, last] : c.ranges) {
+    std::vector<std::size_t> places;
+    for (const auto& [first, last] : merged(c.ranges)) {
       if (first == last && elements.find(first) < 0)
         fail_at(c.line, "component " + quoted_token(c.name) + " lists element " + std::to_string(first) +
                             ", which no EBLOCK defines");
       elements.append_range(first, last, 1, places);
     }
-    for (std::size_t p : places)
-      if (tet_of_element_[p] >= 0) tets.push_back(static_cast<std::size_t>(tet_of_element_[p]));
-    std::sort(tets.begin(), tets.end());
-    tets.erase(std::unique(tets.begin(), tets.end()), tets.end());
-    if (!tets.empty()) tet_sets.emplace_back(&c, std::move(tets));
+    places.erase(
+        std::remove_if(places.begin(), places.end(),
+                       [&](std::size_t p) { return tet_of_element_[p] < 0 && solid_tag_of_element_[p] == kNoSolid; }),
+        places.end());
+    std::sort(places.begin(), places.end());
+    if (!places.empty()) solid_sets.emplace_back(&c, std::move(places));
   }
-  if (tet_sets.empty()) return;
+  if (solid_sets.empty()) return;
   // Regions: the materials, split further where a component holds some of a
   // material's tets and not the others.
   std::map<int, std::vector<std::size_t>> by_mat;
   for (std::size_t t = 0; t < e.tet_tags.size(); ++t) by_mat[e.tet_tags[t]].push_back(t);
   RegionSplitter splitter(e.tet_tags.size());
   for (const auto& [mat, tets] : by_mat) splitter.split(tets);
-  for (const auto& [component, tets] : tet_sets) splitter.split(tets);
+  std::vector<std::size_t> tets;
+  for (const auto& [component, places] : solid_sets) {
+    tets.clear();
+    for (std::size_t p : places)
+      if (tet_of_element_[p] >= 0) tets.push_back(static_cast<std::size_t>(tet_of_element_[p]));
+    splitter.split(tets);
+  }
   const std::vector<int> regions = splitter.tags();
   const int count = regions.empty() ? 0 : *std::max_element(regions.begin(), regions.end());
-  if (static_cast<std::size_t>(count) != by_mat.size()) {
+  // Renumbered tets share no numbers with the other solids' materials, so
+  // a component then names tets alone.
+  const bool renumbered = static_cast<std::size_t>(count) != by_mat.size();
+  if (renumbered) {
     e.tet_tags = regions;
     e.read_notes.push_back("element components divide materials, so the " + std::to_string(count) +
                            " regions they make (the tets that share a material and their components) are numbered "
                            "1, 2, ... in order of their first tets");
   }
+  const auto tag_of = [&](std::size_t p, int& tag) {
+    if (tet_of_element_[p] >= 0) {
+      tag = e.tet_tags[static_cast<std::size_t>(tet_of_element_[p])];
+      return true;
+    }
+    tag = static_cast<int>(solid_tag_of_element_[p]);
+    return !renumbered;
+  };
   std::map<int, std::size_t> region_size;
-  for (int tag : e.tet_tags) ++region_size[tag];
+  for (std::size_t p = 0; p < elements_.size(); ++p)
+    if (int tag = 0; (tet_of_element_[p] >= 0 || solid_tag_of_element_[p] != kNoSolid) && tag_of(p, tag))
+      ++region_size[tag];
   RegionNames names;
-  for (const auto& [component, tets] : tet_sets) {
-    const int tag = e.tet_tags[tets.front()];
-    const bool one = std::all_of(tets.begin(), tets.end(), [&](std::size_t t) { return e.tet_tags[t] == tag; });
-    if (one && region_size[tag] == tets.size()) names.add(3, tag, component->name);
+  for (const auto& [component, places] : solid_sets) {
+    std::optional<int> one;
+    std::size_t members = 0;
+    bool alone = true;
+    for (std::size_t p : places)
+      if (int tag = 0; tag_of(p, tag)) {
+        alone = alone && (!one || *one == tag);
+        one = tag;
+        ++members;
+      }
+    if (one && alone && region_size[*one] == members) names.add(3, *one, component->name);
   }
   if (!names.empty()) e.raw_sections.emplace_back("$PhysicalNames", names.msh_body());
 }
 
 void FileReader::resolve_pins(const IdIndex& nodes) {
   std::vector<std::uint8_t>& fixed = mesh_.fixed;
+  // Node components and single-step loads as one set of ranges, merged, so
+  // that a node is marked once however many of them repeat it.
+  std::vector<std::pair<long long, long long>> ranges;
+  std::set<std::string> node_components;
   for (const Component& c : components_) {
     if (!c.nodes) continue;
-    std::vector<std::size_t> places;
+    node_components.insert(upper_case(c.name));
     for (const auto& [first, last] : c.ranges) {
       if (first == last && nodes.find(first) < 0)
         fail_at(c.line, "component " + quoted_token(c.name) + " lists node " + std::to_string(first) +
                             ", which no NBLOCK defines");
-      nodes.append_range(first, last, 1, places);
+      ranges.emplace_back(first, last);
     }
-    for (std::size_t p : places) fixed[p] = 1;
   }
-  std::vector<std::size_t> places;
+  std::set<std::tuple<long long, long long, long long>> stepped;
   for (const PinnedRange& range : pinned_) {
     if (nodes.find(range.first) < 0)
       fail_at(range.line, "node " + std::to_string(range.first) + " is named here, and no NBLOCK defines it");
-    places.clear();
-    nodes.append_range(range.first, range.last, range.step, places);
-    for (std::size_t p : places) fixed[p] = 1;
+    if (range.step == 1)
+      ranges.emplace_back(range.first, range.last);
+    else
+      stepped.emplace(range.first, range.last, range.step);
   }
+  std::vector<std::size_t> places;
+  for (const auto& [first, last] : merged(ranges)) nodes.append_range(first, last, 1, places);
+  for (const auto& [first, last, step] : stepped) nodes.append_range(first, last, step, places);
+  for (std::size_t p : places) fixed[p] = 1;
+  std::vector<std::string> unknown;
+  std::set<std::string> noted;
+  for (const auto& [word, command] : named_components_)
+    if (node_components.count(word) == 0 && noted.insert(word).second)
+      unknown.push_back(command + " " + text_excerpt(word));
+  if (!unknown.empty())
+    mesh_.extras.read_notes.push_back(
+        "the file names nodes by words that no node CMBLOCK defines (" + listed(unknown, 12) +
+        "): a parameter tetsmooth cannot evaluate, or a component made by selection (CM); their nodes are pinned "
+        "only where a node component or an element pins them");
 }
 
 void FileReader::resolve() {
@@ -184,16 +243,15 @@ void FileReader::resolve() {
   const IdIndex nodes(node_numbers_);
   if (const auto twice = nodes.repeated())
     fail_at(node_lines_[*twice], "node " + std::to_string(node_numbers_[*twice]) + " is defined a second time");
-  {
-    std::vector<long long> numbers;
-    for (const Element& el : elements_) numbers.push_back(el.number);
-    if (const auto twice = IdIndex(numbers).repeated())
-      fail_at(elements_[*twice].line, "element " + std::to_string(numbers[*twice]) + " is defined a second time");
-  }
+  std::vector<long long> numbers;
+  for (const Element& el : elements_) numbers.push_back(el.number);
+  const IdIndex elements(numbers);
+  if (const auto twice = elements.repeated())
+    fail_at(elements_[*twice].line, "element " + std::to_string(numbers[*twice]) + " is defined a second time");
   e.node_tags = node_numbers_;
   mesh_.fixed.assign(node_numbers_.size(), 0);
   resolve_elements(nodes);
-  resolve_regions();
+  resolve_regions(elements);
   resolve_pins(nodes);
   if (std::find(mesh_.fixed.begin(), mesh_.fixed.end(), 1) == mesh_.fixed.end()) mesh_.fixed.clear();
 }

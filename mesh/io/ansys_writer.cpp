@@ -6,13 +6,16 @@
 #include <map>
 #include <ostream>
 #include <set>
+#include <sstream>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/ansys_fields.hpp"
 #include "mesh/io/ansys_io.hpp"
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/kept_deck.hpp"
+#include "mesh/io/number_text.hpp"
 #include "mesh/io/region_sets.hpp"
+#include "mesh/io/text_lines.hpp"
 #include "mesh/second_order.hpp"
 
 namespace tetsmooth {
@@ -30,6 +33,12 @@ constexpr BlockFormat kComponentFormat{8, 10, 0, 0, 0, 2, 0};
 const char* const kPinnedComponent = "TETSMOOTH_PINNED";
 
 // --- A file read with the mesh ---------------------------------------------
+
+std::string shortest(double value) {
+  std::ostringstream text;
+  put_real(text, value);
+  return text.str();
+}
 
 // The records of one NBLOCK (its format line first), those of moved nodes
 // with their X, Y and Z rewritten in the block's format.
@@ -69,8 +78,8 @@ void write_nblock(const std::string& body, const TetMesh& mesh, std::size_t& nod
     text.append(ints_end - text.size(), ' ');
     for (std::size_t c = 0; c < 3; ++c)
       if (!ansys::format_real(xyz[c], f, text))
-        throw OutputError("node " + std::to_string(mesh.extras.node_tags[node]) + "'s coordinate " +
-                          std::to_string(xyz[c]) + " does not fit its NBLOCK's format " + first);
+        throw OutputError("node " + std::to_string(mesh.extras.node_tags[node]) + "'s coordinate " + shortest(xyz[c]) +
+                          " does not fit its NBLOCK's format " + quoted_token(ansys::trimmed(first)));
     if (record.size() > ints_end + 3 * rw) text += record.substr(ints_end + 3 * rw);
     out << text << line_end;
     ++node;
@@ -153,6 +162,9 @@ std::string component_name(const std::string& name, std::set<std::string>& taken
   std::string base;
   for (char c : name) base += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::toupper(c)) : '_';
   if (base.empty() || !std::isalpha(static_cast<unsigned char>(base[0]))) base = "C_" + base;
+  // Words that APDL's component commands take for themselves.
+  for (const char* reserved : {"ALL", "NONE", "STAT", "INVE", "P", "S", "R", "A", "U"})
+    if (base == reserved) base += "_C";
   base = base.substr(0, 32);
   std::string candidate = base;
   for (int k = 2; !taken.insert(candidate).second; ++k) {

@@ -285,6 +285,16 @@ TEST(AnsysRead, OtherSolidsPassThroughAndOtherElementsPin) {
   const std::string* uncarried = raw_section(m.extras, "ansys:uncarried");
   ASSERT_NE(uncarried, nullptr);
   EXPECT_EQ(*uncarried, "SHELL181, 154");
+  // Components that divide a material number the pass-through solids' regions
+  // with the tets', and name them.
+  const std::string named =
+      "CMBLOCK,LEFT,ELEM,2\n(8i10)\n         1        -6\n"
+      "CMBLOCK,BLOCK,ELEM,2\n(8i10)\n        13       -15\n";
+  const TetMesh split = read_text(deck(cube, "ET,1,285\nET,2,185\nET,5,SHELL181\n", records, surface + named));
+  EXPECT_EQ(split.extras.tet_tags, (std::vector<int>{1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2}));
+  for (const PassThroughBlock& b : split.extras.blocks) EXPECT_EQ(b.tags, std::vector<int>{3}) << b.kind;
+  EXPECT_EQ(physical_names_of(*raw_section(split.extras, "$PhysicalNames"), 3),
+            (std::map<int, std::string>{{1, "LEFT"}, {3, "BLOCK"}}));
 }
 
 TEST(AnsysRead, ComponentsAndLoadsPin) {
@@ -332,6 +342,12 @@ TEST(AnsysRead, ParametersAndConstraintsWorkbenchWrites) {
   ASSERT_EQ(m.extras.read_notes.size(), 1u);
   EXPECT_NE(m.extras.read_notes[0].find("no node CMBLOCK defines (D FIXED)"), std::string::npos)
       << m.extras.read_notes[0];
+  // A parameter that *DO or *GET sets is no longer one tetsmooth knows.
+  const TetMesh looped =
+      read_text(deck(grid, types, tet_records(grid), "*SET,I,22\n*DO,I,22,26,4\nD,I,UX,0\n*ENDDO\n"));
+  EXPECT_FALSE(pinned(looped, 21));
+  ASSERT_EQ(looped.extras.read_notes.size(), 1u);
+  EXPECT_NE(looped.extras.read_notes[0].find("(D I)"), std::string::npos) << looped.extras.read_notes[0];
   // A parameter set again to a word no longer names a number.
   EXPECT_NE(read_error(deck(grid, types + "*SET,tid,'x'\nET,tid,285\n", tet_records(grid)))
                 .find("ET needs a positive element type number, not 'tid'"),
@@ -455,7 +471,15 @@ TEST(AnsysRead, ErrorsNameFileAndLine) {
       {replaced(good, "FINISH\n", "D,77,UX,0\n"), "t.cdb:30: node 77 is named here, and no NBLOCK defines it"},
       {replaced(good, "ET,1,285\n", "ET,1,285\nET,1,187\n"), "t.cdb:3: element type 1 is defined again"},
       {replaced(good, "       -1\n", "       -1\n" + ints({1, 1, 1, 1, 0, 0, 0, 0, 4, 0, 13, 1, 2, 3, 4}, 9) + "\n"),
-       "t.cdb:30: a record after the closing -1 of the block above (line 29)"},
+       "t.cdb:30: a record after the end of the block above (line 29)"},
+      {replaced(good, "       -1\n",
+                "       -1\n/COM\n" + ints({1, 1, 1, 1, 0, 0, 0, 0, 4, 0, 13, 1, 2, 3, 4}, 9) + "\n"),
+       "t.cdb:31: a line of element fields outside an EBLOCK"},
+      {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,2\n(8i10)\n         1         2\n         3\n"),
+       "t.cdb:33: a record after the end of the block above (line 32)"},
+      {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,1\n(8i10)\n         1         2\n"),
+       "t.cdb:32: CMBLOCK 'C' lists more items than its count, 1"},
+      {replaced(good, "FINISH\n", "numof,node,100\nFINISH\n"), "t.cdb:30: NUMOFF after an NBLOCK"},
       {replaced(good, "FINISH\n", "NUMOFF,NODE,100\nFINISH\n"), "t.cdb:30: NUMOFF after an NBLOCK"},
       {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,2\n(8i20)\n" + ints({1, LLONG_MIN}, 20) + "\n"),
        "t.cdb:32: CMBLOCK 'C' lists -9223372036854775808"},

@@ -16,11 +16,12 @@ constexpr int kBricks[] = {5, 45, 65, 69, 70, 90, 95, 96, 97, 117, 122, 164, 185
 // model commands among them, which carry a mesh along), or read another
 // file into the model.
 constexpr std::string_view kMeshCommands[] = {
-    "N",       "E",     "EN",     "EMORE",  "EGEN",   "ENGEN",  "NGEN",   "NMODIF", "EMODIF", "NDELE",    "EDELE",
-    "NSYM",    "ESYM",  "NSCALE", "NFILL",  "FILL",   "NKPT",   "MOVE",   "NUMMRG", "NUMCMP", "VMESH",    "AMESH",
-    "LMESH",   "KMESH", "VSWEEP", "ESURF",  "EINTF",  "CDREAD", "/INPUT", "EREAD",  "NREAD",  "EEXTRUDE", "NREFINE",
-    "EREFINE", "VEXT",  "VDRAG",  "VROTAT", "ACLEAR", "VCLEAR", "KCLEAR", "LCLEAR", "UPGEOM", "MORPH",    "EMID",
-    "EORIENT", "ENSYM", "VTRAN",  "VGEN",   "VSYMM",  "CZMESH", "*USE"};
+    "N",       "E",       "EN",      "EMORE",  "EGEN",   "ENGEN",  "NGEN",   "NMODIF",  "EMODIF", "NDELE",    "EDELE",
+    "NSYM",    "ESYM",    "NSCALE",  "NFILL",  "FILL",   "NKPT",   "MOVE",   "NUMMRG",  "NUMCMP", "VMESH",    "AMESH",
+    "LMESH",   "KMESH",   "VSWEEP",  "ESURF",  "EINTF",  "CDREAD", "/INPUT", "EREAD",   "NREAD",  "EEXTRUDE", "NREFINE",
+    "EREFINE", "VEXT",    "VDRAG",   "VROTAT", "ACLEAR", "VCLEAR", "KCLEAR", "LCLEAR",  "UPGEOM", "MORPH",    "EMID",
+    "EORIENT", "ENSYM",   "VTRAN",   "VGEN",   "VSYMM",  "CZMESH", "*USE",   "NSMOOTH", "RESUME", "/CLEAR",   "AREFINE",
+    "LREFINE", "KREFINE", "MSHCOPY", "EINFIN", "AGEN",   "ARSYM",  "ATRAN",  "LGEN",    "KGEN"};
 
 bool listed(const int* first, const int* last, int n) { return std::find(first, last, n) != last; }
 

@@ -32,7 +32,8 @@
 //  * Element types come from ET,ITYPE,ENAME (a number, 187, or a name,
 //    SOLID187) and ETBLOCK. ITYPE and node numbers may be whole reals
 //    ("7.0") or scalar parameters that *SET,NAME,VALUE or NAME=VALUE give
-//    (Workbench's "*SET,cid,3" then "ET,cid,174"). Elements of 3-D solid types (ansys_element_types.hpp) with
+//    (Workbench's "*SET,cid,3" then "ET,cid,174"); one that another *
+//    command sets (*DO, *GET, ...) is no longer known. Elements of 3-D solid types (ansys_element_types.hpp) with
 //    the nodes of a tet are the tets: 4 nodes (SOLID285, or a 187 without
 //    midside nodes), 10 (SOLID187, 92, ...: corners I, J, K, L then the
 //    midside nodes of IJ, JK, KI, IL, JL, KL, as kTetEdges), a brick's 8 as
@@ -58,8 +59,10 @@
 //    (ALL, P) are noted: tetsmooth does not follow APDL's selection.
 //  * Lines that cannot be command names (a number first: the data lines of
 //    blocks tetsmooth does not read, RLBLOCK's or SFE's) are kept and not
-//    read, but for one right after a block's closing -1 (a -1 among the
-//    records would end the block early): that is refused.
+//    read, but for one right after a block's end (a -1 among the records
+//    would end it early, a CMBLOCK's count be too small) and a line of 12
+//    or more whole numbers anywhere, an element record out of its EBLOCK:
+//    those are refused.
 //  * Refused with the file's line: commands that define, move, reorder or
 //    delete nodes or elements outside the blocks (N, E, EN, NGEN, NMODIF,
 //    VMESH, EORIENT, ..., ansys_element_types.cpp), NUMOFF after an NBLOCK,

@@ -51,6 +51,26 @@ void add_once(std::vector<std::string>& list, const std::string& item) {
   if (std::find(list.begin(), list.end(), item) == list.end()) list.push_back(item);
 }
 
+// Whether a line (split at commas) is 12 or more whole numbers split by
+// blanks, as an EBLOCK record is; the data lines of blocks tetsmooth does
+// not read hold reals.
+bool element_like(const std::vector<std::string_view>& fields) {
+  if (fields.size() != 1) return false;
+  std::size_t count = 0;
+  std::string_view rest = fields[0];
+  while (true) {
+    while (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+    if (rest.empty()) break;
+    std::size_t n = 0;
+    while (n < rest.size() && rest[n] != ' ' && rest[n] != '\t') ++n;
+    long long v = 0;
+    if (!parse_integer(rest.substr(0, n), v)) return false;
+    ++count;
+    rest.remove_prefix(n);
+  }
+  return count >= 12;
+}
+
 // Whether a line's first field can be an APDL command name: the data lines
 // of blocks tetsmooth does not read (SFE's values, RLBLOCK, ...) are not.
 bool command_like(std::string_view name) {
@@ -272,6 +292,12 @@ void FileReader::cmblock(const std::vector<std::string_view>& fields) {
       }
     }
   }
+  // Items past the count would be dropped: refused on the last line here,
+  // and on a line after it as a record after the block.
+  const std::size_t on_last = count == 0 ? 0 : static_cast<std::size_t>((count - 1) % f.ints + 1);
+  if (count > 0 && data_length(line_) > on_last * static_cast<std::size_t>(f.int_width))
+    fail("CMBLOCK " + quoted_token(c.name) + " lists more items than its count, " + std::to_string(count));
+  block_closed_ = line_no_;
   if (entity == "NODE" || entity == "ELEM" || entity == "ELEMENT") {
     c.nodes = entity == "NODE";
     components_.push_back(std::move(c));
@@ -376,13 +402,19 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
     return parameter(std::string_view(name).substr(0, equals), value);
   }
   if (name == "*SET" || name == "*SE") return parameter(field(fields, 1), field(fields, 2));
+  // Other commands that set a parameter (*GET, *DO, *VGET, ...) give it a
+  // value tetsmooth does not know.
+  if (name[0] == '*') parameters_.erase(upper_case(field(fields, 1)));
   if (!command_like(name)) {
     // The data lines of blocks tetsmooth does not read (RLBLOCK, SFE's
     // values, ...) are kept as they are; right after a block's -1, though,
     // a record means that the block ended early.
     if (block_closed_ + 1 == line_no_)
-      fail("a record after the closing -1 of the block above (line " + std::to_string(block_closed_) +
-           "): is a -1 among its records?");
+      fail("a record after the end of the block above (line " + std::to_string(block_closed_) +
+           "): is a -1 among its records, or a count too small?");
+    // A line of an element record's whole numbers (12 or more: the fields
+    // of an EBLOCK's), wherever it is, would be an element dropped.
+    if (!elements_.empty() && element_like(fields)) fail("a line of element fields outside an EBLOCK");
     return;
   }
   const std::string second = upper_case(field(fields, 1));
@@ -401,7 +433,7 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
   if (name == "ET") return element_type(fields);
   if (name == "ETBLOCK") return etblock();
   if ((name == "N" || name == "EN") && release_form) return;
-  if (name == "NUMOFF" && !node_numbers_.empty())
+  if (name.size() >= 4 && std::string_view("NUMOFF").substr(0, name.size()) == name && !node_numbers_.empty())
     fail(
         "NUMOFF after an NBLOCK renumbers the nodes and elements the file has defined, which tetsmooth does not "
         "follow");
@@ -431,7 +463,7 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
     pin_fields(fields, {1, 3}, name);  // Master, and the component of its Slaves
   } else if (name == "CPNGEN") {
     pin_range(fields, 3, 4, name);  // NSET, Lab, NODE1, NODE2, NINC
-  } else if (name == "CPINTF" || name == "CEINTF") {
+  } else if (name == "CPINTF" || name == "CEINTF" || name == "CPSGEN") {
     add_once(by_selection_, name);
   }
 }

@@ -127,6 +127,7 @@ class FileReader {
   // Each element's MAT where it passes through as a solid, else kNoSolid.
   static constexpr long long kNoSolid = LLONG_MIN;
   std::vector<long long> solid_tag_of_element_;
+  std::vector<std::pair<std::size_t, std::size_t>> block_element_;  // (block, place in it) of those
 };
 
 }  // namespace tetsmooth::ansys

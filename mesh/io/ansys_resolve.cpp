@@ -65,6 +65,7 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
   std::set<std::string> uncarried;
   tet_of_element_.assign(elements_.size(), -1);
   solid_tag_of_element_.assign(elements_.size(), kNoSolid);
+  block_element_.assign(elements_.size(), {0, 0});
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const Element& el = elements_[i];
     const long long* listed_nodes = element_nodes_.data() + el.first;
@@ -109,6 +110,7 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
       }
       PassThroughBlock& b = e.blocks[at->second];
       for (int k = 0; k < shape.count; ++k) b.connectivity.push_back(index[shape.places[k]]);
+      block_element_[i] = {at->second, b.tags.size()};
       b.tags.push_back(el.mat);
       b.element_tags.push_back(el.number);
       solid_tag_of_element_[i] = el.mat;
@@ -146,53 +148,52 @@ void FileReader::resolve_regions(const IdIndex& elements) {
   }
   if (solid_sets.empty()) return;
   // Regions: the materials, split further where a component holds some of a
-  // material's tets and not the others.
-  std::map<int, std::vector<std::size_t>> by_mat;
-  for (std::size_t t = 0; t < e.tet_tags.size(); ++t) by_mat[e.tet_tags[t]].push_back(t);
-  RegionSplitter splitter(e.tet_tags.size());
-  for (const auto& [mat, tets] : by_mat) splitter.split(tets);
-  std::vector<std::size_t> tets;
-  for (const auto& [component, places] : solid_sets) {
-    tets.clear();
-    for (std::size_t p : places)
-      if (tet_of_element_[p] >= 0) tets.push_back(static_cast<std::size_t>(tet_of_element_[p]));
-    splitter.split(tets);
-  }
-  const std::vector<int> regions = splitter.tags();
-  const int count = regions.empty() ? 0 : *std::max_element(regions.begin(), regions.end());
-  // Renumbered tets share no numbers with the other solids' materials, so
-  // a component then names tets alone.
-  const bool renumbered = static_cast<std::size_t>(count) != by_mat.size();
-  if (renumbered) {
-    e.tet_tags = regions;
-    e.read_notes.push_back("element components divide materials, so the " + std::to_string(count) +
-                           " regions they make (the tets that share a material and their components) are numbered "
-                           "1, 2, ... in order of their first tets");
-  }
-  const auto tag_of = [&](std::size_t p, int& tag) {
-    if (tet_of_element_[p] >= 0) {
-      tag = e.tet_tags[static_cast<std::size_t>(tet_of_element_[p])];
-      return true;
-    }
-    tag = static_cast<int>(solid_tag_of_element_[p]);
-    return !renumbered;
-  };
-  std::map<int, std::size_t> region_size;
+  // material's solids and not the others. The solids are numbered tets
+  // first, then the pass-through solids in element order, so that both get
+  // regions of one numbering.
+  std::vector<long long> solid_of(elements_.size(), -1);
+  std::vector<int> mats = e.tet_tags;
   for (std::size_t p = 0; p < elements_.size(); ++p)
-    if (int tag = 0; (tet_of_element_[p] >= 0 || solid_tag_of_element_[p] != kNoSolid) && tag_of(p, tag))
-      ++region_size[tag];
+    if (tet_of_element_[p] >= 0) solid_of[p] = tet_of_element_[p];
+  for (std::size_t p = 0; p < elements_.size(); ++p)
+    if (solid_tag_of_element_[p] != kNoSolid) {
+      solid_of[p] = static_cast<long long>(mats.size());
+      mats.push_back(static_cast<int>(solid_tag_of_element_[p]));
+    }
+  std::map<int, std::vector<std::size_t>> by_mat;
+  for (std::size_t k = 0; k < mats.size(); ++k) by_mat[mats[k]].push_back(k);
+  RegionSplitter splitter(mats.size());
+  for (const auto& [mat, members] : by_mat) splitter.split(members);
+  std::vector<std::size_t> members;
+  for (const auto& [component, places] : solid_sets) {
+    members.clear();
+    for (std::size_t p : places) members.push_back(static_cast<std::size_t>(solid_of[p]));
+    splitter.split(members);
+  }
+  std::vector<int> regions = splitter.tags();
+  const int count = regions.empty() ? 0 : *std::max_element(regions.begin(), regions.end());
+  if (static_cast<std::size_t>(count) != by_mat.size()) {
+    e.read_notes.push_back("element components divide materials, so the " + std::to_string(count) +
+                           " regions they make (the solids that share a material and their components) are "
+                           "numbered 1, 2, ... in order of their first solids");
+  } else {
+    regions = mats;
+  }
+  // The regions into the tets and the pass-through solids' blocks.
+  std::copy_n(regions.begin(), e.tet_tags.size(), e.tet_tags.begin());
+  for (std::size_t p = 0; p < elements_.size(); ++p)
+    if (solid_tag_of_element_[p] != kNoSolid) {
+      const auto [b, i] = block_element_[p];
+      e.blocks[b].tags[i] = regions[static_cast<std::size_t>(solid_of[p])];
+    }
+  std::map<int, std::size_t> region_size;
+  for (int tag : regions) ++region_size[tag];
   RegionNames names;
   for (const auto& [component, places] : solid_sets) {
-    std::optional<int> one;
-    std::size_t members = 0;
-    bool alone = true;
-    for (std::size_t p : places)
-      if (int tag = 0; tag_of(p, tag)) {
-        alone = alone && (!one || *one == tag);
-        one = tag;
-        ++members;
-      }
-    if (one && alone && region_size[*one] == members) names.add(3, *one, component->name);
+    const int tag = regions[static_cast<std::size_t>(solid_of[places.front()])];
+    const bool one = std::all_of(places.begin(), places.end(),
+                                 [&](std::size_t p) { return regions[static_cast<std::size_t>(solid_of[p])] == tag; });
+    if (one && region_size[tag] == places.size()) names.add(3, tag, component->name);
   }
   if (!names.empty()) e.raw_sections.emplace_back("$PhysicalNames", names.msh_body());
 }
@@ -222,10 +223,16 @@ void FileReader::resolve_pins(const IdIndex& nodes) {
     else
       stepped.emplace(range.first, range.last, range.step);
   }
+  // Each range marked as it is expanded, so that memory stays that of the
+  // largest.
   std::vector<std::size_t> places;
-  for (const auto& [first, last] : merged(ranges)) nodes.append_range(first, last, 1, places);
-  for (const auto& [first, last, step] : stepped) nodes.append_range(first, last, step, places);
-  for (std::size_t p : places) fixed[p] = 1;
+  const auto mark = [&](long long first, long long last, long long step) {
+    places.clear();
+    nodes.append_range(first, last, step, places);
+    for (std::size_t p : places) fixed[p] = 1;
+  };
+  for (const auto& [first, last] : merged(ranges)) mark(first, last, 1);
+  for (const auto& [first, last, step] : stepped) mark(first, last, step);
   std::vector<std::string> unknown;
   std::set<std::string> noted;
   for (const auto& [word, command] : named_components_)

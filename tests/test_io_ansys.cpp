@@ -382,14 +382,15 @@ TEST(AnsysWrite, KeptFileChangesOnlyMovedRecords) {
   // The centre's record carries rotation angles, which stay as read; CRLF
   // line ends stay too.
   std::string text = deck(cube, "ET,1,285 ! tets\n", tet_records(cube), "D,1,ALL,0\n");
-  text = replaced(text, " 6.0000000000000E-001\n", " 6.0000000000000E-001 4.5000000000000E+001\n");
+  // Its Z, in Fortran's D form, stays as written when only Y moves.
+  text = replaced(text, " 6.0000000000000E-001\n", " 6.0000000000000D-001 4.5000000000000E+001\n");
   std::string crlf;
   for (char c : text) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
   TetMesh m = read_text(crlf);
   EXPECT_EQ(write_text(m), crlf);
   m.xyz[3 * 8 + 1] = 0.55;
-  const std::string moved = replaced(crlf, " 5.0000000000000E-001 6.0000000000000E-001 4.5000000000000E+001\r\n",
-                                     " 5.5000000000000E-001 6.0000000000000E-001 4.5000000000000E+001\r\n");
+  const std::string moved = replaced(crlf, " 5.0000000000000E-001 6.0000000000000D-001 4.5000000000000E+001\r\n",
+                                     " 5.5000000000000E-001 6.0000000000000D-001 4.5000000000000E+001\r\n");
   EXPECT_EQ(write_text(m), moved);
   // The record written reads back as the new value, within its 14 digits.
   m.xyz[3 * 8] = 0.123456789012345678;

@@ -78,9 +78,10 @@
 //    "ansys:uncarried" (element types that only pin).
 //
 // Writing: a mesh read from a file is written as that file, byte for byte,
-// but for the NBLOCK records of nodes whose coordinates changed: X, Y and
-// Z are written in the block's own format (14 significant digits in
-// e21.13e3, as MAPDL writes them), the record's other fields as read. Any
+// but for the NBLOCK records of nodes whose coordinates changed: those of
+// X, Y and Z that changed are written in the block's own format (14
+// significant digits in e21.13e3, as MAPDL writes them), the record's other
+// fields as read. Any
 // other mesh is written as a new file: /PREP7, ET 1 = SOLID285 (or
 // SOLID187 for 10-node tets), ET 2 = SOLID185 for bricks, wedges and
 // pyramids (degenerate as above), an NBLOCK in (3i9,6e21.13e3), an EBLOCK in

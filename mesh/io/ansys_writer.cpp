@@ -74,13 +74,25 @@ void write_nblock(const std::string& body, const TetMesh& mesh, std::size_t& nod
       ++node;
       continue;
     }
+    // The record's fields as read but for the coordinates that changed.
     std::string text(record.substr(0, ints_end));
     text.append(ints_end - text.size(), ' ');
-    for (std::size_t c = 0; c < 3; ++c)
-      if (!ansys::format_real(xyz[c], f, text))
+    for (std::size_t c = 0; c < 3; ++c) {
+      const std::string_view was = ansys::field_at(record, ints_end + c * rw, rw);
+      double v = 0;
+      ansys::real_field(was, v);
+      if (v == xyz[c]) {
+        text += was;
+        text.append(rw - was.size(), ' ');
+      } else if (!ansys::format_real(xyz[c], f, text)) {
         throw OutputError("node " + std::to_string(mesh.extras.node_tags[node]) + "'s coordinate " + shortest(xyz[c]) +
                           " does not fit its NBLOCK's format " + quoted_token(ansys::trimmed(first)));
-    if (record.size() > ints_end + 3 * rw) text += record.substr(ints_end + 3 * rw);
+      }
+    }
+    if (record.size() > ints_end + 3 * rw)
+      text += record.substr(ints_end + 3 * rw);
+    else
+      text.erase(text.find_last_not_of(' ') + 1);  // no blank fields at the end
     out << text << line_end;
     ++node;
   }

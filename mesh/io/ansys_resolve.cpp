@@ -71,7 +71,6 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
     const long long* listed_nodes = element_nodes_.data() + el.first;
     index.assign(el.count, -1);
     for (std::size_t k = 0; k < el.count; ++k) {
-      index[k] = -1;
       if (listed_nodes[k] == 0) continue;
       const long long n = nodes.find(listed_nodes[k]);
       if (n < 0)

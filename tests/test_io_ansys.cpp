@@ -342,6 +342,12 @@ TEST(AnsysRead, ParametersAndConstraintsWorkbenchWrites) {
   ASSERT_EQ(m.extras.read_notes.size(), 1u);
   EXPECT_NE(m.extras.read_notes[0].find("no node CMBLOCK defines (D FIXED)"), std::string::npos)
       << m.extras.read_notes[0];
+  // CDWRITE's constraint equations name their nodes on NODE lines.
+  const TetMesh equations = read_text(deck(
+      grid, types, tet_records(grid), "CE,R5.0,DEFI,       2,       1,  0.0\nCE,R5.0,NODE,27,UX,1.0,38,UX,-1.0\n"));
+  EXPECT_TRUE(pinned(equations, 26));
+  EXPECT_TRUE(pinned(equations, 37));
+  EXPECT_TRUE(equations.extras.read_notes.empty());
   // A parameter that *DO or *GET sets is no longer one tetsmooth knows.
   const TetMesh looped =
       read_text(deck(grid, types, tet_records(grid), "*SET,I,22\n*DO,I,22,26,4\nD,I,UX,0\n*ENDDO\n"));
@@ -481,6 +487,8 @@ TEST(AnsysRead, ErrorsNameFileAndLine) {
       {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,1\n(8i10)\n         1         2\n"),
        "t.cdb:32: CMBLOCK 'C' lists more items than its count, 1"},
       {replaced(good, "FINISH\n", "numof,node,100\nFINISH\n"), "t.cdb:30: NUMOFF after an NBLOCK"},
+      {replaced(good, "FINISH\n", "EN,R5.5,NODE,1,2,3,4\nFINISH\n"), "t.cdb:30: the EN command makes"},
+      {replaced(good, "FINISH\n", "MPCHG,2,ALL\nFINISH\n"), "t.cdb:30: the MPCHG command"},
       {replaced(good, "FINISH\n", "NUMOFF,NODE,100\nFINISH\n"), "t.cdb:30: NUMOFF after an NBLOCK"},
       {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,2\n(8i20)\n" + ints({1, LLONG_MIN}, 20) + "\n"),
        "t.cdb:32: CMBLOCK 'C' lists -9223372036854775808"},

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <initializer_list>
+#include <iterator>
 
 namespace tetsmooth::ansys {
 namespace {
@@ -13,15 +15,17 @@ constexpr int kTets[] = {72, 87, 92, 98, 123, 127, 168, 187, 227, 232, 237, 285}
 constexpr int kBricks[] = {5, 45, 65, 69, 70, 90, 95, 96, 97, 117, 122, 164, 185, 186, 226, 231, 236, 278, 279};
 
 // Commands that make, move, reorder or delete nodes or elements (solid
-// model commands among them, which carry a mesh along), or read another
-// file into the model.
+// model commands among them, which carry a mesh along), change their
+// materials (MPCHG), or read another file into the model.
 constexpr std::string_view kMeshCommands[] = {
-    "N",       "E",       "EN",      "EMORE",  "EGEN",   "ENGEN",  "NGEN",   "NMODIF",  "EMODIF", "NDELE",    "EDELE",
-    "NSYM",    "ESYM",    "NSCALE",  "NFILL",  "FILL",   "NKPT",   "MOVE",   "NUMMRG",  "NUMCMP", "VMESH",    "AMESH",
-    "LMESH",   "KMESH",   "VSWEEP",  "ESURF",  "EINTF",  "CDREAD", "/INPUT", "EREAD",   "NREAD",  "EEXTRUDE", "NREFINE",
-    "EREFINE", "VEXT",    "VDRAG",   "VROTAT", "ACLEAR", "VCLEAR", "KCLEAR", "LCLEAR",  "UPGEOM", "MORPH",    "EMID",
-    "EORIENT", "ENSYM",   "VTRAN",   "VGEN",   "VSYMM",  "CZMESH", "*USE",   "NSMOOTH", "RESUME", "/CLEAR",   "AREFINE",
-    "LREFINE", "KREFINE", "MSHCOPY", "EINFIN", "AGEN",   "ARSYM",  "ATRAN",  "LGEN",    "KGEN"};
+    "N",       "E",        "EN",      "EMORE",   "EGEN",    "ENGEN",   "NGEN",    "NMODIF",  "EMODIF",  "NDELE",
+    "EDELE",   "NSYM",     "ESYM",    "NSCALE",  "NFILL",   "FILL",    "NKPT",    "MOVE",    "NUMMRG",  "NUMCMP",
+    "VMESH",   "AMESH",    "LMESH",   "KMESH",   "VSWEEP",  "ESURF",   "EINTF",   "CDREAD",  "/INPUT",  "EREAD",
+    "NREAD",   "EEXTRUDE", "NREFINE", "EREFINE", "VEXT",    "VDRAG",   "VROTAT",  "ACLEAR",  "VCLEAR",  "KCLEAR",
+    "LCLEAR",  "UPGEOM",   "MORPH",   "EMID",    "EORIENT", "ENSYM",   "VTRAN",   "VGEN",    "VSYMM",   "CZMESH",
+    "*USE",    "NSMOOTH",  "RESUME",  "/CLEAR",  "AREFINE", "LREFINE", "KREFINE", "MSHCOPY", "EINFIN",  "AGEN",
+    "ARSYM",   "ATRAN",    "LGEN",    "KGEN",    "KSYMM",   "LSYMM",   "KTRAN",   "LTRAN",   "UPCOORD", "DAMORPH",
+    "DEMORPH", "DVMORPH",  "EREINF",  "GCGEN",   "EMTGEN",  "MPCHG"};
 
 bool listed(const int* first, const int* last, int n) { return std::find(first, last, n) != last; }
 

@@ -101,12 +101,13 @@ bool real_field(std::string_view field, double& value) {
 }
 
 bool format_real(double value, const BlockFormat& format, std::string& out) {
+  if (!std::isfinite(value)) return false;
   char buf[64];
   // A field narrower than its decimals need (a sign, a digit, the point,
   // the exponent) gets as many as fit.
   int decimals = std::min(format.decimals, format.real_width - 5 - format.exponent_digits);
   decimals = std::max(0, std::min(decimals, 30));
-  std::snprintf(buf, sizeof buf, "%.*E", decimals, value);
+  std::snprintf(buf, sizeof buf, "%#.*E", decimals, value);  // '#': "5.E-01" without decimals
   // buf: [-]d.dddE±xx(x); rewrite the exponent with the format's digits.
   std::string text(buf);
   const std::size_t e = text.find('E');

@@ -40,8 +40,9 @@ bool real_field(std::string_view field, double& value);
 // and decimals ("-5.0000000000000E-01", right-aligned; fewer decimals where
 // the width has no room for them), into `out`; values
 // whose exponent needs more digits than the format has are written as 0
-// when smaller than 1e-99 (a rounding residue) and refused (false) when
-// larger. The decimal digits are correctly rounded from the double.
+// when small (below 1e-99 with two digits: a rounding residue) and refused
+// (false) when large, as are infinities and NaNs. The decimal digits are
+// correctly rounded from the double.
 bool format_real(double value, const BlockFormat& format, std::string& out);
 
 }  // namespace tetsmooth::ansys

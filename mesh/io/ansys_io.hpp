@@ -43,32 +43,35 @@
 //    element (20-node bricks among them) pins its nodes and stays in the
 //    file alone.
 //  * Numbers: node and element numbers are kept (FileExtras::node_tags,
-//    tet_element_tags). The region of a tet is its MAT; element components
-//    of tets split regions further (RegionSplitter), and then the regions
-//    are numbered 1, 2, ... with a note. A component that holds exactly one
-//    region's tets names it ($PhysicalNames).
+//    tet_element_tags). The region of a solid (a tet or a pass-through
+//    solid) is its MAT; element components of solids split regions further
+//    (RegionSplitter), and then the regions are numbered 1, 2, ... with a
+//    note. A component that holds exactly one region's solids names it
+//    ($PhysicalNames).
 //  * Pins: the nodes of every node component (the named selections that
 //    loads and supports are put on), of elements other than tets, and the
 //    nodes that D, F, BF, IC and M name by number (with the ranges NEND,
-//    NINC of D, F, IC and M), CP and CE list (their NODE fields), CERIG
-//    names (master and slave), RBE3 names (master, and the component of
-//    its slaves) and CPNGEN spans. Words where a node goes that no node
+//    NINC of D, F, IC and M), CP and CE list (their NODE fields, and those
+//    of CDWRITE's "CE,R5.0,NODE,..." lines), CERIG names (master and
+//    slave), RBE3 names (master, and the component of its slaves) and
+//    CPNGEN spans. Noted, not pinned: words where a node goes that no node
 //    CMBLOCK defines (a component made by selection with CM, a parameter
-//    tetsmooth cannot evaluate) are noted, as are ALL and P and CPINTF and
-//    CEINTF: tetsmooth does not follow APDL's selection. Commands that name nodes through the selection
-//    (ALL, P) are noted: tetsmooth does not follow APDL's selection.
+//    tetsmooth cannot evaluate), ALL, P and P51X, CPINTF and CEINTF
+//    (tetsmooth does not follow APDL's selection), CPSGEN and CESGEN, and
+//    CDWRITE's block forms of D, F, CP, BF and IC ("D,R5.0,...").
 //  * Lines that cannot be command names (a number first: the data lines of
 //    blocks tetsmooth does not read, RLBLOCK's or SFE's) are kept and not
 //    read, but for one right after a block's end (a -1 among the records
 //    would end it early, a CMBLOCK's count be too small) and a line of 12
-//    or more whole numbers anywhere, an element record out of its EBLOCK:
-//    those are refused.
+//    or more whole numbers after the first EBLOCK, an element record out of
+//    its block: those are refused.
 //  * Refused with the file's line: commands that define, move, reorder or
 //    delete nodes or elements outside the blocks (N, E, EN, NGEN, NMODIF,
-//    VMESH, EORIENT, ..., ansys_element_types.cpp), NUMOFF after an NBLOCK,
-//    /INPUT, *USE and CDREAD of other files, an element of more than 200
-//    nodes,
-//    NBLOCK and EBLOCK records that break their format, nodes or elements
+//    VMESH, EORIENT, ..., ansys_element_types.cpp; N and EN in CDWRITE's
+//    form too, but for the marks whose fourth field is -1), change their
+//    materials (MPCHG), NUMOFF after an NBLOCK, /INPUT, *USE and CDREAD of
+//    other files, an element of more than 200 nodes, NBLOCK and EBLOCK
+//    records that break their format, nodes or elements
 //    numbered twice, nodes that no NBLOCK defines, element types that no ET
 //    defines, and 4- and 10-node tets mixed.
 //  * The file is kept in FileExtras::raw_sections, in order: "ansys:text"

@@ -71,6 +71,19 @@ bool element_like(const std::vector<std::string_view>& fields) {
   return count >= 12;
 }
 
+// Whether a field is a release, as CDWRITE's block forms give it: "R5.0".
+bool is_release(std::string_view text) {
+  std::size_t i = 1;
+  const auto digits = [&] {
+    const std::size_t from = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    return i > from;
+  };
+  if (text.empty() || text[0] != 'R' || !digits() || i >= text.size() || text[i] != '.') return false;
+  ++i;
+  return digits() && i == text.size();
+}
+
 // Whether a line's first field can be an APDL command name: the data lines
 // of blocks tetsmooth does not read (SFE's values, RLBLOCK, ...) are not.
 bool command_like(std::string_view name) {
@@ -419,20 +432,23 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
   }
   const std::string second = upper_case(field(fields, 1));
   // CDWRITE's marks ("N,R5.3,LOC,-1" closing an NBLOCK, "EN,R5.5,ATTR,-1")
-  // and its block forms of other commands carry a release as field 2.
-  const bool release_form = second == "UNBL" || (second.size() > 2 && second[0] == 'R' &&
-                                                 std::isdigit(static_cast<unsigned char>(second[1])));
+  // and its block forms of other commands carry a release ("R5.0") as field
+  // 2, or UNBL.
+  const bool release_form = second == "UNBL" || is_release(second);
   if (name == "NBLOCK") return nblock();
   if (name == "EBLOCK") {
     long long nodes = 0;
     if (!parse_integer(field(fields, 1), nodes) || nodes <= 0)
-      fail("EBLOCK needs its count of fields, not " + quoted_token(field(fields, 1)));
+      fail("EBLOCK needs its first field (19 for SOLID records, else the most nodes a record lists), not " +
+           quoted_token(field(fields, 1)));
     return eblock(upper_case(field(fields, 2)) == "SOLID", nodes);
   }
   if (name == "CMBLOCK") return cmblock(fields);
   if (name == "ET") return element_type(fields);
   if (name == "ETBLOCK") return etblock();
-  if ((name == "N" || name == "EN") && release_form) return;
+  // The marks close a block (a -1 as field 4); other release forms of N and
+  // EN make nodes and elements, refused below.
+  if ((name == "N" || name == "EN") && release_form && field(fields, 3) == "-1") return;
   if (name.size() >= 4 && std::string_view("NUMOFF").substr(0, name.size()) == name && !node_numbers_.empty())
     fail(
         "NUMOFF after an NBLOCK renumbers the nodes and elements the file has defined, which tetsmooth does not "
@@ -445,8 +461,11 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
          ", which tetsmooth would not see: only NBLOCK and EBLOCK define the mesh it reads (write the model with "
          "CDWRITE)");
   if (seen_commands_.insert(name).second) commands_.push_back(text_excerpt(name));
-  if (release_form && (name == "D" || name == "F" || name == "CP" || name == "CE" || name == "BF" || name == "IC")) {
-    add_once(cdwrite_forms_, name);
+  if (name == "CE" && release_form && upper_case(field(fields, 2)) == "NODE") {
+    pin_fields(fields, {3, 6}, name);  // CDWRITE's CE,R5.0,NODE,N1,Lab1,C1,N2,Lab2,C2
+  } else if (release_form &&
+             (name == "D" || name == "F" || name == "CP" || name == "CE" || name == "BF" || name == "IC")) {
+    if (!(name == "CE" && upper_case(field(fields, 2)) == "DEFI")) add_once(cdwrite_forms_, name);
   } else if (name == "D" || name == "F" || name == "IC") {
     pin_range(fields, 1, 5, name);  // NODE, Lab, VALUE, VALUE2, NEND, NINC
   } else if (name == "M") {
@@ -463,8 +482,10 @@ void FileReader::command(const std::vector<std::string_view>& fields) {
     pin_fields(fields, {1, 3}, name);  // Master, and the component of its Slaves
   } else if (name == "CPNGEN") {
     pin_range(fields, 3, 4, name);  // NSET, Lab, NODE1, NODE2, NINC
-  } else if (name == "CPINTF" || name == "CEINTF" || name == "CPSGEN") {
+  } else if (name == "CPINTF" || name == "CEINTF") {
     add_once(by_selection_, name);
+  } else if (name == "CPSGEN" || name == "CESGEN") {
+    add_once(generated_, name);
   }
 }
 

@@ -63,7 +63,8 @@ class FileReader {
   void pin_fields(const std::vector<std::string_view>& fields, std::initializer_list<std::size_t> places,
                   const std::string& name);
   // A command's node (field `node`) and, where it gives them, the range's
-  // end and step (fields `end` and `end + 1`: D, F and IC's NEND, NINC).
+  // end and step (fields `end` and `end + 1`: NEND, NINC of D, F, IC and M;
+  // NODE2, NINC of CPNGEN).
   void pin_range(const std::vector<std::string_view>& fields, std::size_t node, std::size_t end,
                  const std::string& name);
   void etblock();
@@ -121,8 +122,8 @@ class FileReader {
   std::vector<std::string> uncarried_;      // element types that only pin
   std::vector<std::string> by_selection_;   // commands that named nodes through the selection
   std::vector<std::string> cdwrite_forms_;  // commands in a form whose nodes are not read
-  // Tets as elements_ places, and each element's tet (or -1).
-  std::vector<std::size_t> tet_elements_;
+  std::vector<std::string> generated_;      // commands that make coupled sets or equations from others
+  // Each element's tet (or -1).
   std::vector<long long> tet_of_element_;
   // Each element's MAT where it passes through as a solid, else kNoSolid.
   static constexpr long long kNoSolid = LLONG_MIN;

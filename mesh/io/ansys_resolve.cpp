@@ -90,8 +90,7 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
       tet_nodes = count;
       index_t tet[10];
       for (int k = 0; k < count; ++k) tet[k] = index[shape.places[k]];
-      tet_of_element_[i] = static_cast<long long>(tet_elements_.size());
-      tet_elements_.push_back(i);
+      tet_of_element_[i] = static_cast<long long>(mesh_.num_tets());
       append_file_tet(mesh_, tet, count == 10, kInOrder);
       e.tet_tags.push_back(el.mat);
       e.tet_element_tags.push_back(el.number);
@@ -118,7 +117,7 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
     const std::string& name = type->second.name;
     if (uncarried.insert(name).second) uncarried_.push_back(name);
   }
-  if (tet_elements_.empty())
+  if (mesh_.tets.empty())
     throw InputError(source_,
                      "no tets among the EBLOCK elements: a volume mesh of tets is needed (SOLID285, "
                      "SOLID187, or a SOLID185/186 with the nodes of a tet)");
@@ -271,6 +270,10 @@ void FileReader::keep_notes() {
     e.read_notes.push_back("the file's " + joined(by_selection_) +
                            " commands name nodes through APDL's selection (ALL, P), which tetsmooth does not "
                            "follow: their nodes are pinned only where a node component or an element pins them");
+  if (!generated_.empty())
+    e.read_notes.push_back("the file's " + joined(generated_) +
+                           " commands make coupled sets or constraint equations from others, which tetsmooth does not "
+                           "follow: the nodes of those they make are pinned only where something else pins them");
   if (!cdwrite_forms_.empty())
     e.read_notes.push_back("the file's " + joined(cdwrite_forms_) +
                            " commands in CDWRITE's block form are not read: their nodes are pinned only where a node "

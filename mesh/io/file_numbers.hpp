@@ -1,7 +1,7 @@
 #pragma once
 // The file's own node and element numbers (FileExtras::node_tags,
 // tet_element_tags and each block's element_tags) as a new deck or grid
-// can keep them (Abaqus, Nastran, FLAC3D): one per item, positive, distinct
+// can keep them (Abaqus, Nastran, FLAC3D, Exodus, ANSYS): one per item, positive, distinct
 // and at most the format's largest, else 1, 2, ... in order (not a public
 // API).
 #include <cstddef>

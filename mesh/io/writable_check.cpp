@@ -352,8 +352,9 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                       " holds tets, bricks, wedges, pyramids, triangles and quads (their nodes are listed as pins)");
   }
   // MSH writes the names of the regions as physical names, FLAC3D as its
-  // groups' names, Exodus as its blocks' names. (Exodus writes every kind
-  // of element the readers give: none is dropped.)
+  // groups' names, Exodus as its blocks' names, ANSYS as its components'.
+  // (Exodus writes every kind of element the readers give: none is
+  // dropped.)
   const bool keeps_names = msh || f == MeshFormat::Flac3d || f == MeshFormat::Exodus || f == MeshFormat::Ansys;
   // An Abaqus deck kept keeps its set names; a new one names its sets by tag.
   if ((abaqus || flac3d || exodus || ansys) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&

@@ -14,7 +14,8 @@ What is checked, and why:
   rounded to the block's format. mapdl-archive reads the smoothed file with
   the same node numbers and element records, and coordinates within the 14
   significant digits the format holds; the worst radius ratio does not
-  fall and no tet turns over. Converting the deck to .cdb gives back its
+  fall (beyond 1e-12, the rounding of the written digits) and no tet turns
+  over. Converting the deck to .cdb gives back its
   bytes. The other example decks hold no tets and are refused.
 - Decks written here (a jittered Kuhn lattice, node numbers with a jump):
   SOLID185 degenerate tets (I,J,K,K,M,M,M,M) smooth as 4-node tets; SOLID187
@@ -25,8 +26,8 @@ What is checked, and why:
   component names its region; node components (a range "a -b" and single
   nodes), D, F, BF, IC, M, CP and CE on interior nodes, a non-solid EBLOCK
   (SURF154, "EBLOCK,10,,,n") and a SHELL181 pin exactly their nodes (as
-  tetsmooth:fixed in VTU output shows), and each of those nodes moves when
-  nothing pins it, so that a pin is told from a node that stays anyway;
+  tetsmooth:fixed in VTU output shows), and some of those nodes move when
+  nothing pins them, so that a pin is told from a node that stays anyway;
   D,ALL is noted as a selection tetsmooth does not follow; D and F with
   NEND and NINC pin the whole range they name; a moved record keeps its
   rotation angles (mapdl-archive reads them), and a record with Z left off

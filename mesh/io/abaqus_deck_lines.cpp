@@ -49,12 +49,6 @@ std::string in_full(const std::string& name, const Names& names, NameOf name_of,
   throw std::invalid_argument(std::string(what) + " " + name + " could be short for " + list + ": write more of it");
 }
 
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
-}
-
 bool is_comment(std::string_view line) {
   const std::string_view t = trimmed(line);
   return t.empty() || t.substr(0, 2) == "**";

@@ -58,12 +58,6 @@ bool take_item(std::string_view& s, BlockFormat& f) {
 
 }  // namespace
 
-std::string_view trimmed(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
-  return s;
-}
-
 std::optional<BlockFormat> parse_block_format(std::string_view line) {
   std::string_view s = trimmed(line);
   if (s.size() < 2 || s.front() != '(' || s.back() != ')') return std::nullopt;

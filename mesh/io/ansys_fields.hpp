@@ -23,9 +23,6 @@ struct BlockFormat {
 // (any case; blanks around it are allowed).
 std::optional<BlockFormat> parse_block_format(std::string_view line);
 
-// `text` without the blanks (spaces, tabs, and a CR at its end) around it.
-std::string_view trimmed(std::string_view text);
-
 // The text of `line` from `start` on, `width` characters at most (empty
 // past the end: records may leave trailing fields off).
 std::string_view field_at(std::string_view line, std::size_t start, std::size_t width);

@@ -5,7 +5,6 @@
 // ansys_resolve.cpp then turns numbers into the mesh, its regions and its
 // pins, since a component or a load may name items before or after the
 // block that defines them.
-#include <climits>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -125,10 +124,10 @@ class FileReader {
   std::vector<std::string> generated_;      // commands that make coupled sets or equations from others
   // Each element's tet (or -1).
   std::vector<long long> tet_of_element_;
-  // Each element's MAT where it passes through as a solid, else kNoSolid.
-  static constexpr long long kNoSolid = LLONG_MIN;
-  std::vector<long long> solid_tag_of_element_;
-  std::vector<std::pair<std::size_t, std::size_t>> block_element_;  // (block, place in it) of those
+  // Each element's (block, place in it) where it passes through as a
+  // solid, else kNotPassed.
+  static constexpr std::pair<std::size_t, std::size_t> kNotPassed{SIZE_MAX, 0};
+  std::vector<std::pair<std::size_t, std::size_t>> block_element_;
 };
 
 }  // namespace tetsmooth::ansys

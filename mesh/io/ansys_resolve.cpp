@@ -64,8 +64,7 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
   std::vector<index_t> index;  // an element's nodes, -1 where it lists none
   std::set<std::string> uncarried;
   tet_of_element_.assign(elements_.size(), -1);
-  solid_tag_of_element_.assign(elements_.size(), kNoSolid);
-  block_element_.assign(elements_.size(), {0, 0});
+  block_element_.assign(elements_.size(), kNotPassed);
   for (std::size_t i = 0; i < elements_.size(); ++i) {
     const Element& el = elements_[i];
     const long long* listed_nodes = element_nodes_.data() + el.first;
@@ -111,7 +110,6 @@ void FileReader::resolve_elements(const IdIndex& nodes) {
       block_element_[i] = {at->second, b.tags.size()};
       b.tags.push_back(el.mat);
       b.element_tags.push_back(el.number);
-      solid_tag_of_element_[i] = el.mat;
       continue;
     }
     const std::string& name = type->second.name;
@@ -139,7 +137,7 @@ void FileReader::resolve_regions(const IdIndex& elements) {
     }
     places.erase(
         std::remove_if(places.begin(), places.end(),
-                       [&](std::size_t p) { return tet_of_element_[p] < 0 && solid_tag_of_element_[p] == kNoSolid; }),
+                       [&](std::size_t p) { return tet_of_element_[p] < 0 && block_element_[p] == kNotPassed; }),
         places.end());
     std::sort(places.begin(), places.end());
     if (!places.empty()) solid_sets.emplace_back(&c, std::move(places));
@@ -154,9 +152,9 @@ void FileReader::resolve_regions(const IdIndex& elements) {
   for (std::size_t p = 0; p < elements_.size(); ++p)
     if (tet_of_element_[p] >= 0) solid_of[p] = tet_of_element_[p];
   for (std::size_t p = 0; p < elements_.size(); ++p)
-    if (solid_tag_of_element_[p] != kNoSolid) {
+    if (const auto [b, i] = block_element_[p]; b != kNotPassed.first) {
       solid_of[p] = static_cast<long long>(mats.size());
-      mats.push_back(static_cast<int>(solid_tag_of_element_[p]));
+      mats.push_back(e.blocks[b].tags[i]);
     }
   std::map<int, std::vector<std::size_t>> by_mat;
   for (std::size_t k = 0; k < mats.size(); ++k) by_mat[mats[k]].push_back(k);
@@ -180,10 +178,8 @@ void FileReader::resolve_regions(const IdIndex& elements) {
   // The regions into the tets and the pass-through solids' blocks.
   std::copy_n(regions.begin(), e.tet_tags.size(), e.tet_tags.begin());
   for (std::size_t p = 0; p < elements_.size(); ++p)
-    if (solid_tag_of_element_[p] != kNoSolid) {
-      const auto [b, i] = block_element_[p];
+    if (const auto [b, i] = block_element_[p]; b != kNotPassed.first)
       e.blocks[b].tags[i] = regions[static_cast<std::size_t>(solid_of[p])];
-    }
   std::map<int, std::size_t> region_size;
   for (int tag : regions) ++region_size[tag];
   RegionNames names;

@@ -86,7 +86,7 @@ void write_nblock(const std::string& body, const TetMesh& mesh, std::size_t& nod
         text.append(rw - was.size(), ' ');
       } else if (!ansys::format_real(xyz[c], f, text)) {
         throw OutputError("node " + std::to_string(mesh.extras.node_tags[node]) + "'s coordinate " + shortest(xyz[c]) +
-                          " does not fit its NBLOCK's format " + quoted_token(ansys::trimmed(first)));
+                          " does not fit its NBLOCK's format " + quoted_token(trimmed(first)));
       }
     }
     if (record.size() > ints_end + 3 * rw)

@@ -31,6 +31,9 @@ std::string quoted_token(std::string_view token);
 // (legacy VTK keywords, Abaqus and Nastran names).
 std::string upper_case(std::string_view text);
 
+// `text` without the white space (blanks, tabs, a CR) at either end.
+std::string_view trimmed(std::string_view text);
+
 // "a, b, c": a list for a message or a note.
 std::string joined(const std::vector<std::string>& items);
 

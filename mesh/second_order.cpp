@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "mesh/errors.hpp"
+#include "mesh/tet_quality.hpp"
 #include "mesh/vec3.hpp"
 
 namespace tetsmooth {
@@ -193,6 +194,29 @@ void append_file_tet(TetMesh& mesh, const index_t* nodes, bool ten, const Midsid
 void file_tet10(const TetMesh& mesh, std::size_t t, const MidsidePlaces& places, index_t* out) {
   std::copy(&mesh.tets[4 * t], &mesh.tets[4 * t] + 4, out);
   for (int e = 0; e < 6; ++e) out[places[e]] = mesh.midsides[6 * t + static_cast<std::size_t>(e)];
+}
+
+std::size_t turn_left_handed_tets(TetMesh& mesh) {
+  // Swapping corners 1 and 2 swaps the tet's edges 0 and 2, and 4 and 5
+  // (kTetEdges).
+  constexpr int kTurnedEdges[6] = {2, 1, 0, 3, 5, 4};
+  std::size_t turned = 0;
+  const auto at = [&](index_t n) {
+    const double* p = &mesh.xyz[3 * static_cast<std::size_t>(n)];
+    return Vec3<double>{p[0], p[1], p[2]};
+  };
+  for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
+    index_t* c = &mesh.tets[4 * t];
+    if (signed_volume6(at(c[0]), at(c[1]), at(c[2]), at(c[3])) >= 0) continue;
+    std::swap(c[1], c[2]);
+    if (!mesh.midsides.empty()) {
+      index_t m[6];
+      std::copy_n(&mesh.midsides[6 * t], 6, m);
+      for (std::size_t e = 0; e < 6; ++e) mesh.midsides[6 * t + e] = m[kTurnedEdges[e]];
+    }
+    ++turned;
+  }
+  return turned;
 }
 
 std::string mixed_tet_kinds(int nodes) {

@@ -91,6 +91,12 @@ void append_file_tet(TetMesh& mesh, const index_t* nodes, bool ten, const Midsid
 // Tet t's ten nodes in a file's order, into out[0..9].
 void file_tet10(const TetMesh& mesh, std::size_t t, const MidsidePlaces& places, index_t* out);
 
+// Turns every tet listed left-handed (negative signed volume) round by
+// swapping its corners 1 and 2, and its midside nodes with them, as the
+// readers of formats whose solvers take a tet's nodes in either handedness
+// (Nastran, LS-DYNA) do; returns how many it turned.
+std::size_t turn_left_handed_tets(TetMesh& mesh);
+
 // The message for a file whose tets are not all of one kind, at its first
 // tet with `nodes` nodes (4 or 10) after tets of the other kind.
 std::string mixed_tet_kinds(int nodes);

@@ -25,3 +25,9 @@ if ! PYTHONPATH="$pydeps" /usr/bin/python3 -c "import mapdl_archive" 2>/dev/null
   echo "install_deps: installing mapdl-archive 0.4.2 into $pydeps" >&2
   /usr/bin/python3 -m pip install -q --disable-pip-version-check --root-user-action=ignore --no-deps --target "$pydeps" mapdl-archive==0.4.2
 fi
+# LS-DYNA keyword decks likewise, against lsdyna-mesh-reader (PyPI, by the
+# author of mapdl-archive).
+if ! PYTHONPATH="$pydeps" /usr/bin/python3 -c "import lsdyna_mesh_reader" 2>/dev/null; then
+  echo "install_deps: installing lsdyna-mesh-reader 0.2.1 into $pydeps" >&2
+  /usr/bin/python3 -m pip install -q --disable-pip-version-check --root-user-action=ignore --no-deps --target "$pydeps" lsdyna-mesh-reader==0.2.1
+fi

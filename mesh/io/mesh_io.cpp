@@ -11,6 +11,7 @@
 #include "mesh/io/exodus_io.hpp"
 #include "mesh/io/flac3d_io.hpp"
 #include "mesh/io/gmsh_io.hpp"
+#include "mesh/io/lsdyna_io.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/nastran_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
@@ -47,6 +48,8 @@ constexpr FormatName kNames[] = {
     {"exo", MeshFormat::Exodus},
     {"ansys", MeshFormat::Ansys},
     {"cdb", MeshFormat::Ansys},
+    {"lsdyna", MeshFormat::Lsdyna},
+    {"k", MeshFormat::Lsdyna},
 };
 
 struct Extension {
@@ -60,6 +63,7 @@ constexpr Extension kExtensions[] = {
     {".f3grid", MeshFormat::Flac3d}, {".flac3d", MeshFormat::Flac3d},
     {".exo", MeshFormat::Exodus},  {".e", MeshFormat::Exodus}, {".ex2", MeshFormat::Exodus},
     {".g", MeshFormat::Exodus},    {".gen", MeshFormat::Exodus}, {".cdb", MeshFormat::Ansys},
+    {".k", MeshFormat::Lsdyna},    {".key", MeshFormat::Lsdyna}, {".dyn", MeshFormat::Lsdyna},
 };
 
 std::string lower(std::string s) {
@@ -86,7 +90,7 @@ MeshFormat parse_format(const std::string& name) {
   for (const FormatName& f : kNames)
     if (key == f.name) return f.format;
   throw UsageError("unknown mesh format '" + name +
-                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran, flac3d, exodus or ansys)");
+                   "' (expected tetgen, vtu, vtk, msh, msh41, msh41-binary, msh22, medit, tsm, abaqus, nastran, flac3d, exodus, ansys or lsdyna)");
 }
 
 const char* format_name(MeshFormat f) {
@@ -137,6 +141,8 @@ TetMesh read_mesh(const std::string& path, MeshFormat format) {
       return read_exodus_file(path);
     case MeshFormat::Ansys:
       return read_ansys_file(path);
+    case MeshFormat::Lsdyna:
+      return read_lsdyna_file(path);
     case MeshFormat::Auto:
       break;
   }
@@ -171,6 +177,8 @@ void write_mesh(const TetMesh& mesh, const std::string& path, MeshFormat format,
       return write_exodus_file(mesh, path);
     case MeshFormat::Ansys:
       return write_ansys_file(mesh, path);
+    case MeshFormat::Lsdyna:
+      return write_lsdyna_file(mesh, path);
     case MeshFormat::Auto:
       break;
   }

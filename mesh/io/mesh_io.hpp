@@ -27,10 +27,11 @@ enum class MeshFormat {
   Flac3d,       // FLAC3D grid .f3grid, .flac3d (text or binary; new grids are text)
   Exodus,       // Exodus II .exo, .e, .ex2, .g, .gen (netCDF; exodus_io.hpp)
   Ansys,        // ANSYS Mechanical APDL archive .cdb (ansys_io.hpp)
+  Lsdyna,       // LS-DYNA keyword deck .k, .key, .dyn (lsdyna_io.hpp)
 };
 
 // Parses a --format value ("tetgen", "vtu", "vtk", "msh", "msh41", "msh41-binary",
-// "msh22", "medit", "tsm", "abaqus" or "inp", "nastran" or "bdf", "flac3d" or "f3grid", "exodus" or "exo", "ansys" or "cdb"); throws UsageError for anything else.
+// "msh22", "medit", "tsm", "abaqus" or "inp", "nastran" or "bdf", "flac3d" or "f3grid", "exodus" or "exo", "ansys" or "cdb", "lsdyna" or "k"); throws UsageError for anything else.
 MeshFormat parse_format(const std::string& name);
 const char* format_name(MeshFormat f);
 

@@ -57,7 +57,6 @@ class DeckReader {
   void resolve_pins(const IdIndex& nodes);
   index_t node_of(long long id, const IdIndex& nodes, std::uint32_t mark, long long element) const;
   bool scalar_point(long long id) const;
-  std::size_t orient_tets();
 
   BulkCards& cards_;
   std::string source_;

@@ -3,21 +3,15 @@
 // right-handed), pass-through blocks, regions and pins, by the rules of
 // nastran_io.hpp.
 #include <algorithm>
-#include <array>
 #include <limits>
 
 #include "mesh/errors.hpp"
 #include "mesh/second_order.hpp"
-#include "mesh/tet_quality.hpp"
 #include "mesh/io/nastran_reader.hpp"
 #include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::nastran {
 namespace {
-
-// A tet turned round by swapping corners 1 and 2 has its edges 0 and 2, and
-// 4 and 5, swapped (kTetEdges).
-constexpr std::array<int, 6> kTurnedEdges = {2, 1, 0, 3, 5, 4};
 
 bool blank_or_zero(const std::string& field) { return field.empty() || field == "0"; }
 
@@ -35,28 +29,6 @@ bool DeckReader::scalar_point(long long id) const {
   // scalar_points_ is sorted and merged (resolve_pins).
   const auto after = std::upper_bound(scalar_points_.begin(), scalar_points_.end(), std::make_pair(id, std::numeric_limits<long long>::max()));
   return after != scalar_points_.begin() && id <= (after - 1)->second;
-}
-
-std::size_t DeckReader::orient_tets() {
-  // Nastran takes a CTETRA's grid points in either order: one listed
-  // left-handed is turned round, as the mesh's tets are right-handed.
-  std::size_t turned = 0;
-  const auto at = [&](index_t n) {
-    const double* p = &mesh_.xyz[3 * static_cast<std::size_t>(n)];
-    return Vec3<double>{p[0], p[1], p[2]};
-  };
-  for (std::size_t t = 0; t < mesh_.num_tets(); ++t) {
-    index_t* c = &mesh_.tets[4 * t];
-    if (signed_volume6(at(c[0]), at(c[1]), at(c[2]), at(c[3])) >= 0) continue;
-    std::swap(c[1], c[2]);
-    if (!mesh_.midsides.empty()) {
-      std::array<index_t, 6> m;
-      std::copy_n(&mesh_.midsides[6 * t], 6, m.begin());
-      for (std::size_t e = 0; e < 6; ++e) mesh_.midsides[6 * t + e] = m[static_cast<std::size_t>(kTurnedEdges[e])];
-    }
-    ++turned;
-  }
-  return turned;
 }
 
 void DeckReader::resolve_pins(const IdIndex& nodes) {
@@ -113,7 +85,7 @@ void DeckReader::resolve() {
       tet[k] = node_of(tet_grids_[each * t + k], nodes, tet_marks_[t], e.tet_element_tags[t]);
     append_file_tet(mesh_, tet, each == 10, kCtetraMidsides);
   }
-  if (const std::size_t turned = orient_tets(); turned > 0)
+  if (const std::size_t turned = turn_left_handed_tets(mesh_); turned > 0)
     e.read_notes.push_back(std::to_string(turned) + " of the " + std::to_string(mesh_.num_tets()) +
                            " CTETRA list their grid points left-handed, which Nastran takes: they are read turned "
                            "round (G2 and G3 swapped), and the deck keeps them as written");

@@ -11,6 +11,7 @@
 #include "mesh/topology.hpp"
 #include "mesh/io/abaqus_io.hpp"
 #include "mesh/io/ansys_io.hpp"
+#include "mesh/io/lsdyna_io.hpp"
 #include "mesh/io/exodus_io.hpp"
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/flac3d_io.hpp"
@@ -88,6 +89,8 @@ void write_probe(const TetMesh& probe, MeshFormat format, std::ostream& out) {
       return check_exodus_writable(probe);
     case MeshFormat::Ansys:
       return write_ansys(probe, out);
+    case MeshFormat::Lsdyna:
+      return write_lsdyna(probe, out);
     case MeshFormat::Auto:
       break;
   }
@@ -129,15 +132,15 @@ std::vector<std::uint8_t> kept_interface_nodes(const TetMesh& mesh, MeshFormat f
 // Pinned nodes that the format loses and that a later run would move: VTU,
 // VTK, Medit (RequiredVertices), Abaqus (the deck, or a node set) and
 // Nastran and FLAC3D (the deck or grid, or a comment it reads back) and
-// Exodus (the file, or a node set) and ANSYS (the file, or a node
-// component) write every pin, MSH only
+// Exodus (the file, or a node set), ANSYS (the file, or a node
+// component) and LS-DYNA (the deck, or a node set) write every pin, MSH only
 // element nodes,
 // TetGen and .tsm none. Boundary nodes stay fixed anyway, and so do nodes on
 // an interface where the format keeps what tells of it.
 std::size_t pins_lost(const TetMesh& mesh, MeshFormat format) {
   if (mesh.fixed.empty() || format == MeshFormat::Vtu || format == MeshFormat::Vtk || format == MeshFormat::Medit ||
       format == MeshFormat::Abaqus || format == MeshFormat::Nastran || format == MeshFormat::Flac3d ||
-      format == MeshFormat::Exodus || format == MeshFormat::Ansys)
+      format == MeshFormat::Exodus || format == MeshFormat::Ansys || format == MeshFormat::Lsdyna)
     return 0;
   std::vector<std::uint8_t> kept(mesh.num_nodes(), 0);
   if (format != MeshFormat::TetGen && format != MeshFormat::Cache) mark_element_nodes(mesh.extras.blocks, kept);
@@ -269,18 +272,20 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   const bool flac3d = raw_section(e, "flac3d:deck") != nullptr;
   const bool exodus = raw_section(e, "exodus:deck") != nullptr;
   const bool ansys = raw_section(e, "ansys:deck") != nullptr;
+  const bool lsdyna = raw_section(e, "lsdyna:deck") != nullptr;
   const bool keeps_numbers = msh || f == MeshFormat::Abaqus || f == MeshFormat::Nastran || f == MeshFormat::Flac3d ||
-                             f == MeshFormat::Exodus || f == MeshFormat::Ansys;
+                             f == MeshFormat::Exodus || f == MeshFormat::Ansys || f == MeshFormat::Lsdyna;
   if (!keeps_numbers && (node_ids || element_ids))
     notes.push_back(std::string(abaqus    ? "the Abaqus "
                                 : nastran ? "the Nastran "
                                 : flac3d  ? "the FLAC3D "
                                 : exodus  ? "the Exodus "
                                 : ansys   ? "the ANSYS "
+                                : lsdyna  ? "the LS-DYNA "
                                           : "the Gmsh ") +
                     (flac3d ? (node_ids && element_ids ? "gridpoint and zone" : node_ids ? "gridpoint" : "zone")
                             : (node_ids && element_ids ? "node and element" : node_ids ? "node" : "element")) +
-                    (abaqus || ansys ? " numbers" : nastran || flac3d || exodus ? " ids" : " tags") +
+                    (abaqus || ansys ? " numbers" : nastran || flac3d || exodus || lsdyna ? " ids" : " tags") +
                     " will not be written: " + name +
                     " numbers them by position");
   const std::string lost = f == MeshFormat::Abaqus ? abaqus_numbers_lost(mesh)
@@ -288,6 +293,7 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                            : f == MeshFormat::Flac3d  ? flac3d_numbers_lost(mesh)
                            : f == MeshFormat::Exodus  ? exodus_numbers_lost(mesh)
                            : f == MeshFormat::Ansys   ? ansys_numbers_lost(mesh)
+                           : f == MeshFormat::Lsdyna  ? lsdyna_numbers_lost(mesh)
                                                       : "";
   // MSH numbers every element in one sequence: ids that are distinct only
   // within their kind (FLAC3D's zones and faces) cannot all be kept.
@@ -298,7 +304,7 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                     std::to_string(gmsh::kLargestIntTag) + "): " + name + " numbers the elements 1, 2, ... instead");
   if (!lost.empty())
     notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct" +
-                    (f == MeshFormat::Nastran || f == MeshFormat::Ansys ? ", at most 99,999,999"
+                    (f == MeshFormat::Nastran || f == MeshFormat::Ansys || f == MeshFormat::Lsdyna ? ", at most 99,999,999"
                      : f == MeshFormat::Flac3d || f == MeshFormat::Exodus ? ", at most 2,147,483,647"
                                                : "") +
                     "): " + name + " numbers them 1, 2, ... instead");
@@ -332,6 +338,24 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   if (const std::string* types = raw_section(e, "ansys:uncarried"); types != nullptr && f != MeshFormat::Ansys)
     notes.push_back("the " + *types + " elements will not be written: " + name +
                     " has no place for them (their nodes were pinned)");
+  if (const std::string* files = raw_section(e, "lsdyna:includes"); files != nullptr && f == MeshFormat::Lsdyna)
+    notes.push_back("the *INCLUDE files (" + *files + ") will be written inline, in the one output deck");
+  if (const std::string* keywords = raw_section(e, "lsdyna:keywords"); keywords != nullptr && f != MeshFormat::Lsdyna)
+    notes.push_back("the rest of the LS-DYNA deck (" + *keywords + ") will not be written: " + name +
+                    " holds the mesh alone");
+  if (const std::string* types = raw_section(e, "lsdyna:uncarried"); types != nullptr && f != MeshFormat::Lsdyna)
+    notes.push_back("the elements of " + *types + " that other formats have no shape for will not be written: " +
+                    name + " has no place for them (their nodes were pinned)");
+  if (f == MeshFormat::Lsdyna && !lsdyna) {
+    std::string kinds;
+    for (const PassThroughBlock& b : e.blocks)
+      if (const std::size_t n = elements_in(b); n > 0 && !lsdyna_writes_block(b))
+        kinds += (kinds.empty() ? "" : ", ") + count_of(n, b.kind);
+    if (!kinds.empty())
+      notes.push_back(kinds + " will not be written: a new " + name +
+                      " deck holds solids, shells and beams (their nodes are pinned in the node set "
+                      "TETSMOOTH_PINNED)");
+  }
   if (f == MeshFormat::Ansys && !ansys) {
     std::string kinds;
     for (const PassThroughBlock& b : e.blocks)
@@ -352,22 +376,25 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                       " holds tets, bricks, wedges, pyramids, triangles and quads (their nodes are listed as pins)");
   }
   // MSH writes the names of the regions as physical names, FLAC3D as its
-  // groups' names, Exodus as its blocks' names, ANSYS as its components'.
+  // groups' names, Exodus as its blocks' names, ANSYS as its components',
+  // LS-DYNA as its parts' headings.
   // (Exodus writes every kind of element the readers give: none is
   // dropped.)
-  const bool keeps_names = msh || f == MeshFormat::Flac3d || f == MeshFormat::Exodus || f == MeshFormat::Ansys;
+  const bool keeps_names = msh || f == MeshFormat::Flac3d || f == MeshFormat::Exodus || f == MeshFormat::Ansys ||
+                          f == MeshFormat::Lsdyna;
   // An Abaqus deck kept keeps its set names; a new one names its sets by tag.
-  if ((abaqus || flac3d || exodus || ansys) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&
+  if ((abaqus || flac3d || exodus || ansys || lsdyna) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&
       raw_section(e, "$PhysicalNames") != nullptr)
     notes.push_back(std::string("the names of the regions (the ") +
                     (abaqus   ? "deck's element sets"
                      : flac3d ? "grid's zone and face groups"
                      : ansys  ? "file's element components"
+                     : lsdyna ? "deck's part headings"
                               : "file's element block names") +
                     ") will not be written: " +
                     name + (f == MeshFormat::Abaqus ? " names the element sets of a new deck by region tag"
                                                     : " has no place for them"));
-  if (!msh && !abaqus && !flac3d && !exodus && !ansys) {
+  if (!msh && !abaqus && !flac3d && !exodus && !ansys && !lsdyna) {
     const bool names = !keeps_names && raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);
     if (names || entities)
@@ -387,21 +414,25 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back("negative region tags are written as new positive ones (" + pairs +
                     "): MSH physical tags are positive");
   }
-  if ((f == MeshFormat::Nastran && !nastran) || (f == MeshFormat::Ansys && !ansys)) {
+  if ((f == MeshFormat::Nastran && !nastran) || (f == MeshFormat::Ansys && !ansys) ||
+      (f == MeshFormat::Lsdyna && !lsdyna)) {
     // Tags the mesh has that are no PIDs (materials); a mesh without tags
     // has none to lose.
     const auto not_id = [](int t) { return t <= 0 || t > 99999999; };
     bool tag_lost = std::any_of(e.tet_tags.begin(), e.tet_tags.end(), not_id);
     for (const PassThroughBlock& b : e.blocks) tag_lost = tag_lost || std::any_of(b.tags.begin(), b.tags.end(), not_id);
     std::string pairs;
-    for (const auto& [from, to] : f == MeshFormat::Nastran ? nastran_new_pids(mesh) : ansys_new_materials(mesh))
+    for (const auto& [from, to] : f == MeshFormat::Nastran ? nastran_new_pids(mesh)
+                                  : f == MeshFormat::Ansys ? ansys_new_materials(mesh)
+                                                           : lsdyna_new_pids(mesh))
       pairs += (pairs.empty() ? "" : ", ") + std::to_string(from) + " as " + std::to_string(to);
     if (tag_lost && !pairs.empty())
-      notes.push_back(f == MeshFormat::Nastran
-                          ? "region tags that are no PIDs are written as new ones (" + pairs +
-                                "): Nastran's PIDs are positive, of at most 8 digits"
-                          : "region tags that are no material numbers are written as new ones (" + pairs +
-                                "): ANSYS's material numbers are positive");
+      notes.push_back(f == MeshFormat::Ansys
+                          ? "region tags that are no material numbers are written as new ones (" + pairs +
+                                "): ANSYS's material numbers are positive"
+                          : "region tags that are no PIDs are written as new ones (" + pairs + "): " +
+                                (f == MeshFormat::Nastran ? "Nastran's" : "LS-DYNA's") +
+                                " PIDs are positive, of at most 8 digits");
   }
   if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
     const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));

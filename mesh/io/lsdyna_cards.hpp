@@ -1,0 +1,61 @@
+#pragma once
+// The lines of an LS-DYNA keyword deck, field by field (not a public API;
+// lsdyna_io.hpp describes the deck).
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tetsmooth::lsdyna {
+
+// Column layouts: standard (ids in 8 or 10 columns), I10 (ids in 10) and
+// long (every field in 20, which is not read).
+enum class Layout { Standard, I10, Long };
+
+// A keyword line: "*NODE %" is {"NODE", I10, true}.
+struct Keyword {
+  std::string name;  // upper case, without the '*' and the layout mark
+  Layout layout = Layout::Standard;
+  bool marked = false;  // a '+', '%' or '-' gave the layout
+  std::string rest;     // what follows the name and the mark on the line (*KEYWORD's options)
+};
+// `line` starts with '*'.
+Keyword keyword_of(std::string_view line);
+
+// A card's fields: the columns of `widths` in fixed format, or the texts
+// between commas where the line has one (free format), each without its
+// blanks; fields the line does not reach are empty.
+struct Card {
+  std::vector<std::string_view> fields;
+  bool free = false;
+  const std::string_view& operator[](std::size_t k) const;  // "" past the last field
+
+ private:
+  static const std::string_view kBlank;
+};
+Card card_of(std::string_view line, const std::vector<int>& widths);
+
+// A whole number: blank is 0; "7", "+7", "7." and "7.0" are 7. False for
+// anything else.
+bool int_field(std::string_view field, long long& value);
+// A real as Fortran reads it (nastran_fields.hpp: parse_real_field): blank
+// is 0.
+bool real_field(std::string_view field, double& value);
+
+// `value` in a coordinate's 16 columns, right-aligned after at least one
+// blank so that the fields stay apart to the eye and to readers that split
+// at blanks: nastran::real_field in 15 columns (the shortest form that
+// reads back exactly where it fits, else 14 significant digits or more for
+// exponents of two digits).
+std::string coordinate_field(double value);
+// `value` with every digit it needs, for a free-format card.
+std::string shortest_real(double value);
+
+// The widths of the fields of *NODE and of the ten-field element cards.
+const std::vector<int>& node_widths(Layout layout);
+const std::vector<int>& element_widths(Layout layout);
+// The widths of the eight-field cards most other keywords use (10 columns).
+const std::vector<int>& wide_widths();
+
+}  // namespace tetsmooth::lsdyna

@@ -44,6 +44,9 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
   .cdb        ansys         ANSYS Mechanical APDL archive (CDWRITE; a file read is
                             written back whole, moved NBLOCK records rewritten;
                             materials are regions, node components pinned)
+  .k/.key     lsdyna        LS-DYNA keyword deck (.dyn too; a deck read is written
+                            back whole, moved *NODE cards rewritten; parts are
+                            regions, node sets and constrained nodes pinned)
   .tsm        tsm           tetsmooth binary cache
 )";
 

@@ -159,7 +159,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
     const auto stay = [](std::size_t n) { return n == 1 ? " stays fixed" : " stay fixed"; };
     if (const std::size_t n = pins.added_on_interfaces(); n > 0)
       console.note(counted(n, "node", "nodes") +
-                   " on interfaces between regions (tets of different region tags, Abaqus sections, Nastran PIDs, FLAC3D groups, Exodus blocks, ANSYS materials or Gmsh volumes)" + stay(n));
+                   " on interfaces between regions (tets of different region tags, Abaqus sections, Nastran PIDs, FLAC3D groups, Exodus blocks, ANSYS materials, LS-DYNA parts or Gmsh volumes)" + stay(n));
     if (const std::size_t n = pins.added_on_features(); n > 0)
       console.note(counted(n, "node", "nodes") + " on Gmsh points, curves or surfaces inside the mesh" + stay(n));
     const std::size_t curved = record.curved_tets = pins.curved_tets(), corners = pins.added_at_curved_tets();

@@ -235,7 +235,7 @@ void mark_midsides_of_marked_edges(const TetMesh& mesh, std::vector<std::uint8_t
 void check_first_order_output(const TetMesh& mesh, const std::string& format) {
   if (!mesh.midsides.empty())
     throw OutputError(format +
-                      " output holds 4-node tets only; write MSH, VTU, VTK, TetGen, Abaqus, Nastran, Exodus or ANSYS to keep the 10-node tets");
+                      " output holds 4-node tets only; write MSH, VTU, VTK, TetGen, Abaqus, Nastran, Exodus, ANSYS or LS-DYNA to keep the 10-node tets");
 }
 
 }  // namespace tetsmooth

@@ -62,10 +62,11 @@
 //    "lsdyna:includes" (the files *INCLUDE read).
 //
 // Writing: a mesh read from a deck is written as that deck, line for line,
-// but for the *NODE cards of nodes whose coordinates changed: their X, Y
-// and Z in the card's own layout (16 columns each, lsdyna_cards.hpp:
+// but for the *NODE cards of nodes whose coordinates changed: the X, Y and
+// Z that changed in the card's own layout (16 columns each, lsdyna_cards.hpp:
 // coordinate_field; free-format cards with every digit), their NID, TC,
-// RC and anything after them as read. Line ends become '\n', and included
+// RC, anything after them and the coordinates that did not change as
+// read. Line ends become '\n', and included
 // files are written in place of their *INCLUDE. The mesh must still have
 // the deck's node and tet counts.
 // Any other mesh is written as a new deck in the standard layout: *PART

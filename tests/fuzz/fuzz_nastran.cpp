@@ -5,8 +5,6 @@
 // rounded coordinates may turn a flat tet round) and pins, and coordinates
 // within the large field's rounding. Reading back what the writer wrote
 // must never fail.
-#include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "fuzz_reader.hpp"
@@ -22,25 +20,6 @@ TetMesh read_back(const TetMesh& mesh, const char* what) {
       [](std::istream& in, const char* source) { return read_nastran(in, source); }, what);
 }
 
-std::vector<std::array<index_t, 4>> corner_sets(const TetMesh& mesh) {
-  std::vector<std::array<index_t, 4>> sets(mesh.num_tets());
-  for (std::size_t t = 0; t < sets.size(); ++t) {
-    std::copy_n(&mesh.tets[4 * t], 4, sets[t].begin());
-    std::sort(sets[t].begin(), sets[t].end());
-  }
-  return sets;
-}
-
-void require_close(const TetMesh& again, const TetMesh& mesh, const char* what) {
-  bool close = again.xyz.size() == mesh.xyz.size();
-  for (std::size_t k = 0; close && k < mesh.xyz.size(); ++k)
-    close = std::fabs(again.xyz[k] - mesh.xyz[k]) <= 1e-8 * std::fabs(mesh.xyz[k]);
-  if (!close || corner_sets(again) != corner_sets(mesh) || again.fixed != mesh.fixed) {
-    std::fprintf(stderr, "the %s changed the mesh\n", what);
-    std::abort();
-  }
-}
-
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -50,9 +29,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     TetMesh moved = mesh;
     for (std::size_t k = 0; k < moved.xyz.size(); k += 4)
       if (std::fabs(moved.xyz[k]) < 1e300) moved.xyz[k] = moved.xyz[k] * (1 + 1.0 / 3) + 1.0 / 7;
-    require_close(read_back(moved, "deck with moved nodes"), moved, "deck with moved nodes");
+    fuzz::require_close(read_back(moved, "deck with moved nodes"), moved, "deck with moved nodes", 1e-8);
     TetMesh fresh = mesh;
     fresh.extras.raw_sections.clear();
-    require_close(read_back(fresh, "new deck"), fresh, "new deck");
+    fuzz::require_close(read_back(fresh, "new deck"), fresh, "new deck", 1e-8);
   });
 }

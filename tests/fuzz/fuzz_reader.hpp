@@ -3,12 +3,16 @@
 // stream. A reader must turn any bad input into InputError; every other
 // outcome (another exception, a crash, a sanitizer report, a broken round
 // trip) is a bug and escapes to libFuzzer, which saves the input.
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "mesh/errors.hpp"
 #include "mesh/tet_mesh.hpp"
@@ -45,6 +49,30 @@ TetMesh read_back(const TetMesh& mesh, Write write, Read read, const char* what)
 inline void require_same(const TetMesh& again, const TetMesh& mesh, const char* what) {
   if (again.xyz != mesh.xyz || again.tets != mesh.tets || again.fixed != mesh.fixed) {
     std::fprintf(stderr, "round trip through %s changed the mesh\n", what);
+    std::abort();
+  }
+}
+
+// Each tet's corners as a sorted set: the tets up to turning (rounded
+// coordinates may turn a flat tet round, which the decks' readers undo).
+inline std::vector<std::array<index_t, 4>> corner_sets(const TetMesh& mesh) {
+  std::vector<std::array<index_t, 4>> sets(mesh.num_tets());
+  for (std::size_t t = 0; t < sets.size(); ++t) {
+    std::copy_n(&mesh.tets[4 * t], 4, sets[t].begin());
+    std::sort(sets[t].begin(), sets[t].end());
+  }
+  return sets;
+}
+
+// A mesh written with rounded coordinates must read back with the same tets
+// (up to turning) and pins, and each coordinate within `relative` of its
+// value.
+inline void require_close(const TetMesh& again, const TetMesh& mesh, const char* what, double relative) {
+  bool close = again.xyz.size() == mesh.xyz.size();
+  for (std::size_t k = 0; close && k < mesh.xyz.size(); ++k)
+    close = std::fabs(again.xyz[k] - mesh.xyz[k]) <= relative * std::fabs(mesh.xyz[k]);
+  if (!close || corner_sets(again) != corner_sets(mesh) || again.fixed != mesh.fixed) {
+    std::fprintf(stderr, "the %s changed the mesh\n", what);
     std::abort();
   }
 }

@@ -129,9 +129,10 @@ TEST(LsdynaCards, KeywordsAndFields) {
     const double digits = std::abs(value) > 1e-99 && std::abs(value) < 1e99 ? 1e-13 : 1e-8;
     EXPECT_LE(std::abs(back - value), digits * std::abs(value)) << f;
   }
-  EXPECT_EQ(coordinate_field(0.25), "             .25");
-  EXPECT_EQ(shortest_real(0.1), "0.1");
-  EXPECT_EQ(shortest_real(2), "2.0");
+  EXPECT_EQ(coordinate_field(0.25), "            0.25");
+  EXPECT_EQ(coordinate_field(-1.0 / 3.0), " -0.333333333333");
+  EXPECT_EQ(free_coordinate(0.1), "0.1");
+  EXPECT_EQ(free_coordinate(-1.0 / 3.0), "-0.333333333333");
 }
 
 TEST(LsdynaRead, NodesTetsPartsAndIds) {
@@ -192,14 +193,24 @@ TEST(LsdynaRead, EveryFormOfTet) {
             std::string::npos);
 }
 
-TEST(LsdynaRead, LeftHandedTetsAreTurnedRound) {
+TEST(LsdynaRead, LeftHandedTetsAreInverted) {
+  // LS-DYNA takes a solid's nodes in one order: a left-handed tet is
+  // inverted, which smoothing may untangle, not a tet to turn round.
   const TetMesh mesh = read_text("*NODE\n" + node(1, "0", "0", "0") + node(2, "1", "0", "0") + node(3, "0", "1", "0") +
                                  node(4, "0", "0", "1") + "*ELEMENT_SOLID\n" + ints({1, 1, 1, 3, 2, 4, 4, 4, 4, 4}));
-  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3}));
-  ASSERT_EQ(mesh.extras.read_notes.size(), 1u);
-  EXPECT_NE(mesh.extras.read_notes[0].find("1 of the 1 tets list their nodes left-handed"), std::string::npos);
-  // The deck keeps them as written.
-  EXPECT_NE(write_text(mesh).find(ints({1, 1, 1, 3, 2, 4, 4, 4, 4, 4})), std::string::npos);
+  EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 2, 1, 3}));
+  EXPECT_TRUE(mesh.extras.read_notes.empty());
+}
+
+TEST(LsdynaRead, BlankCardsAreCards) {
+  // A blank set title, and a blank thickness card, are cards.
+  EXPECT_TRUE(node5_pinned("*SET_NODE_LIST_TITLE\n\n" + ints({1}, 10) + ints({5}, 10)));
+  EXPECT_TRUE(node5_pinned("*ELEMENT_SHELL_THICKNESS\n" + ints({21, 3, 1, 2, 3, 3}) + "\n" +
+                           ints({22, 3, 2, 3, 5, 5}) + "\n"));
+  // Keywords with a SET word in them name sets; OFFSET is none.
+  EXPECT_TRUE(read_text(with("*LOAD_NODE_SET\n1,1,1\n")).extras.read_notes.empty());
+  EXPECT_EQ(read_text(with("*ELEMENT_INERTIA_OFFSET\n" + ints({1, 5}))).extras.read_notes.size(), 1u);
+  EXPECT_EQ(read_text(with("*SET_NODE_GENERAL\n" + ints({1}, 10) + "PART,1\n")).extras.read_notes.size(), 1u);
 }
 
 TEST(LsdynaRead, OtherSolidsPassThroughRightHanded) {
@@ -303,14 +314,14 @@ TEST(LsdynaWrite, KeptDeckChangesOnlyMovedNodes) {
   mesh.xyz[12] = 0.25;  // node 5's x, in free format
   mesh.xyz[13] = 1.0 / 3.0;
   std::string expected = deck;
-  expected.replace(expected.find("5,0.3,0.2"), 9, "5,0.25,0.3333333333333333");
+  expected.replace(expected.find("5,0.3,0.2"), 9, "5,0.25,0.3333333333333");
   EXPECT_EQ(write_text(mesh), expected);
   mesh = read_text(deck);
   mesh.xyz[5] = -1.0 / 3.0;  // node 2's z: x and y keep their text, TC and RC stay
   expected = deck;
   const std::string before = node(2, "1.0", "0.0", "0.0", "       0       7");
   expected.replace(expected.find(before), before.size(),
-                   node(2, "1.0", "0.0", "-.3333333333333", "       0       7"));
+                   node(2, "1.0", "0.0", "-0.333333333333", "       0       7"));
   EXPECT_EQ(write_text(mesh), expected);
   // A mesh that is no longer the deck's is refused.
   mesh.tets.resize(12);
@@ -329,7 +340,7 @@ TEST(LsdynaWrite, NewDecksReadBack) {
   EXPECT_NE(text.find("TETSMOOTH_PINNED"), std::string::npos);
   const TetMesh back = read_text(text);
   EXPECT_EQ(back.tets, mesh.tets);
-  for (std::size_t i = 0; i < mesh.xyz.size(); ++i) EXPECT_NEAR(back.xyz[i], mesh.xyz[i], 1e-14);
+  for (std::size_t i = 0; i < mesh.xyz.size(); ++i) EXPECT_NEAR(back.xyz[i], mesh.xyz[i], 1e-12);
   EXPECT_EQ(back.extras.tet_tags[1], 3);
   EXPECT_EQ(back.extras.tet_tags[0], lsdyna_new_pids(mesh).at(-2));
   ASSERT_EQ(back.fixed.size(), mesh.num_nodes());
@@ -359,6 +370,12 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   const std::vector<std::string> notes = output_losses(mesh, "out.k");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_EQ(notes[0], "the *INCLUDE files (" + dir.file("mesh/nodes.k") + ") will be written inline, in the one output deck");
+  // An included file's *END ends that file alone, and stays out of the
+  // deck written.
+  std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD\n" << kNodes << "*END\nnot read\n";
+  const TetMesh ended = read_lsdyna_file(dir.file("main.k"));
+  EXPECT_EQ(ended.num_tets(), 4u);
+  EXPECT_EQ(write_text(ended), "*KEYWORD\n*KEYWORD\n" + kNodes + kSolids + "*END\n");
   std::ofstream(dir.file("mesh/nodes.k")) << kNodes << node(5, "1", "1", "1");
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
             dir.file("mesh/nodes.k") + ":8: node 5 is defined a second time");
@@ -374,7 +391,7 @@ TEST(LsdynaRead, ErrorsNameFileAndLine) {
   EXPECT_NE(read_error(with("*INCLUDE_PATH\n/tmp\n")).find("*INCLUDE_PATH is not read"), std::string::npos);
   EXPECT_NE(read_error(with("*ELEMENT_SOLID_H20\n")).find("*ELEMENT_SOLID_H20 is not read"), std::string::npos);
   EXPECT_EQ(read_error("*NODE\n" + node(1, "x", "0", "0")), "t.k:2: node 1: expected a finite coordinate, found 'x'");
-  EXPECT_EQ(read_error("*NODE\n&nid,0,0,0\n"), "t.k:2: expected a node id (NID) (a positive whole number), found '&nid'");
+  EXPECT_EQ(read_error("*NODE\n&nid,0,0,0\n"), "t.k:2: expected a node id (NID), a positive whole number, found '&nid'");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3, 9, 9, 9, 9, 9}))),
             "t.k:15: solid element 15 names node 9, which no *NODE defines");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({14, 1, 1, 2, 3, 5, 5, 5, 5, 5}))),

@@ -1,7 +1,6 @@
 // LS-DYNA keyword lines and card fields (lsdyna_cards.hpp).
 #include "mesh/io/lsdyna_cards.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "mesh/io/nastran_fields.hpp"
@@ -85,19 +84,19 @@ bool real_field(std::string_view field, double& value) {
 }
 
 std::string coordinate_field(double value) {
+  // Fortran reads ".5", but readers written in C may not (lsdyna-mesh-reader
+  // does not): a zero goes before the point.
   std::string field = nastran::real_field(value, 15);
+  const std::size_t sign = field[0] == '-' ? 1 : 0;
+  if (field[sign] == '.') {
+    field = nastran::real_field(value, 14);
+    if (field[sign] == '.') field.insert(sign, "0");
+  }
   field.insert(0, 16 - field.size(), ' ');
   return field;
 }
 
-std::string shortest_real(double value) {
-  char buf[32];
-  const auto result = std::to_chars(buf, buf + sizeof buf, value);
-  std::string s(buf, result.ptr);
-  // A point, so that the value reads as a real wherever the card is read.
-  if (s.find_first_of(".e") == std::string::npos) s += ".0";
-  return s;
-}
+std::string free_coordinate(double value) { return std::string(trimmed(coordinate_field(value))); }
 
 const std::vector<int>& node_widths(Layout layout) {
   static const std::vector<int> standard{8, 16, 16, 16, 8, 8}, i10{10, 16, 16, 16, 10, 10};

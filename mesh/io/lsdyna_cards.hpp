@@ -46,11 +46,12 @@ bool real_field(std::string_view field, double& value);
 // `value` in a coordinate's 16 columns, right-aligned after at least one
 // blank so that the fields stay apart to the eye and to readers that split
 // at blanks: nastran::real_field in 15 columns (the shortest form that
-// reads back exactly where it fits, else 14 significant digits or more for
-// exponents of two digits).
+// reads back exactly where it fits, else 13 significant digits or more for
+// exponents of two digits), with a 0 before a leading point.
 std::string coordinate_field(double value);
-// `value` with every digit it needs, for a free-format card.
-std::string shortest_real(double value);
+// coordinate_field without its blanks, for a free-format card, whose
+// fields may not be wider than in fixed columns.
+std::string free_coordinate(double value);
 
 // The widths of the fields of *NODE and of the ten-field element cards.
 const std::vector<int>& node_widths(Layout layout);

@@ -11,7 +11,8 @@
 // the keyword ("*NODE %") asks for it; the long layout ('+', LONG=Y or
 // LONG=S) is refused. *INCLUDE reads the file its next card names in place
 // (a relative path from the deck's directory; included_lines.hpp). Nothing
-// after *END is read (it is kept).
+// after *END is read: it is kept in the deck itself, and left out (with the
+// *END) in an included file, which *END ends alone.
 //
 // Reading (node and element ids are the deck's, kept as
 // FileExtras::node_tags and tet_element_tags):
@@ -23,9 +24,10 @@
 //    N1..N10 on the next. The PID (part) is the region tag. Tets are N1 N2
 //    N3 N4 N4 N4 N4 N4 (LS-DYNA's form), N1 N2 N3 N3 N4 N4 N4 N4, or N1..N4
 //    with N5..N8 0 or blank; 10-node tets list N1..N10 on the second card,
-//    the midside nodes in kTetEdges order (LS-DYNA's, as VTK's). Tets listed
-//    left-handed are turned round (N2 and N3 swapped), with a note; the deck
-//    keeps them as written. Bricks (8 distinct nodes), wedges (N1 N2 N3 N4
+//    the midside nodes in kTetEdges order (LS-DYNA's, as VTK's). A tet
+//    listed left-handed is inverted (LS-DYNA takes one order), not turned
+//    round. A blank line is a card of defaults (an option's card), but
+//    where an element's first card would come. Bricks (8 distinct nodes), wedges (N1 N2 N3 N4
 //    N5 N5 N6 N6) and pyramids (N1 N2 N3 N4 N5 N5 N5 N5) pass through and
 //    pin their nodes; other solids pin their nodes and stay in the deck.
 //    Other options of *ELEMENT_SOLID are refused.
@@ -64,7 +66,7 @@
 // Writing: a mesh read from a deck is written as that deck, line for line,
 // but for the *NODE cards of nodes whose coordinates changed: the X, Y and
 // Z that changed in the card's own layout (16 columns each, lsdyna_cards.hpp:
-// coordinate_field; free-format cards with every digit), their NID, TC,
+// coordinate_field; free-format cards in as many characters), their NID, TC,
 // RC, anything after them and the coordinates that did not change as
 // read. Line ends become '\n', and included
 // files are written in place of their *INCLUDE. The mesh must still have

@@ -54,11 +54,14 @@ std::vector<std::string> options_of(const std::string& name, std::string_view ba
 }
 
 // Whether a keyword not read names nodes, so that its nodes may move: the
-// element and constraint keywords, node keywords other than *NODE, and those
-// with _NODE in their name. Those that name node sets (_SET), which pin
-// their nodes anyway, and *SET_NODE_ADD, which names sets, are left out.
+// element and constraint keywords, node keywords other than *NODE, node sets
+// not read, and those with _NODE in their name. Those that name node sets
+// (a SET word: *LOAD_NODE_SET), which pin their nodes anyway, and
+// *SET_NODE_ADD, which names sets, are left out.
 bool names_nodes(const std::string& name) {
-  if (name.find("SET") != std::string::npos || name == "CONSTRAINED_NODAL_RIGID_BODY") return false;
+  if (starts_with(name, "SET_NODE")) return !starts_with(name, "SET_NODE_ADD");
+  const std::string words = "_" + name + "_";
+  if (words.find("_SET_") != std::string::npos || name == "CONSTRAINED_NODAL_RIGID_BODY") return false;
   return starts_with(name, "ELEMENT_") || starts_with(name, "CONSTRAINED_") || starts_with(name, "NODE_") ||
          name.find("_NODE") != std::string::npos;
 }
@@ -105,7 +108,7 @@ void DeckReader::keep(const std::string& line, bool node_data) {
 long long DeckReader::id_field(std::string_view field, const char* what, bool zero_allowed) const {
   long long v = 0;
   if (!int_field(field, v) || v < 0 || (v == 0 && !zero_allowed))
-    fail("expected " + std::string(what) + " (a positive whole number), found " +
+    fail("expected " + std::string(what) + ", a positive whole number, found " +
          (field.empty() ? std::string("a blank field") : quoted_token(field)));
   return v;
 }
@@ -138,7 +141,7 @@ void DeckReader::keyword(const std::string& line) {
              ") is not read: save the deck in the standard layout, or in the I10 layout for ids of 9 or 10 digits");
     if (options.find("I10=Y") != std::string::npos) deck_layout_ = layout_ = Layout::I10;
     if (k.marked) deck_layout_ = k.layout;
-    return add_once(keywords_, name);
+    return;
   }
   if (name == "END") {
     section_ = Section::Ended;
@@ -224,10 +227,13 @@ void DeckReader::keyword(const std::string& line) {
   if (section_ != Section::Other && layout_ == Layout::Long)
     fail("*" + name + " is in the long layout, which is not read: save the deck in the standard layout, or in the "
                       "I10 layout for ids of 9 or 10 digits");
-  if (section_ == Section::Shell || section_ == Section::Beam || section_ == Section::PinOnly)
-    add_once(uncarried_, name);
+  if (section_ == Section::PinOnly) add_once(uncarried_, name);
   if (section_ == Section::Other && names_nodes(name)) add_once(unread_, name);
-  if (section_ != Section::Node && section_ != Section::Solid) add_once(keywords_, name);
+  // The keywords other formats do not write (elements that only pin among
+  // them).
+  if (section_ != Section::Node && section_ != Section::Solid && section_ != Section::Shell &&
+      section_ != Section::Beam)
+    add_once(keywords_, name);
 }
 
 void DeckReader::node(const std::string& line) {
@@ -335,6 +341,7 @@ void DeckReader::shell(const Card& card) {
     } else if (all_equal(n, 4, 8, 0) && distinct(n, {0, 1, 2, 3})) {
       other_element("quad", 4, id, pid, n);
     } else {
+      add_once(uncarried_, "ELEMENT_SHELL (other than triangles and quads)");
       for (long long v : n)
         if (v > 0) pin_refs_.push_back(PinRef{v, v, keyword_, lines_.mark()});
     }
@@ -419,18 +426,21 @@ void DeckReader::data(const std::string& line) {
     case Section::Node:
       if (!blank) node(line);
       return keep(line, true);
+    // A blank line is a card of defaults (an option's card left blank), but
+    // where an element's first card would come, where it is skipped.
     case Section::Solid:
-      if (!blank) solid(card_of(line, element_widths(layout_)));
+      if (!blank || card_ != 0) solid(card_of(line, element_widths(layout_)));
       break;
     case Section::Shell:
-      if (!blank) shell(card_of(line, element_widths(layout_)));
+      if (!blank || card_ != 0) shell(card_of(line, element_widths(layout_)));
       break;
     case Section::Beam:
-      if (!blank) beam(card_of(line, element_widths(layout_)));
+      if (!blank || card_ != 0) beam(card_of(line, element_widths(layout_)));
       break;
     case Section::PinOnly:
-      if (!blank && card_ == 0) pin_fields(card_of(line, element_widths(layout_)), node_fields_);
-      if (!blank && ++card_ == cards_each_) card_ = 0;
+      if (blank && card_ == 0) break;
+      if (card_ == 0) pin_fields(card_of(line, element_widths(layout_)), node_fields_);
+      if (++card_ == cards_each_) card_ = 0;
       break;
     case Section::Part:
       part(line);  // a blank heading is a heading
@@ -438,7 +448,7 @@ void DeckReader::data(const std::string& line) {
     case Section::NodeSet:
     case Section::NodeRanges:
     case Section::Segments:
-      if (blank) break;
+      if (blank && !title_pending_ && !head_pending_) break;  // a title or an id card may be blank
       if (title_pending_) {
         title_pending_ = false;
       } else if (head_pending_) {
@@ -482,11 +492,13 @@ TetMesh DeckReader::read() {
       include_name_.clear();
     }
     depth = lines_.depth();
+    // An included file's *END ends that file alone: it and what follows are
+    // left out of the deck, which writes the file inline.
     if (section_ == Section::Ended) {
-      keep(line, false);
+      if (depth == 1) keep(line, false);
     } else if (!line.empty() && line[0] == '*') {
       keyword(line);
-      if (section_ != Section::Include) keep(line, false);
+      if (section_ != Section::Include && (section_ != Section::Ended || depth == 1)) keep(line, false);
     } else if (!line.empty() && line[0] == '$') {
       keep(line, section_ == Section::Node);
     } else {

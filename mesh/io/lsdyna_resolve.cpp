@@ -1,6 +1,6 @@
 // The LS-DYNA deck reader's second half (lsdyna_reader.hpp): once every card
-// is read, ids become indices, and the mesh gets its tets (turned
-// right-handed), pass-through blocks, region names and pins, by the rules of
+// is read, ids become indices, and the mesh gets its tets, pass-through
+// blocks, region names and pins, by the rules of
 // lsdyna_io.hpp.
 #include <algorithm>
 #include <set>
@@ -58,10 +58,8 @@ void DeckReader::resolve() {
                        "solid element " + std::to_string(e.tet_element_tags[t]));
     append_file_tet(mesh_, tet, each == 10, kMidsides);
   }
-  if (const std::size_t turned = turn_left_handed_tets(mesh_); turned > 0)
-    e.read_notes.push_back(std::to_string(turned) + " of the " + std::to_string(mesh_.num_tets()) +
-                           " tets list their nodes left-handed: they are read turned round (N2 and N3 swapped), "
-                           "and the deck keeps them as written");
+  // A left-handed tet is inverted (LS-DYNA takes a solid's nodes in one
+  // order), and smoothing may untangle it: it is not turned round.
   std::set<std::pair<int, int>> used;  // (dimension, PID) of the elements
   for (int pid : e.tet_tags) used.emplace(3, pid);
   for (const Others& o : others_) {

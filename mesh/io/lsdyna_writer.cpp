@@ -43,7 +43,7 @@ std::string node_card(const std::string& line, Layout layout, const double* xyz)
     std::vector<std::string> fields(card.fields.begin(), card.fields.end());
     fields.resize(std::max<std::size_t>(fields.size(), 4));
     for (std::size_t c = 0; c < 3; ++c)
-      if (was[c] != xyz[c]) fields[1 + c] = lsdyna::shortest_real(xyz[c]);
+      if (was[c] != xyz[c]) fields[1 + c] = lsdyna::free_coordinate(xyz[c]);
     std::string out;
     for (std::size_t k = 0; k < fields.size(); ++k) out += (k == 0 ? "" : ",") + fields[k];
     return out;
@@ -153,7 +153,10 @@ void write_parts(std::ostream& out, const TetMesh& mesh, const std::map<int, int
     for (int t : b.tags) add(kind_dimension(b.kind), t);
   }
   for (const auto& [pid, heading] : parts) {
-    out << "*PART\n$# title\n" << heading.substr(0, 80) << "\n$#     pid     secid       mid\n";
+    // A heading that would read as a keyword or a comment starts with a blank.
+    const bool marked = !heading.empty() && (heading[0] == '*' || heading[0] == '$');
+    out << "*PART\n$# title\n" << (marked ? " " : "") << heading.substr(0, marked ? 79 : 80)
+        << "\n$#     pid     secid       mid\n";
     put(out, pid, 10);
     out << '\n';
   }

@@ -105,7 +105,7 @@ MeshFormat format_from_path(const std::string& path, MeshFormat requested) {
   for (const Extension& e : kExtensions)
     if (ext == e.ext) return e.format;
   throw UsageError("cannot tell the mesh format of '" + path +
-                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d, .exo/.e/.g, .cdb or .tsm, or name the format "
+                   "' from its name: use .node/.ele, .vtu, .vtk, .msh, .mesh, .inp, .bdf/.nas, .f3grid/.flac3d, .exo/.e/.g, .cdb, .k/.key/.dyn or .tsm, or name the format "
                    "(--format for an input, --output-format for an output)");
 }
 

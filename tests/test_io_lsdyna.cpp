@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -18,6 +19,7 @@
 #include "mesh/io/lsdyna_io.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/region_sets.hpp"
+#include "mesh/io/text_lines.hpp"
 #include "mesh/io/writable_check.hpp"
 #include "mesh/tet_quality.hpp"
 #include "support/input_error.hpp"
@@ -118,18 +120,29 @@ TEST(LsdynaCards, KeywordsAndFields) {
   EXPECT_EQ(r, 0.0);
   EXPECT_FALSE(real_field("&x", r));
   EXPECT_FALSE(real_field("nan", r));
-  // A coordinate fills 16 columns after a blank, exactly where it fits.
-  for (const double value : {0.1, -9.5456041617964971, 1e-300, -1.7976931348623157e308, 123456789.0}) {
+  // A coordinate fills 16 columns after a blank, exactly where it fits,
+  // with a digit before its point and a sign before its exponent's digits
+  // (readers written in C read ".5" as garbage and "1.5E2" as 1.5).
+  for (const double value : {0.1, -9.5456041617964971, 1e-300, -1.7976931348623157e308, 123456789.0, 1.5e20,
+                             -0.123456789012345, 100.00000000000001, 4.9e-324}) {
     const std::string f = coordinate_field(value);
     ASSERT_EQ(f.size(), 16u) << value;
     EXPECT_EQ(f[0], ' ') << value;
+    const std::string_view text = trimmed(f);
+    EXPECT_TRUE(std::isdigit(static_cast<unsigned char>(text[text[0] == '-' ? 1 : 0]))) << f;
+    if (const std::size_t e = text.find('E'); e != std::string_view::npos) {
+      EXPECT_TRUE(text[e + 1] == '+' || text[e + 1] == '-') << f;
+    }
     double back = 0;
     ASSERT_TRUE(real_field(f, back)) << f;
-    // 14 significant digits or more where the exponent has two digits.
-    const double digits = std::abs(value) > 1e-99 && std::abs(value) < 1e99 ? 1e-13 : 1e-8;
+    // 12 significant digits or more for sizes from 0.1 to 1e12 (lsdyna_cards.hpp).
+    const double digits = std::abs(value) >= 0.1 && std::abs(value) < 1e12 ? 5e-12 : 5e-8;
     EXPECT_LE(std::abs(back - value), digits * std::abs(value)) << f;
   }
   EXPECT_EQ(coordinate_field(0.25), "            0.25");
+  EXPECT_EQ(coordinate_field(1.5e20), "         1.5E+20");
+  EXPECT_EQ(coordinate_field(-2.5e-7), "         -2.5E-7");
+  EXPECT_EQ(coordinate_field(100.00000000000001), "            100.");
   EXPECT_EQ(coordinate_field(-1.0 / 3.0), " -0.333333333333");
   EXPECT_EQ(free_coordinate(0.1), "0.1");
   EXPECT_EQ(free_coordinate(-1.0 / 3.0), "-0.333333333333");
@@ -375,7 +388,31 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD\n" << kNodes << "*END\nnot read\n";
   const TetMesh ended = read_lsdyna_file(dir.file("main.k"));
   EXPECT_EQ(ended.num_tets(), 4u);
-  EXPECT_EQ(write_text(ended), "*KEYWORD\n*KEYWORD\n" + kNodes + kSolids + "*END\n");
+  EXPECT_EQ(write_text(ended), "*KEYWORD\n$*KEYWORD\n" + kNodes + kSolids + "*END\n");
+  // An included file's layout: its *INCLUDE's mark, or its own *KEYWORD,
+  // which holds in that file alone. Written inline, its keywords carry it.
+  std::string i10_nodes = "*NODE\n";
+  for (std::size_t at = kNodes.find("\n", kNodes.find("\n") + 1) + 1; at < kNodes.size(); at = kNodes.find('\n', at) + 1)
+    i10_nodes += "  " + kNodes.substr(at, kNodes.find('\n', at) + 1 - at);  // ids in 10 columns
+  const std::string i10_written = "*NODE %\n" + i10_nodes.substr(6);
+  std::ofstream(dir.file("mesh/nodes.k")) << i10_nodes;
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE %\nmesh/nodes.k\n" << kSolids << "*END\n";
+  const TetMesh marked = read_lsdyna_file(dir.file("main.k"));
+  EXPECT_EQ(marked.num_tets(), 4u);
+  EXPECT_EQ(write_text(marked), "*KEYWORD\n" + i10_written + kSolids + "*END\n");
+  EXPECT_EQ(read_text(write_text(marked)).xyz, marked.xyz);
+  std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD I10=Y\n" << i10_nodes;
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nodes.k\n" << kSolids << "*END\n";
+  const TetMesh own = read_lsdyna_file(dir.file("main.k"));
+  EXPECT_EQ(own.num_tets(), 4u);
+  EXPECT_EQ(write_text(own), "*KEYWORD\n$*KEYWORD I10=Y\n" + i10_written + kSolids + "*END\n");
+  std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD\n" << kNodes << "*END\n";
+  std::ofstream(dir.file("main.k")) << "*KEYWORD I10=Y\n*INCLUDE -\nmesh/nodes.k\n*ELEMENT_SOLID -\n"
+                                    << kSolids.substr(kSolids.find('\n') + 1) << "*END\n";
+  EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
+            "*KEYWORD I10=Y\n$*KEYWORD\n" + std::string("*NODE -") + kNodes.substr(5) + "*ELEMENT_SOLID -\n" +
+                kSolids.substr(kSolids.find('\n') + 1) + "*END\n");
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nod +\nes.k\n" << kSolids << "*END\n";
   std::ofstream(dir.file("mesh/nodes.k")) << kNodes << node(5, "1", "1", "1");
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
             dir.file("mesh/nodes.k") + ":8: node 5 is defined a second time");

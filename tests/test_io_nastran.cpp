@@ -478,12 +478,20 @@ TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
   EXPECT_EQ(nastran::real_field(3, 8), "3.");
   EXPECT_EQ(nastran::real_field(1.5e-7, 8), "1.5E-7");
   EXPECT_EQ(nastran::real_field(1e20, 8), "1.E20");
+  // C's style: a 0 before the point and the exponent's sign.
+  EXPECT_EQ(nastran::real_field(-0.25, 8, nastran::RealStyle::C), "-0.25");
+  EXPECT_EQ(nastran::real_field(1e20, 8, nastran::RealStyle::C), "1.E+20");
+  EXPECT_EQ(nastran::real_field(-DBL_MAX, 8, nastran::RealStyle::C), "-1.E+308");  // "-2.E+308" overflows
+  // A rounded value without the zeros after its last digit.
+  EXPECT_EQ(nastran::real_field(100.00000000000001, 16), "100.");
+  EXPECT_EQ(nastran::real_field(1.5e-7, 8, nastran::RealStyle::C), "1.5E-7");
   // A number whose whole part rounds up a digit keeps every digit that fits.
   EXPECT_EQ(nastran::real_field(-9.5456041617964971, 16), "-9.5456041617965");
   // Any double fits, the largest and the smallest too; the relative error
   // bounds of nastran_fields.hpp hold.
-  const auto check = [](double value, std::size_t width, double relative) {
-    const std::string text = nastran::real_field(value, width);
+  const auto check = [](double value, std::size_t width, double relative,
+                        nastran::RealStyle style = nastran::RealStyle::Nastran) {
+    const std::string text = nastran::real_field(value, width, style);
     double back = 0;
     ASSERT_LE(text.size(), width) << value;
     ASSERT_TRUE(nastran::parse_real_field(text, back)) << value << " as '" << text << "'";
@@ -502,6 +510,9 @@ TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
     const double value = mantissa(rng) * std::pow(10.0, p);
     check(value, 16, std::abs(p) < 13 && std::fabs(value) >= 1 ? 5e-14 : std::abs(p) < 99 ? 5e-10 : 5e-9);
     check(value, 8, std::abs(p) < 99 ? 5e-2 : 0.5);
+    // C's style spends a character on the exponent's sign or a leading 0.
+    check(value, 16, std::abs(p) < 13 && std::fabs(value) >= 1 ? 5e-14 : std::abs(p) < 99 ? 5e-9 : 5e-8,
+          nastran::RealStyle::C);
   }
 }
 

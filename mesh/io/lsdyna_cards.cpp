@@ -84,14 +84,10 @@ bool real_field(std::string_view field, double& value) {
 }
 
 std::string coordinate_field(double value) {
-  // Fortran reads ".5", but readers written in C may not (lsdyna-mesh-reader
-  // does not): a zero goes before the point.
-  std::string field = nastran::real_field(value, 15);
-  const std::size_t sign = field[0] == '-' ? 1 : 0;
-  if (field[sign] == '.') {
-    field = nastran::real_field(value, 14);
-    if (field[sign] == '.') field.insert(sign, "0");
-  }
+  // Fortran reads ".5" and "1.5E2", but readers written in C may not
+  // (lsdyna-mesh-reader reads neither): C's style. 15 characters leave a
+  // blank before the field.
+  std::string field = nastran::real_field(value, 15, nastran::RealStyle::C);
   field.insert(0, 16 - field.size(), ' ');
   return field;
 }

@@ -45,9 +45,10 @@ bool real_field(std::string_view field, double& value);
 
 // `value` in a coordinate's 16 columns, right-aligned after at least one
 // blank so that the fields stay apart to the eye and to readers that split
-// at blanks: nastran::real_field in 15 columns (the shortest form that
-// reads back exactly where it fits, else 13 significant digits or more for
-// exponents of two digits), with a 0 before a leading point.
+// at blanks: nastran::real_field in 15 columns in C's style ("0.25",
+// "1.5E+20"): the shortest form that reads back exactly where it fits, else
+// at least 12 significant digits for sizes from 0.1 to 1e12 (13 but for
+// negative values below 1).
 std::string coordinate_field(double value);
 // coordinate_field without its blanks, for a free-format card, whose
 // fields may not be wider than in fixed columns.

@@ -10,7 +10,9 @@
 // the I10 one (ids 10 columns wide) where "*KEYWORD I10=Y" or a '%' after
 // the keyword ("*NODE %") asks for it; the long layout ('+', LONG=Y or
 // LONG=S) is refused. *INCLUDE reads the file its next card names in place
-// (a relative path from the deck's directory; included_lines.hpp). Nothing
+// (a relative path from the deck's directory; included_lines.hpp), in the
+// parent's layout or, after "*INCLUDE %" or "*INCLUDE -", in the layout
+// that mark names; a file's "*KEYWORD I10=Y" holds in that file alone. Nothing
 // after *END is read: it is kept in the deck itself, and left out (with the
 // *END) in an included file, which *END ends alone.
 //
@@ -68,8 +70,9 @@
 // Z that changed in the card's own layout (16 columns each, lsdyna_cards.hpp:
 // coordinate_field; free-format cards in as many characters), their NID, TC,
 // RC, anything after them and the coordinates that did not change as
-// read. Line ends become '\n', and included
-// files are written in place of their *INCLUDE. The mesh must still have
+// read. Line ends become '\n', and included files are written in place of
+// their *INCLUDE, their *KEYWORD as a comment and their keywords marked
+// with the file's layout where it is not the deck's. The mesh must still have
 // the deck's node and tet counts.
 // Any other mesh is written as a new deck in the standard layout: *PART
 // cards for its region tags (headed by their names; no section or

@@ -149,6 +149,7 @@ void DeckReader::keyword(const std::string& line) {
   }
   if (name == "INCLUDE") {
     section_ = Section::Include;
+    include_layout_ = layout_;  // "*INCLUDE %": the files named are in the I10 layout
     include_name_.clear();
     return;
   }
@@ -402,6 +403,17 @@ void DeckReader::node_list(const Card& card, bool ranges) {
   }
 }
 
+std::string DeckReader::written_inline(const std::string& line) const {
+  // The deck's layout holds where an included file's text goes: the file's
+  // *KEYWORD becomes a comment, and its keywords are marked with its layout
+  // where that differs.
+  const Keyword k = keyword_of(line);
+  if (k.name == "KEYWORD" || k.name == "KEYWORD_ID") return "$" + line;
+  if (k.marked || layout_ == outer_layouts_.front()) return line;
+  const std::size_t name_end = std::min(line.find_first_of(" \t\r"), line.size());
+  return line.substr(0, name_end) + (layout_ == Layout::I10 ? " %" : " -") + line.substr(name_end);
+}
+
 void DeckReader::include(const std::string& line) {
   // A name ending in " +" goes on on the next card.
   const std::string_view text = trimmed(line);
@@ -483,6 +495,12 @@ TetMesh DeckReader::read() {
   std::string line;
   std::size_t depth = 1;
   while (lines_.next(line)) {
+    // A file's layout is its own: *INCLUDE's, or the one its *KEYWORD sets.
+    if (lines_.depth() > depth) {
+      outer_layouts_.push_back(deck_layout_);
+      deck_layout_ = include_layout_;
+    }
+    for (; outer_layouts_.size() >= lines_.depth(); outer_layouts_.pop_back()) deck_layout_ = outer_layouts_.back();
     // Back from an included file: the cards that follow name more files.
     if (lines_.depth() < depth) {
       if (card_ != 0 && section_ != Section::Other && section_ != Section::Ended)
@@ -498,7 +516,8 @@ TetMesh DeckReader::read() {
       if (depth == 1) keep(line, false);
     } else if (!line.empty() && line[0] == '*') {
       keyword(line);
-      if (section_ != Section::Include && (section_ != Section::Ended || depth == 1)) keep(line, false);
+      if (section_ != Section::Include && (section_ != Section::Ended || depth == 1))
+        keep(depth == 1 ? line : written_inline(line), false);
     } else if (!line.empty() && line[0] == '$') {
       keep(line, section_ == Section::Node);
     } else {

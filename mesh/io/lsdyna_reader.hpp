@@ -61,6 +61,9 @@ class DeckReader {
   void keep(const std::string& line, bool node_data);
   void flush_kept();
   void keyword(const std::string& line);
+  // A keyword line as the one output deck, which writes included files
+  // inline, must read it.
+  std::string written_inline(const std::string& line) const;
   void data(const std::string& line);
   void node(const std::string& line);
   void solid(const Card& card);
@@ -94,14 +97,15 @@ class DeckReader {
   Section section_ = Section::Other;
   std::string keyword_;           // its name, for messages and pins
   Layout layout_ = Layout::Standard;
-  Layout deck_layout_ = Layout::Standard;  // *KEYWORD's
+  Layout deck_layout_ = Layout::Standard;  // the current file's: *KEYWORD's, or its *INCLUDE's
+  Layout include_layout_ = Layout::Standard;  // the last *INCLUDE's, for the files it names
+  std::vector<Layout> outer_layouts_;         // those of the files that include the current one
   int cards_each_ = 1;            // cards an element takes (options add some)
   int card_ = 0;                  // cards of the current element (or part) read so far
   bool title_pending_ = false;    // a _TITLE keyword's title card comes next
   bool head_pending_ = false;     // a set's first card (its id) comes next
   bool parts_all_ = true;         // a plain *PART: every card pair is a part
   std::vector<int> node_fields_;  // NodeFields, PinOnly: fields that name nodes
-  std::size_t include_depth_ = 0;  // lines_.depth() under the *INCLUDE being read
   std::string include_name_;       // a file name continued on the next card (" +")
 
   // What the deck lists.

@@ -10,30 +10,35 @@
 namespace tetsmooth::nastran {
 namespace {
 
-// A number from std::to_chars in Nastran's form: a decimal point always,
-// "E" with the exponent's leading zeros and '+' left out, "0." as ".".
-std::string nastran_form(std::string s) {
+// A number from std::to_chars in `style`: a decimal point always, no
+// zeros after the mantissa's last digit, "E" with the exponent's leading
+// zeros left out; Nastran's style also leaves
+// out the exponent's '+' and writes "0." as ".".
+std::string styled(std::string s, RealStyle style) {
+  const bool nastran = style == RealStyle::Nastran;
   std::string exponent;
   if (const std::size_t e = s.find('e'); e != std::string::npos) {
     const int power = std::stoi(s.substr(e + 1));
-    exponent = "E" + std::to_string(power);
+    exponent = (nastran || power < 0 ? "E" : "E+") + std::to_string(power);
     s.resize(e);
   }
   if (s.find('.') == std::string::npos) s += '.';
+  // A rounded value's trailing zeros say nothing: 100.00000 as 100.
+  s.erase(s.find_last_not_of('0') + 1);
   const bool negative = s[0] == '-';
-  if (s.compare(negative ? 1 : 0, 2, "0.") == 0 && s.size() > (negative ? 3u : 2u))
+  if (nastran && s.compare(negative ? 1 : 0, 2, "0.") == 0 && s.size() > (negative ? 3u : 2u))
     s.erase(negative ? 1 : 0, 1);  // 0.25 as .25, but 0. stays
   return s + exponent;
 }
 
-// `value` as std::to_chars writes it in `format`, in Nastran's form; ""
-// where it does not fit the buffer (fixed notation of a huge value).
+// `value` as std::to_chars writes it in `format`, in `style`; "" where it
+// does not fit the buffer (fixed notation of a huge value).
 template <typename... Format>
-std::string to_text(double value, Format... format) {
+std::string to_text(RealStyle style, double value, Format... format) {
   char buf[64];
   const auto result = std::to_chars(buf, buf + sizeof buf, value, format...);
   if (result.ec != std::errc()) return "";
-  return nastran_form(std::string(buf, result.ptr));
+  return styled(std::string(buf, result.ptr), style);
 }
 
 }  // namespace
@@ -52,8 +57,8 @@ bool parse_real_field(std::string_view field, double& value) {
   return std::isfinite(value);
 }
 
-std::string real_field(double value, std::size_t width) {
-  const std::string shortest = to_text(value);
+std::string real_field(double value, std::size_t width, RealStyle style) {
+  const std::string shortest = to_text(style, value);
   if (!shortest.empty() && shortest.size() <= width) return shortest;  // exact
   std::string best;
   double best_error = INFINITY;
@@ -61,7 +66,8 @@ std::string real_field(double value, std::size_t width) {
     double back = 0;
     if (candidate.empty() || candidate.size() > width || !parse_real_field(candidate, back)) return;
     const double error = std::fabs(back - value);
-    if (error < best_error || (error == best_error && candidate.size() < best.size())) {
+    // On a tie the later one: fixed notation, considered last, reads best.
+    if (error < best_error || (error == best_error && candidate.size() <= best.size())) {
       best_error = error;
       best = candidate;
     }
@@ -72,19 +78,22 @@ std::string real_field(double value, std::size_t width) {
   // are tried too.
   const auto most_digits = [&](auto format, int bare) {
     const int digits = static_cast<int>(width) - bare;
-    for (int d = std::min(digits + 1, 17); d >= std::max(digits - 1, 0); --d) consider(to_text(value, format, d));
+    for (int d = std::min(digits + 1, 17); d >= std::max(digits - 1, 0); --d) consider(to_text(style, value, format, d));
   };
-  // "d.E<exponent>", the sign: every double fits 8 columns so.
-  most_digits(std::chars_format::scientific, static_cast<int>(to_text(value, std::chars_format::scientific, 0).size()));
+  // "d.E<exponent>", the sign: every double fits 8 columns so (C's
+  // style only adds the sign of exponents from 100, "-1.E+300").
+  most_digits(std::chars_format::scientific,
+              static_cast<int>(to_text(style, value, std::chars_format::scientific, 0).size()));
   // The mantissa cut short instead of rounded, which never rounds past the
   // largest double (1.8E308 would).
-  const std::string all = to_text(value, std::chars_format::scientific, 17);
+  const std::string all = to_text(style, value, std::chars_format::scientific, 17);
   if (const std::size_t e = all.find('E'); e != std::string::npos && all.size() - e < width)
     consider(all.substr(0, width - (all.size() - e)) + all.substr(e));
   if (std::fabs(value) < 1e15) {
-    // "123." or "0.", whose 0 goes where digits follow.
-    const std::string whole = to_text(value, std::chars_format::fixed, 0);
-    most_digits(std::chars_format::fixed, static_cast<int>(whole.size()) - (std::fabs(value) < 1 ? 1 : 0));
+    // "123." or "0.", whose 0 goes in Nastran's style where digits follow.
+    const std::string whole = to_text(style, value, std::chars_format::fixed, 0);
+    const bool zero_goes = style == RealStyle::Nastran && std::fabs(value) < 1;
+    most_digits(std::chars_format::fixed, static_cast<int>(whole.size()) - (zero_goes ? 1 : 0));
   }
   return best;
 }

@@ -14,12 +14,18 @@ namespace tetsmooth::nastran {
 // values that are not finite.
 bool parse_real_field(std::string_view field, double& value);
 
-// A finite `value` in at most `width` characters (8 or 16) as Nastran reads
-// a real (with a decimal point): the shortest form that reads back exactly
-// where that fits, else the form that fits and reads back closest, in fixed
-// or exponent notation. Width 16 keeps a relative error below 5e-10 for
+// How a real is written. Nastran: as short as Fortran reads it (".25",
+// "1.5E-3", "1.5E3"). C: as C's strtod and readers written in C, which may
+// not take a leading point or an exponent without its sign, read it too
+// ("0.25", "1.5E-3", "1.5E+3"; LS-DYNA's writer uses it).
+enum class RealStyle { Nastran, C };
+
+// A finite `value` in at most `width` characters (8 or more) as a real with
+// a decimal point: the shortest form that reads back exactly where that
+// fits, else the form that fits and reads back closest, in fixed or
+// exponent notation. Width 16 keeps a relative error below 5e-10 for
 // exponents of two digits (below 5e-14 for sizes from 1 to 1e13).
-std::string real_field(double value, std::size_t width);
+std::string real_field(double value, std::size_t width, RealStyle style = RealStyle::Nastran);
 
 // Writes one entry: small field (8 columns) or large field (a '*' after the
 // name, 16 columns, 4 fields a line), `fields` being the data fields

@@ -7,7 +7,11 @@ this file's own (Fortran's rules: fixed columns, free format at commas).
 lsdyna-mesh-reader reads only the standard layout, with solids on one card:
 it hangs on free-format (comma) *NODE cards and misreads the I10 layout and
 two-card solids, so it is never given those, and it always runs in a child
-process with a time limit (read_with_reader).
+process with a time limit (ReaderDeck). It also takes a coordinate that
+starts with its point (".5", which Fortran reads) for garbage, and the
+character after an exponent's letter for its sign ("1.35E2" reads as
+1.35), so tetsmooth must write a digit before the point and a sign before
+an exponent's digits.
 
 What is checked, and why:
 - New decks (a Gmsh mesh of two named volumes and a named embedded square,
@@ -15,8 +19,8 @@ What is checked, and why:
   reads the MSH node and element tags as NIDs and EIDs, the physical tags as
   PIDs, tets in LS-DYNA's form N1 N2 N3 N4 N4 N4 N4 N4 and the square's
   triangles as shells (N3 = N4) of its PID; *PART headings are the physical
-  names; coordinates are the MSH file's to what 15 columns hold (13
-  significant digits, or 13 decimals below 1: WRITTEN_RTOL, WRITTEN_ATOL). 10-node tets, on two cards, which
+  names; coordinates are the MSH file's to what 15 columns hold
+  (WRITTEN_RTOL, WRITTEN_ATOL), in a model in millimetres too. 10-node tets, on two cards, which
   lsdyna-mesh-reader cannot read, are checked by this file's parser (the
   midside nodes in LS-DYNA's edge order, at their edges' midpoints) and by
   tetsmooth reading the deck back; the 6-node triangles that a new deck
@@ -26,22 +30,30 @@ What is checked, and why:
   line and byte for byte but for the *NODE cards of moved nodes, which keep
   their NID and the columns after Z as read; a coordinate that did not
   change keeps its text. The coordinates written are tetsmooth's result
-  (the same run written as VTU) to 15 columns; free-format cards get every
-  digit. lsdyna-mesh-reader reads the smoothed deck with the same ids,
-  parts and tets, and `tetsmooth convert out.k out.vtu` (read with meshio)
-  gives exactly the coordinates the deck's text holds.
+  (the same run written as VTU) to 15 columns, in as many characters on
+  free-format cards. lsdyna-mesh-reader reads the smoothed deck with the
+  same ids, parts, tets and coordinates, and `tetsmooth convert out.k
+  out.vtu` (read with meshio) gives exactly the coordinates the deck's text
+  holds.
 - Pins: *SET_NODE_LIST, *SET_NODE_LIST_GENERATE, *SET_SEGMENT,
   *BOUNDARY_SPC_NODE, *LOAD_NODE_POINT, *INITIAL_VELOCITY_NODE,
-  *DATABASE_HISTORY_NODE, TC and RC in *NODE, shells, beams (and their
-  orientation node) each pin exactly their nodes (tetsmooth:fixed in VTU
-  output) and the nodes they name stay put, where each of those nodes moves
-  when nothing pins it; *PART headings name the regions, and two parts keep
-  their interface.
-- Layouts and forms: free-format *NODE cards, the I10 layout ("*NODE %" and
-  "*KEYWORD I10=Y"), 10-node tets on two cards, *INCLUDE (written inline),
-  left-handed tets (read turned round, kept as written), lower-case
-  keywords, comments inside *NODE, CRLF line ends; bricks, wedges and
-  pyramids beside the tets pass through and pin their nodes.
+  *DATABASE_HISTORY_NODE, *CONSTRAINED_EXTRA_NODES_NODE,
+  *CONSTRAINED_SPOTWELD, TC and RC in *NODE (also written as reals),
+  shells (with blank option cards too), beams (and their orientation node),
+  mass and discrete elements each pin exactly their nodes (tetsmooth:fixed
+  in VTU output) and the nodes they name stay put, where each of those
+  nodes moves when nothing pins it. Keywords that name nodes and are not
+  read (the _ID forms, other node sets) are named in a warning. *PART
+  headings name the regions (also headings that start with '$' or '*' in a
+  new deck), and two parts keep their interface.
+- Layouts and forms: free-format *NODE cards, the I10 layout ("*NODE %",
+  "*KEYWORD I10=Y", and both layouts in one deck), short cards, the tet
+  forms and *ELEMENT_SOLID_ORTHO, 10-node tets on two cards, *INCLUDE
+  (written inline; an included file's *END; "*INCLUDE %" and "*INCLUDE -"
+  for a file in the other layout), left-handed tets (inverted, kept as
+  written), lower-case keywords, comments inside *NODE, lines after *END,
+  CRLF line ends; bricks, wedges and pyramids beside the tets pass through
+  and pin their nodes; shells and beams reach other formats.
 - The example decks of lsdyna-mesh-reader (EXP_SC_JOINT_SCREW.key,
   birdball.k) hold bricks and shells and no tets: tetsmooth refuses them
   with exit 3 and one line, and writes nothing. Their bricks cut into tets
@@ -50,13 +62,15 @@ What is checked, and why:
   pin its nodes.
 - Refusals (the long layout, *NODE_TRANSFORM, *INCLUDE_PATH, undefined and
   duplicate nodes, and more) exit 3 with one line naming file:line, write
-  nothing and leave an existing output as it was.
+  nothing and leave an existing output as it was. The help and the message
+  for an unknown extension name the format.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import os
 import re
 import subprocess
 import sys
+import tempfile
 import unittest
 
 import meshio
@@ -83,12 +97,13 @@ GMSH_DYNA_ORDER = [0, 1, 2, 3, 4, 5, 6, 7, 9, 8]
 # A coordinate in 16 columns after a blank: 15 characters, which hold 14
 # significant digits of a positive value and 13 of a negative one (whose
 # sign takes a column: -1.484906305271 for -1.4849063052705296, 3.2e-13
-# off), and 13 decimals of any value below 1 in size.
-# A zero before a leading point (lsdyna-mesh-reader needs it) leaves 14
-# columns for the rest.
+# off). A zero before a leading point (lsdyna-mesh-reader needs it) leaves
+# 14 columns for the rest: 12 decimals of a negative value below 1 in size
+# (-0.123456789012).
 WRITTEN_RTOL, WRITTEN_ATOL = 5e-12, 5e-13
-# The same run each time (the result does not depend on the thread count).
-SMOOTH_OPTIONS = ("--device", "cpu", "--threads", "2", "-q")
+# The same run each time: the serial one, which CTest's parallel jobs slow
+# down least.
+SMOOTH_OPTIONS = ("--device", "cpu", "--threads", "1", "-q")
 READER_TIMEOUT = 60
 
 
@@ -137,7 +152,10 @@ class ReaderDeck:
     (PID, [node ids])}), `solid_sections` and `shell_sections` (counts)."""
 
     def __init__(self, path):
-        npz = path + ".reader.npz"
+        with tempfile.TemporaryDirectory(prefix="tetsmooth_lsdyna_reader_") as tmp:
+            self._read(path, os.path.join(tmp, "deck.npz"))
+
+    def _read(self, path, npz):
         try:
             proc = subprocess.run([sys.executable, "-c", READER_SCRIPT, path, npz], capture_output=True, text=True,
                                   timeout=READER_TIMEOUT, env=reader_environment())
@@ -147,7 +165,6 @@ class ReaderDeck:
             raise AssertionError(f"lsdyna-mesh-reader failed on {path}:\n{proc.stderr}")
         with np.load(npz) as data:
             arrays = dict(data)
-        os.remove(npz)
         sections = [f"node{k}" for k in range(sum(key.endswith("_nid") for key in arrays))]
         self.nid = np.concatenate([arrays[s + "_nid"] for s in sections]).astype(np.int64)
         self.xyz = np.concatenate([arrays[s + "_xyz"] for s in sections])
@@ -432,10 +449,16 @@ class DeckChecks:
     def assert_rounded(self, field, value, what):
         """`field`, 16 columns of a fixed-format card, holds `value` with a
         blank before it, correctly rounded to the digits it shows and within
-        what 15 columns hold."""
+        what 15 columns hold, with a digit before its point and a sign
+        before an exponent's digits (readers written in C,
+        lsdyna-mesh-reader among them, take ".5" for garbage)."""
         self.assertEqual(len(field), 16, f"{what}: {field!r}")
         self.assertEqual(field[0], " ", f"{what}: {field!r} has no blank before it")
         text = field.strip()
+        self.assertRegex(text, r"^[+-]?\d", f"{what}: {field!r} has no digit before its point")
+        # (They also take the character after an exponent's letter for its
+        # sign: "1.35E2" reads as 1.35.)
+        self.assertNotRegex(text, r"[EeDd]\d", f"{what}: {field!r} has an exponent without its sign")
         m = FIXED_REAL.fullmatch(text)
         self.assertIsNotNone(m, f"{what}: {field!r} is not a real with a point")
         unit = 10.0 ** (int(m.group(3) or 0) - len(m.group(2)))
@@ -511,13 +534,17 @@ class DeckChecks:
 
     def assert_reader_reads_the_smoothed_deck(self, src, out):
         """lsdyna-mesh-reader reads `out` with the ids, parts and elements
-        it reads in `src`."""
+        it reads in `src`, and the coordinates that tetsmooth reads in `out`
+        (up to its own rounding)."""
         a, b = ReaderDeck(src), ReaderDeck(out)
         np.testing.assert_array_equal(b.nid, a.nid)
         self.assertEqual(b.solids, a.solids)
         self.assertEqual(b.shells, a.shells)
         np.testing.assert_array_equal(b.tc, a.tc)
         np.testing.assert_array_equal(b.rc, a.rc)
+        read = os.path.splitext(out)[0] + "-read.vtu"
+        run("convert", out, read, "-q")
+        self.assert_reader_coordinates(out, b, meshio.read(read).points, 1e-14, 1e-14)
         return a, b
 
     def assert_reader_coordinates(self, path, reader, expected, rtol, atol):
@@ -618,6 +645,26 @@ class NewDecks(DeckChecks, GmshScratchCase):
         deck = ReaderDeck(out)
         self.assert_reader_coordinates(out, deck, np.array([xyz[n] for n in deck.nid.tolist()]),
                                        WRITTEN_RTOL, WRITTEN_ATOL)
+
+    def test_lsdyna_mesh_reader_reads_coordinates_in_millimetres(self):
+        # A model in millimetres: Gmsh puts nodes at 99.99999999999999 or
+        # 100.00000000000001, which 15 columns round to 100.
+        gmsh = self.gmsh
+        src, out = self.path("millimetres.msh"), self.path("millimetres.k")
+        with gmsh_session(gmsh):
+            lower = gmsh.model.occ.addBox(0, 0, 0, 200, 200, 100)
+            upper = gmsh.model.occ.addBox(0, 0, 100, 200, 200, 100)
+            gmsh.model.occ.fragment([(3, lower)], [(3, upper)])
+            gmsh.model.occ.synchronize()
+            gmsh.option.setNumber("Mesh.MeshSizeMax", 40)
+            gmsh.model.mesh.generate(3)
+            gmsh.write(src)
+            tags, coords, _ = gmsh.model.mesh.getNodes()
+        xyz = dict(zip(np.asarray(tags).tolist(), np.asarray(coords).reshape(-1, 3)))
+        run("convert", src, out, "-q")
+        deck = ReaderDeck(out)
+        self.assertEqual(deck.nid.tolist(), list(xyz))
+        self.assert_reader_coordinates(out, deck, np.array(list(xyz.values())), WRITTEN_RTOL, WRITTEN_ATOL)
 
     def test_generated_lattice(self):
         src, out = self.path("lattice.msh"), self.path("lattice.k")
@@ -802,16 +849,6 @@ class HandWrittenDecks(DeckCase):
         self.assertEqual(a.solids, {11 + t: (1, self.ids[row].tolist() + [int(self.ids[row[3]])] * 4)
                                     for t, row in enumerate(self.tets)})
 
-    def test_lsdyna_mesh_reader_reads_the_smoothed_coordinates(self):
-        src = self.path("free.k")
-        self.smoothed(src)
-        out = self.path("free-out.k")
-        # What tetsmooth reads in the smoothed deck, as `tetsmooth convert`
-        # writes it, up to lsdyna-mesh-reader's own rounding.
-        run("convert", out, self.path("free-read.vtu"), "-q")
-        self.assert_reader_coordinates(out, ReaderDeck(out), meshio.read(self.path("free-read.vtu")).points,
-                                       1e-15, 1e-15)
-
     def test_convert_to_a_deck_gives_the_deck_back(self):
         src, out = self.path("free.k"), self.path("copy.k")
         run("convert", src, out, "-q")
@@ -854,6 +891,14 @@ class HandWrittenDecks(DeckCase):
                      {a, b, d}),
             "element_mass": (["*ELEMENT_MASS", f"{1:8d}{c:8d}{2.5:16.4f}"], {}, {c}),
             "element_discrete": (["*ELEMENT_DISCRETE", ints_card([1, 4, a, d], 8)], {}, {a, d}),
+            # Blank cards are cards of defaults: a blank title, blank
+            # thicknesses (and a blank line where an element's first card
+            # would come, which is skipped).
+            "set_node_list_blank_title": (["*SET_NODE_LIST_TITLE", "", ints_card([8]), ints_card([d, c])], {},
+                                          {c, d}),
+            "shell_thickness_blank": (shell_part + ["*ELEMENT_SHELL_THICKNESS", solid_card(1, 2, [a, b, c, c])[:48],
+                                                    "", "", solid_card(2, 2, [a, b, d, d])[:48], ""], {},
+                                      {a, b, c, d}),
         }
 
     def test_pins_hold_exactly_their_nodes(self):
@@ -1060,7 +1105,9 @@ class HandWrittenDecks(DeckCase):
         deck, both named by relative paths under one *INCLUDE (the first
         file headed by *KEYWORD, as pre-processors write them, the second
         ended by *END where `end_included`); and the same deck with the
-        files' lines in place of the *INCLUDE. Returns (deck, flat deck)."""
+        files' lines in place of the *INCLUDE, the included *KEYWORD as a
+        comment (as tetsmooth writes it inline: an included file's *KEYWORD
+        options hold in that file alone). Returns (deck, flat deck)."""
         tag = "-end" if end_included else ""
         lines = self.deck_lines()
         start, end = lines.index("*NODE"), lines.index("*ELEMENT_SOLID")
@@ -1072,7 +1119,7 @@ class HandWrittenDecks(DeckCase):
         self.write(os.path.join("parts", f"second{tag}.k"), second)
         src = self.write(f"main{tag}.k", lines[:start] + ["*INCLUDE", f"parts/first{tag}.k",
                                                           f"parts/second{tag}.k"] + lines[end:])
-        flat = self.write(f"flat{tag}.k", lines[:start] + first + second + lines[end:])
+        flat = self.write(f"flat{tag}.k", lines[:start] + ["$" + first[0]] + first[1:] + second + lines[end:])
         return src, flat
 
     def test_include(self):
@@ -1083,9 +1130,10 @@ class HandWrittenDecks(DeckCase):
         with open(self.path(os.path.join("parts", "first.k"))) as f:
             included = f.read()
         out = self.path("main-out.k")
-        proc = run("smooth", src, "-o", out, "--device", "cpu", "--threads", "2")
+        proc = run("convert", src, self.path("main-copy.k"))
         self.assertIn("parts/first.k", proc.stderr)
         self.assertIn("written inline", proc.stderr)
+        run("smooth", src, "-o", out, *SMOOTH_OPTIONS)
         _, _, moved, _ = self.smoothed(flat)
         self.assertEqual(moved, self.free)
         with open(out, "rb") as a, open(self.path("flat-out.k"), "rb") as b:
@@ -1107,6 +1155,45 @@ class HandWrittenDecks(DeckCase):
         self.assertEqual(quality_json(out)["input"]["tets"], len(self.tets))
         deck = KeywordDeck(out)  # which, as LS-DYNA, reads nothing after the first *END
         self.assertEqual(len(deck.solids), len(self.tets), "the output's first *END comes before its solids")
+
+    def test_include_of_a_file_in_the_other_layout(self):
+        # LS-DYNA reads an included file in the layout of the deck that
+        # includes it, unless a mark on the *INCLUDE says otherwise: "*INCLUDE
+        # %" for a file in I10, "*INCLUDE -" for one in the standard layout
+        # under "*KEYWORD I10=Y" (the layout options on an included file's
+        # own *KEYWORD line are Oasys PRIMER's, which writes them with the
+        # mark). The layout of the included file stays in that file, and
+        # the smoothed deck, written inline, reads back as the same mesh.
+        os.makedirs(self.path("parts"), exist_ok=True)
+        cards = [node_card(n, p, layout="i10") for n, p in zip(self.ids, self.xyz)]
+        self.write(os.path.join("parts", "i10.k"), ["*NODE", *cards])
+        self.write(os.path.join("parts", "i10-keyword.k"), ["*KEYWORD I10=Y", "*NODE", *cards, "*END"])
+        # (Fields that fill their 16 columns, as LS-PrePost's do, so that a
+        # card read in the wrong layout cannot read right.)
+        full = [f"{n:8d}" + "".join(f"{v:16.9E}" for v in p) for n, p in zip(self.ids, self.xyz)]
+        self.write(os.path.join("parts", "standard.k"), ["*NODE", *full])
+        lines = self.deck_lines()
+        start, end = lines.index("*NODE"), lines.index("*ELEMENT_SOLID")
+        wide = [line.replace(" %", "") for line in self.deck_lines(layout="i10")]
+        wide[wide.index("*KEYWORD")] = "*KEYWORD I10=Y"
+        decks = {
+            "include-i10.k": lines[:start] + ["*INCLUDE %", "parts/i10.k"] + lines[end:],
+            "include-i10-keyword.k": lines[:start] + ["*INCLUDE %", "parts/i10-keyword.k"] + lines[end:],
+            "include-standard.k": wide[:start] + ["*INCLUDE -", "parts/standard.k"] + wide[end:],
+        }
+        run("smooth", self.path("free.k"), "-o", self.path("layouts-free.vtu"), *SMOOTH_OPTIONS)
+        expected = meshio.read(self.path("layouts-free.vtu")).points
+        for name, deck in decks.items():
+            with self.subTest(deck=name):
+                src, out = self.write(name, deck), self.path(name[:-2] + "-out.k")
+                proc = run("quality", src, "--json", check=False)
+                self.assertEqual(proc.returncode, 0, proc.stderr)
+                self.assertEqual(quality_json(src)["input"]["tets"], len(self.tets))
+                run("smooth", src, "-o", out, *SMOOTH_OPTIONS)
+                run("convert", out, self.path(name[:-2] + "-back.vtu"), "-q")
+                back = meshio.read(self.path(name[:-2] + "-back.vtu"))
+                np.testing.assert_array_equal(back.cells_dict["tetra"], self.tets)
+                np.testing.assert_allclose(back.points, expected, rtol=WRITTEN_RTOL, atol=WRITTEN_ATOL)
 
     def test_left_handed_tets(self):
         # Every third tet listed left-handed (N2 and N3 swapped): LS-DYNA
@@ -1324,6 +1411,11 @@ class Refusals(DeckCase):
 
 class PartNames(DeckChecks, GmshScratchCase):
     SCRATCH_PREFIX = "tetsmooth_test_lsdyna_names_"
+
+    @classmethod
+    def setUpClass(cls):
+        require_reader()  # before the scratch folder, which an error would leave behind
+        super().setUpClass()
 
     def test_part_headings_that_look_like_comments_or_keywords(self):
         # A heading is a whole card: names that start with '$' or '*' must

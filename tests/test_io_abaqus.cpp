@@ -291,11 +291,24 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("self.inp")); }, "self.inp")
                 .find("self.inp:2: *INCLUDE: " + dir.file("self.inp") + " includes itself"),
             std::string::npos);
-  // Files nested 65 deep (no file includes itself), and a device.
+  // Files nested 65 deep (no file includes itself), repeated too often, and
+  // a device.
   for (int k = 0; k < 66; ++k)
     std::ofstream(dir.file("n" + std::to_string(k) + ".inp")) << "*INCLUDE, INPUT=n" << k + 1 << ".inp\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("n0.inp")); }, "n0.inp")
                 .find("n64.inp:1: *INCLUDE: nested more than 64 files deep"),
+            std::string::npos);
+  // Files that each include the next twice: the last would be read 512
+  // times (and 40 such files would make 2^40 lines).
+  for (int k = 0; k < 10; ++k)
+    std::ofstream(dir.file("d" + std::to_string(k) + ".inp"))
+        << (k == 9 ? std::string("** leaf\n")
+                   : "*INCLUDE, INPUT=d" + std::to_string(k + 1) + ".inp\n*INCLUDE, INPUT=d" + std::to_string(k + 1) +
+                         ".inp\n");
+  EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("d0.inp")); }, "d0.inp")
+                .find("d8.inp:1: *INCLUDE: " + dir.file("d9.inp") +
+                      " is included more than 256 times in all: files that include others several times multiply "
+                      "their lines"),
             std::string::npos);
   std::ofstream(dir.file("device.inp")) << "*INCLUDE, INPUT=/dev/null\n";
   EXPECT_NE(testing::input_error_message([&] { read_abaqus_file(dir.file("device.inp")); }, "device.inp")

@@ -18,6 +18,7 @@
 #include "mesh/io/lsdyna_cards.hpp"
 #include "mesh/io/lsdyna_io.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "mesh/io/nastran_io.hpp"
 #include "mesh/io/region_sets.hpp"
 #include "mesh/io/text_lines.hpp"
 #include "mesh/io/writable_check.hpp"
@@ -355,7 +356,7 @@ TEST(LsdynaWrite, NewDecksReadBack) {
   EXPECT_EQ(back.tets, mesh.tets);
   for (std::size_t i = 0; i < mesh.xyz.size(); ++i) EXPECT_NEAR(back.xyz[i], mesh.xyz[i], 1e-12);
   EXPECT_EQ(back.extras.tet_tags[1], 3);
-  EXPECT_EQ(back.extras.tet_tags[0], lsdyna_new_pids(mesh).at(-2));
+  EXPECT_EQ(back.extras.tet_tags[0], lsdyna_region_ids(mesh).renumbered().at(-2));
   ASSERT_EQ(back.fixed.size(), mesh.num_nodes());
   EXPECT_EQ(back.fixed[13], 1);
   EXPECT_EQ(std::count(back.fixed.begin(), back.fixed.end(), 1), 1);
@@ -370,6 +371,39 @@ TEST(LsdynaWrite, NewDecksReadBack) {
   const std::vector<std::string> notes = output_losses(points, "out.k");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_NE(notes[0].find("1 vertex will not be written"), std::string::npos);
+}
+
+// A part takes one section: shells and beams that share a region tag with
+// solids (beams with shells) get parts of their own, headed by their own
+// physical names, with a note.
+TEST(LsdynaWrite, ShellsAndBeamsOfASolidsTagGetTheirOwnParts) {
+  TetMesh mesh = testing::cube_grid(1);
+  mesh.extras.tet_tags.assign(mesh.num_tets(), 1);
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2, 1, 2, 3}, {1, 2}, {}, {}});
+  mesh.extras.blocks.push_back(PassThroughBlock{"line", 2, {0, 1}, {2}, {}, {}});
+  mesh.extras.raw_sections.emplace_back("$PhysicalNames", "3\n3 1 \"rock\"\n2 1 \"top\"\n1 2 \"edge\"\n");
+  const RegionIds pids = lsdyna_region_ids(mesh);
+  EXPECT_EQ(pids.of(3, 1), 1);
+  EXPECT_EQ(pids.of(2, 2), 2);
+  EXPECT_EQ(pids.of(2, 1), 3);  // above the largest in use
+  EXPECT_EQ(pids.of(1, 2), 4);
+  EXPECT_EQ(pids.split(), (std::map<std::pair<int, int>, long long>{{{2, 1}, 3}, {{1, 2}, 4}}));
+  const std::string text = write_text(mesh);
+  for (const char* part : {"*PART\n$# title\nrock\n$#     pid     secid       mid\n         1\n",
+                           "*PART\n$# title\n\n$#     pid     secid       mid\n         2\n",
+                           "*PART\n$# title\ntop\n$#     pid     secid       mid\n         3\n",
+                           "*PART\n$# title\nedge\n$#     pid     secid       mid\n         4\n"})
+    EXPECT_NE(text.find(part), std::string::npos) << part;
+  const TetMesh back = read_text(text);
+  ASSERT_EQ(back.extras.blocks.size(), 2u);
+  EXPECT_EQ(back.extras.blocks[0].tags, (std::vector<int>{3, 2}));
+  EXPECT_EQ(back.extras.blocks[1].tags, (std::vector<int>{4}));
+  const std::vector<std::string> notes = output_losses(mesh, "out.k");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0], "elements of several dimensions in one region get PIDs of their own (shells of region 1 as PID "
+                      "3, lines of region 2 as PID 4): an LS-DYNA part takes one section (solid, shell or beam)");
+  // Nastran's PIDs the same way.
+  EXPECT_EQ(nastran_region_ids(mesh).split(), pids.split());
 }
 
 TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {

@@ -250,7 +250,19 @@ TEST(NastranIo, ANewDeckReadsBackAsWritten) {
   // it get new ones too.
   TetMesh big = testing::cube_grid(1);
   big.extras.tet_tags = {99999999, 0, -1, 1, 2147483647, 3};
-  EXPECT_EQ(nastran_new_pids(big), (std::map<int, int>{{0, 2}, {-1, 4}, {2147483647, 5}}));
+  EXPECT_EQ(nastran_region_ids(big).renumbered(), (std::map<int, int>{{0, 2}, {-1, 4}, {2147483647, 5}}));
+  // A PID names one property entry: a triangle of a tet's tag gets its own.
+  TetMesh shared = testing::cube_grid(1);
+  shared.extras.tet_tags.assign(shared.num_tets(), 4);
+  shared.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2}, {4}, {}, {}});
+  const TetMesh shared_back = read_text(write_text(shared));
+  EXPECT_EQ(shared_back.extras.tet_tags, shared.extras.tet_tags);
+  ASSERT_EQ(shared_back.extras.blocks.size(), 1u);
+  EXPECT_EQ(shared_back.extras.blocks[0].tags, (std::vector<int>{5}));
+  EXPECT_EQ(output_losses(shared, "out.bdf"),
+            (std::vector<std::string>{"elements of several dimensions in one region get PIDs of their own (shells of "
+                                      "region 4 as PID 5): a Nastran PID names one property entry (PSOLID, PSHELL "
+                                      "or PROD)"}));
   // A mesh without regions gets PID 1, which Gmsh needs.
   EXPECT_NE(write_text(testing::cube_grid(1)).find("CTETRA         1       1"), std::string::npos);
 }

@@ -97,6 +97,38 @@ std::map<int, int> new_positive_ids(const TetMesh& mesh, long long largest,
   return renumbered;
 }
 
+RegionIds::RegionIds(const TetMesh& mesh, long long largest, const std::function<bool(const PassThroughBlock&)>& block)
+    : renumbered_(new_positive_ids(mesh, largest, block)) {
+  std::set<std::pair<int, int>> present;  // (dimension, tag)
+  const auto visit = [&](int dimension, const std::vector<int>& tags, std::size_t elements) {
+    if (elements > 0 && tags.size() != elements) present.insert({dimension, 0});
+    for (int tag : tags) present.insert({dimension, tag});
+  };
+  visit(3, mesh.extras.tet_tags, mesh.num_tets());
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (!block || block(b)) visit(kind_dimension(b.kind), b.tags, elements_in(b));
+  std::map<long long, int> owner;  // id → the highest dimension that holds it
+  for (const auto& [dimension, tag] : present) {
+    int& d = owner.emplace(of(dimension, tag), dimension).first->second;
+    d = std::max(d, dimension);
+  }
+  long long next = owner.empty() ? 1 : owner.rbegin()->first + 1;
+  for (auto it = present.rbegin(); it != present.rend(); ++it) {  // higher dimensions first
+    const auto [dimension, tag] = *it;
+    if (owner.at(of(dimension, tag)) == dimension) continue;
+    if (next > largest) next = 1;
+    while (owner.count(next) != 0) ++next;
+    split_[*it] = next;
+    owner[next++] = dimension;
+  }
+}
+
+long long RegionIds::of(int dimension, int tag) const {
+  if (const auto it = split_.find({dimension, tag}); it != split_.end()) return it->second;
+  const auto it = renumbered_.find(tag);
+  return it == renumbered_.end() ? tag : it->second;
+}
+
 std::string numbers_lost(const TetMesh& mesh, long long largest, const std::vector<ElementSet>& sets) {
   const FileExtras& e = mesh.extras;
   const bool nodes = !e.node_tags.empty() && !usable_numbers(e.node_tags, mesh.num_nodes(), largest);

@@ -59,6 +59,29 @@ std::vector<long long> pins_to_list(const TetMesh& mesh, const std::vector<long 
 std::map<int, int> new_positive_ids(const TetMesh& mesh, long long largest,
                                     const std::function<bool(const PassThroughBlock&)>& block = {});
 
+// Region ids for a format whose ids each name the properties of one kind of
+// element (LS-DYNA's parts take one section, Nastran's PIDs one property
+// entry, PSOLID or PSHELL): each tag's id (new_positive_ids), except where
+// elements of a lower dimension (shells, 2; beams, 1) share a tag with
+// elements of a higher one; those get ids of their own, ids no element
+// holds, from above the largest in use (then from 1 up). Elements without a
+// tag count as tag 0.
+class RegionIds {
+ public:
+  RegionIds(const TetMesh& mesh, long long largest, const std::function<bool(const PassThroughBlock&)>& block = {});
+  // The id of `tag` for elements of `dimension` (kind_dimension; tets 3).
+  long long of(int dimension, int tag) const;
+  // Tags that are no ids → their new ids (new_positive_ids).
+  const std::map<int, int>& renumbered() const { return renumbered_; }
+  // (dimension, tag) → the id of the lower-dimension elements that share a
+  // tag with higher ones.
+  const std::map<std::pair<int, int>, long long>& split() const { return split_; }
+
+ private:
+  std::map<int, int> renumbered_;
+  std::map<std::pair<int, int>, long long> split_;
+};
+
 // The file's numbers that a new deck cannot keep: "node", "element", "node
 // and element", or "" when it keeps them all (or the file had none). Each
 // of `sets` is numbered on its own (one set of all elements by default).

@@ -14,6 +14,10 @@ namespace {
 
 // Deeper nesting is refused, whatever the files.
 constexpr std::size_t kMaxIncludeDepth = 64;
+// So is a file included more often, which bounds the lines that a few small
+// files naming each other several times can make (2^40 lines from 40 files
+// that each include the next twice).
+constexpr int kMaxIncludesOfAFile = 256;
 
 std::string directory_of(const std::string& path) {
   const std::size_t slash = path.rfind('/');
@@ -59,9 +63,13 @@ void IncludedLines::include(std::string file, const char* statement, std::uint32
   if (stack_.size() > kMaxIncludeDepth) fail("nested more than " + std::to_string(kMaxIncludeDepth) + " files deep");
   std::error_code ec;
   const auto canonical = std::filesystem::weakly_canonical(path, ec);
+  const std::string key = ec ? path : canonical.string();
   for (const Source& s : stack_)
     if (!ec && std::filesystem::weakly_canonical(s.path, ec) == canonical && !ec)
       fail(path + " includes itself, through the files that include it");
+  if (++opened_[key] > kMaxIncludesOfAFile)
+    fail(path + " is included more than " + std::to_string(kMaxIncludesOfAFile) +
+         " times in all: files that include others several times multiply their lines");
   // A device or a pipe (/dev/zero, say) might never end.
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <fstream>
 #include <istream>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,8 +29,9 @@ class IncludedLines {
   // it ends, then from the file that named it again. `statement` names the
   // include in messages ("*INCLUDE"), `mark` its (first) line. InputError
   // there for a file that cannot be opened, is no regular file, includes
-  // itself through the files that include it, or is nested more than 64
-  // deep.
+  // itself through the files that include it, is nested more than 64 deep,
+  // or is included more than 256 times in all (files that include others
+  // several times multiply their lines, exponentially with the depth).
   void include(std::string file, const char* statement, std::uint32_t mark);
 
   // The mark of the line next() gave last, and the "file:line" of a mark.
@@ -62,6 +64,7 @@ class IncludedLines {
   std::uint32_t lines_read_ = 0;
   std::vector<Stretch> stretches_;
   std::vector<std::string> included_;
+  std::map<std::string, int> opened_;  // times each file was included
 };
 
 }  // namespace tetsmooth

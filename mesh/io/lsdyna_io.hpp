@@ -81,13 +81,15 @@
 // in the forms above), *ELEMENT_SHELL for triangles and quads,
 // *ELEMENT_BEAM for lines, a node set "TETSMOOTH_PINNED" of the pinned
 // nodes that no written element pins, and *END. PIDs are the region tags
-// where positive and at most 99,999,999 (else new ids: lsdyna_new_pids);
+// where positive and at most 99,999,999 (else new ids: lsdyna_region_ids,
+// which also parts shells and beams from solids of the same tag);
 // node and element ids the file's where they are positive, distinct and at
 // most 99,999,999, else 1, 2, ... in order.
 #include <iosfwd>
 #include <map>
 #include <string>
 
+#include "mesh/io/file_numbers.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth {
@@ -100,9 +102,11 @@ TetMesh read_lsdyna_file(const std::string& path);
 void write_lsdyna(const TetMesh& mesh, std::ostream& out);
 void write_lsdyna_file(const TetMesh& mesh, const std::string& path);
 
-// The PIDs a new deck gives region tags that cannot be PIDs (0 and below,
-// past 99,999,999) and elements without one (new_positive_ids).
-std::map<int, int> lsdyna_new_pids(const TetMesh& mesh);
+// The PIDs of a new deck (RegionIds): new ones for region tags that cannot
+// be PIDs (0 and below, past 99,999,999) and elements without one, and for
+// shells and beams whose tag solids (or, for beams, shells) have too: a
+// part takes one section.
+RegionIds lsdyna_region_ids(const TetMesh& mesh);
 
 // Whether a new deck writes the elements of `block` (solids, triangles,
 // quads and lines; their nodes are pinned in any case).

@@ -118,12 +118,6 @@ void put(std::ostream& out, const std::string& text, std::size_t width) {
 
 void put(std::ostream& out, long long v, std::size_t width) { put(out, std::to_string(v), width); }
 
-// The PID of a region tag: the tag itself, or its new id.
-long long pid_of(int tag, const std::map<int, int>& renumbered) {
-  const auto it = renumbered.find(tag);
-  return it == renumbered.end() ? tag : it->second;
-}
-
 void check_new_deck(const TetMesh& mesh) {
   if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
   std::size_t elements = mesh.num_tets();
@@ -133,14 +127,14 @@ void check_new_deck(const TetMesh& mesh) {
                       "99,999,999 nodes or elements");
 }
 
-void write_parts(std::ostream& out, const TetMesh& mesh, const std::map<int, int>& renumbered) {
+void write_parts(std::ostream& out, const TetMesh& mesh, const RegionIds& pids) {
   std::map<long long, std::string> parts;  // PID → heading
   const std::string* names_body = raw_section(mesh.extras, "$PhysicalNames");
   std::map<int, std::string> names[4];
   if (names_body != nullptr)
     for (int d = 0; d <= 3; ++d) names[d] = physical_names_of(*names_body, d);
   const auto add = [&](int dimension, int tag) {
-    std::string& heading = parts[pid_of(tag, renumbered)];
+    std::string& heading = parts[pids.of(dimension, tag)];
     const auto it = names[dimension].find(tag);
     if (heading.empty() && it != names[dimension].end()) heading = it->second;
   };
@@ -165,9 +159,9 @@ void write_parts(std::ostream& out, const TetMesh& mesh, const std::map<int, int
 void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   const std::vector<long long> node_ids = numbers_or_positions(mesh.extras.node_tags, mesh.num_nodes(), kLargestId);
   const std::vector<long long> ids = element_numbers(mesh, kLargestId, {true, written_block});
-  const std::map<int, int> renumbered = lsdyna_new_pids(mesh);
+  const RegionIds pids = lsdyna_region_ids(mesh);
   out << "$ written by tetsmooth\n*KEYWORD\n";
-  write_parts(out, mesh, renumbered);
+  write_parts(out, mesh, pids);
   out << "*NODE\n$#   nid               x               y               z      tc      rc\n";
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
     put(out, node_ids[i], 8);
@@ -180,7 +174,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   index_t nodes[10];
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
     put(out, ids[t], 8);
-    put(out, pid_of(tags.size() == mesh.num_tets() ? tags[t] : 0, renumbered), 8);
+    put(out, pids.of(3, tags.size() == mesh.num_tets() ? tags[t] : 0), 8);
     if (ten) {
       out << '\n';  // the nodes on a card of their own
       file_tet10(mesh, t, kMidsides, nodes);
@@ -199,7 +193,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
     const auto n = static_cast<std::size_t>(b.nodes_per_element);
     for (std::size_t e = 0; e < elements_in(b); ++e) {
       put(out, ids[first + e], 8);
-      put(out, pid_of(b.tags.size() == elements_in(b) ? b.tags[e] : 0, renumbered), 8);
+      put(out, pids.of(kind_dimension(b.kind), b.tags.size() == elements_in(b) ? b.tags[e] : 0), 8);
       for (int p : kind->places)
         put(out, node_ids[static_cast<std::size_t>(b.connectivity[e * n + static_cast<std::size_t>(p)])], 8);
       out << '\n';
@@ -223,7 +217,7 @@ constexpr DeckWriter kWriter{"lsdyna", "LS-DYNA deck", check_new_deck, write_kep
 
 bool lsdyna_writes_block(const PassThroughBlock& block) { return written_block(block); }
 
-std::map<int, int> lsdyna_new_pids(const TetMesh& mesh) { return new_positive_ids(mesh, kLargestId, written_block); }
+RegionIds lsdyna_region_ids(const TetMesh& mesh) { return RegionIds(mesh, kLargestId, written_block); }
 
 std::string lsdyna_numbers_lost(const TetMesh& mesh) {
   return has_kept_deck(mesh, "lsdyna") ? "" : numbers_lost(mesh, kLargestId, {ElementSet{true, written_block}});

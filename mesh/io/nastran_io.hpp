@@ -80,7 +80,8 @@
 // have the deck's node and tet counts.
 // Any other mesh is written as a new deck: "BEGIN BULK", GRID* entries,
 // CTETRA (PID = region tag; tags that cannot be PIDs, and tets without
-// one, as new ids: nastran_new_pids), the pass-through elements (CTRIA3,
+// one, as new ids; shells and rods of a solid's tag get their own:
+// nastran_region_ids), the pass-through elements (CTRIA3,
 // CTRIA6, CQUAD4, CROD, CONM2, CHEXA, CPENTA, CPYRAM), "$TETSMOOTH PINNED"
 // lines for pinned nodes that no element pins, and ENDDATA. Node and
 // element ids are the file's where they are positive, distinct and at most
@@ -89,6 +90,7 @@
 #include <map>
 #include <string>
 
+#include "mesh/io/file_numbers.hpp"
 #include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth {
@@ -100,12 +102,14 @@ TetMesh read_nastran_file(const std::string& path);
 void write_nastran(const TetMesh& mesh, std::ostream& out);
 void write_nastran_file(const TetMesh& mesh, const std::string& path);
 
-// The PIDs a new deck gives region tags that cannot be PIDs (0 and below,
-// and past 99,999,999), and elements without one (as tag 0): ids that no
-// tag holds, from above the largest tag kept on (then from 1 up), 0 first,
-// then -1, -2, ..., then the large tags in order (Nastran's PIDs are
-// positive, of at most 8 digits).
-std::map<int, int> nastran_new_pids(const TetMesh& mesh);
+// The PIDs of a new deck (RegionIds): new ones for region tags that cannot
+// be PIDs (0 and below, and past 99,999,999) and elements without one (as
+// tag 0): ids that no tag holds, from above the largest tag kept on (then
+// from 1 up), 0 first, then -1, -2, ..., then the large tags in order
+// (Nastran's PIDs are positive, of at most 8 digits); and for shells and
+// lines whose tag solids (or, for lines, shells) have too, since a PID
+// names one property entry (a PSOLID or a PSHELL).
+RegionIds nastran_region_ids(const TetMesh& mesh);
 
 // The file's own numbers that a new deck for `mesh` cannot keep (see
 // file_numbers.hpp): "node", "element", "node and element", or "".

@@ -86,12 +86,6 @@ void write_deck(const TetMesh& mesh, std::ostream& out) {
 
 std::string text_of(long long v) { return std::to_string(v); }
 
-// The PID of a region tag: the tag itself, or its new id (nastran_new_pids).
-std::string pid_text(int tag, const std::map<int, int>& renumbered) {
-  const auto it = renumbered.find(tag);
-  return text_of(it == renumbered.end() ? tag : it->second);
-}
-
 // An element entry in small field where every field fits, else large.
 void write_element(std::ostream& out, const char* name, long long id, const std::vector<std::string>& fields) {
   const bool large =
@@ -123,7 +117,7 @@ void write_pinned_comment(std::ostream& out, const TetMesh& mesh, const std::vec
 void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   const std::vector<long long> node_ids = numbers_or_positions(mesh.extras.node_tags, mesh.num_nodes(), kLargestId);
   const std::vector<long long> ids = element_numbers(mesh, kLargestId);
-  const std::map<int, int> renumbered = nastran_new_pids(mesh);
+  const RegionIds pids = nastran_region_ids(mesh);
   out << "$ written by tetsmooth\nBEGIN BULK\n";
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
     std::vector<std::string> fields{text_of(node_ids[i]), ""};
@@ -134,7 +128,7 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   const std::vector<int>& tags = mesh.extras.tet_tags;
   index_t nodes[10];
   for (std::size_t t = 0; t < mesh.num_tets(); ++t) {
-    std::vector<std::string> fields{text_of(ids[t]), pid_text(tags.size() == mesh.num_tets() ? tags[t] : 0, renumbered)};
+    std::vector<std::string> fields{text_of(ids[t]), text_of(pids.of(3, tags.size() == mesh.num_tets() ? tags[t] : 0))};
     if (ten)
       file_tet10(mesh, t, nastran::kCtetraMidsides, nodes);
     else
@@ -149,7 +143,8 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
     const auto n = static_cast<std::size_t>(b.nodes_per_element);
     for (std::size_t e = 0; e < elements_in(b); ++e) {
       std::vector<std::string> fields{text_of(ids[first + e])};
-      if (entry.has_pid) fields.push_back(pid_text(b.tags.size() == elements_in(b) ? b.tags[e] : 0, renumbered));
+      if (entry.has_pid)
+        fields.push_back(text_of(pids.of(kind_dimension(b.kind), b.tags.size() == elements_in(b) ? b.tags[e] : 0)));
       for (std::size_t k = 0; k < n; ++k)
         fields.push_back(text_of(node_ids[static_cast<std::size_t>(b.connectivity[e * n + k])]));
       write_element(out, entry.name, ids[first + e], fields);
@@ -164,8 +159,8 @@ constexpr DeckWriter kWriter{"nastran", "Nastran deck", check_new_deck, write_de
 
 }  // namespace
 
-std::map<int, int> nastran_new_pids(const TetMesh& mesh) {
-  return new_positive_ids(mesh, kLargestId, [](const PassThroughBlock& b) {
+RegionIds nastran_region_ids(const TetMesh& mesh) {
+  return RegionIds(mesh, kLargestId, [](const PassThroughBlock& b) {
     const nastran::EntryType* entry = nastran::entry_type_of_kind(b.kind);
     return entry != nullptr && entry->has_pid;
   });

@@ -422,9 +422,9 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     bool tag_lost = std::any_of(e.tet_tags.begin(), e.tet_tags.end(), not_id);
     for (const PassThroughBlock& b : e.blocks) tag_lost = tag_lost || std::any_of(b.tags.begin(), b.tags.end(), not_id);
     std::string pairs;
-    for (const auto& [from, to] : f == MeshFormat::Nastran ? nastran_new_pids(mesh)
+    for (const auto& [from, to] : f == MeshFormat::Nastran ? nastran_region_ids(mesh).renumbered()
                                   : f == MeshFormat::Ansys ? ansys_new_materials(mesh)
-                                                           : lsdyna_new_pids(mesh))
+                                                           : lsdyna_region_ids(mesh).renumbered())
       pairs += (pairs.empty() ? "" : ", ") + std::to_string(from) + " as " + std::to_string(to);
     if (tag_lost && !pairs.empty())
       notes.push_back(f == MeshFormat::Ansys
@@ -433,6 +433,19 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                           : "region tags that are no PIDs are written as new ones (" + pairs + "): " +
                                 (f == MeshFormat::Nastran ? "Nastran's" : "LS-DYNA's") +
                                 " PIDs are positive, of at most 8 digits");
+  }
+  if ((f == MeshFormat::Nastran && !nastran) || (f == MeshFormat::Lsdyna && !lsdyna)) {
+    // A PID names one kind of property: shells and lines that share a tag
+    // with solids (or lines with shells) get PIDs of their own.
+    std::string pairs;
+    const RegionIds pids = f == MeshFormat::Nastran ? nastran_region_ids(mesh) : lsdyna_region_ids(mesh);
+    for (auto it = pids.split().rbegin(); it != pids.split().rend(); ++it)  // shells first
+      pairs += (pairs.empty() ? "" : ", ") + std::string(it->first.first == 2 ? "shells" : "lines") + " of region " +
+               std::to_string(it->first.second) + " as PID " + std::to_string(it->second);
+    if (!pairs.empty())
+      notes.push_back("elements of several dimensions in one region get PIDs of their own (" + pairs + "): " +
+                      (f == MeshFormat::Nastran ? "a Nastran PID names one property entry (PSOLID, PSHELL or PROD)"
+                                                : "an LS-DYNA part takes one section (solid, shell or beam)"));
   }
   if (msh && !gmsh::node_tags_fit_int(e.node_tags)) {
     const std::string largest = std::to_string(*std::max_element(e.node_tags.begin(), e.node_tags.end()));

@@ -311,11 +311,16 @@ TEST(LsdynaRead, ConstraintsSetsLoadsAndElementsPin) {
 TEST(LsdynaRead, PartHeadingsNameRegions) {
   const TetMesh mesh = read_text(with("*PART\nrock mass\n" + ints({1, 1, 1}, 10) + "*PART\n\n" +
                                       ints({2, 1, 1}, 10) + "*PART_CONTACT\ntunnel lining\n" + ints({4}, 10) +
-                                      ints({0}, 10)));
+                                      ints({0}, 10) +
+                                      // Cards of other kinds: no heading, no PID card (a name for
+                                      // part 2 here would come first).
+                                      "*PART_SENSOR\n" + ints({1, 7, 1}, 10) + ints({2, 8, 1}, 10) +
+                                      "*PART_DUPLICATE\nPART" + ints({1, 0, 1000}, 10) +
+                                      "*PART_INERTIA_CONTACT\nbolt\n" + ints({2}, 10)));
   const std::string* names = raw_section(mesh.extras, "$PhysicalNames");
   ASSERT_NE(names, nullptr);
   const std::map<int, std::string> solids = physical_names_of(*names, 3);
-  EXPECT_EQ(solids, (std::map<int, std::string>{{1, "rock mass"}}));
+  EXPECT_EQ(solids, (std::map<int, std::string>{{1, "rock mass"}, {2, "bolt"}}));
 }
 
 TEST(LsdynaWrite, KeptDeckChangesOnlyMovedNodes) {

@@ -40,6 +40,23 @@ const std::vector<NodeFieldKeyword>& node_field_keywords() {
 
 bool starts_with(const std::string& s, std::string_view prefix) { return s.compare(0, prefix.size(), prefix) == 0; }
 
+// *PART and its options that keep *PART's first cards (a heading, then PID
+// first on the next): not *PART_SENSOR, *PART_DUPLICATE, *PART_ANNEAL,
+// *PART_MODES and the like, whose cards are others.
+bool is_part_keyword(const std::string& name) {
+  if (name == "PART") return true;
+  if (!starts_with(name, "PART_")) return false;
+  static const char* const kOptions[] = {"INERTIA", "REPOSITION", "ATTACHMENT", "NODES", "CONTACT",
+                                         "PRINT",   "AVERAGED",   "COMPOSITE",  "LONG",  "TSHELL"};
+  for (std::size_t at = 5; at < name.size();) {
+    const std::size_t end = std::min(name.find('_', at), name.size());
+    const std::string_view word = std::string_view(name).substr(at, end - at);
+    if (std::none_of(std::begin(kOptions), std::end(kOptions), [&](const char* o) { return word == o; })) return false;
+    at = end + 1;
+  }
+  return true;
+}
+
 // The options after `base` in a keyword's name ("ELEMENT_SHELL_THICKNESS"
 // has {"THICKNESS"}).
 std::vector<std::string> options_of(const std::string& name, std::string_view base) {
@@ -204,7 +221,7 @@ void DeckReader::keyword(const std::string& line) {
   } else if (name == "ELEMENT_MASS") {
     section_ = Section::PinOnly;
     node_fields_ = {1};
-  } else if (name == "PART" || starts_with(name, "PART_")) {
+  } else if (is_part_keyword(name)) {
     section_ = Section::Part;
     parts_all_ = name == "PART";
   } else if (name == "SET_NODE" || name == "SET_NODE_LIST" || name == "SET_NODE_TITLE" ||

@@ -440,11 +440,17 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   EXPECT_EQ(marked.num_tets(), 4u);
   EXPECT_EQ(write_text(marked), "*KEYWORD\n" + i10_written + kSolids + "*END\n");
   EXPECT_EQ(read_text(write_text(marked)).xyz, marked.xyz);
+  // The file's own "*KEYWORD I10=Y" agrees (Oasys PRIMER writes both).
   std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD I10=Y\n" << i10_nodes;
-  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nodes.k\n" << kSolids << "*END\n";
   const TetMesh own = read_lsdyna_file(dir.file("main.k"));
   EXPECT_EQ(own.num_tets(), 4u);
   EXPECT_EQ(write_text(own), "*KEYWORD\n$*KEYWORD I10=Y\n" + i10_written + kSolids + "*END\n");
+  // Without the mark LS-DYNA would read the file in the deck's layout.
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nodes.k\n" << kSolids << "*END\n";
+  EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
+            dir.file("mesh/nodes.k") + ":1: an included file's *KEYWORD sets no layout in LS-DYNA, and this file is "
+                                       "read in the standard layout: mark its *INCLUDE (\"*INCLUDE %\") for a file "
+                                       "in the I10 layout");
   std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD\n" << kNodes << "*END\n";
   std::ofstream(dir.file("main.k")) << "*KEYWORD I10=Y\n*INCLUDE -\nmesh/nodes.k\n*ELEMENT_SOLID -\n"
                                     << kSolids.substr(kSolids.find('\n') + 1) << "*END\n";

@@ -12,7 +12,8 @@
 // LONG=S) is refused. *INCLUDE reads the file its next card names in place
 // (a relative path from the deck's directory; included_lines.hpp), in the
 // parent's layout or, after "*INCLUDE %" or "*INCLUDE -", in the layout
-// that mark names; a file's "*KEYWORD I10=Y" holds in that file alone. Nothing
+// that mark names (an included file's own *KEYWORD sets no layout in
+// LS-DYNA: one that asks for another is refused). Nothing
 // after *END is read: it is kept in the deck itself, and left out (with the
 // *END) in an included file, which *END ends alone.
 //

@@ -156,8 +156,19 @@ void DeckReader::keyword(const std::string& line) {
       if (options.find(key) != std::string::npos)
         fail("the long layout (" + std::string(key) +
              ") is not read: save the deck in the standard layout, or in the I10 layout for ids of 9 or 10 digits");
-    if (options.find("I10=Y") != std::string::npos) deck_layout_ = layout_ = Layout::I10;
-    if (k.marked) deck_layout_ = k.layout;
+    Layout asked = options.find("I10=Y") != std::string::npos ? Layout::I10 : deck_layout_;
+    if (k.marked) asked = k.layout;
+    if (lines_.depth() == 1) {
+      deck_layout_ = layout_ = asked;
+    } else if (asked != deck_layout_) {
+      // LS-DYNA reads an included file in the deck's layout, or in the one
+      // its *INCLUDE's mark names, whatever the file's *KEYWORD says; read
+      // otherwise, the file would mean something else to it.
+      fail("an included file's *KEYWORD sets no layout in LS-DYNA, and this file is read in the " +
+           std::string(deck_layout_ == Layout::I10 ? "I10" : "standard") + " layout: mark its *INCLUDE (\"*INCLUDE " +
+           (asked == Layout::I10 ? "%" : "-") + "\") for a file in the " +
+           (asked == Layout::I10 ? "I10" : "standard") + " layout");
+    }
     return;
   }
   if (name == "END") {

@@ -1106,8 +1106,9 @@ class HandWrittenDecks(DeckCase):
         file headed by *KEYWORD, as pre-processors write them, the second
         ended by *END where `end_included`); and the same deck with the
         files' lines in place of the *INCLUDE, the included *KEYWORD as a
-        comment (as tetsmooth writes it inline: an included file's *KEYWORD
-        options hold in that file alone). Returns (deck, flat deck)."""
+        comment (as tetsmooth writes it inline: LS-DYNA takes an included
+        file's layout from its *INCLUDE, not from its *KEYWORD). Returns
+        (deck, flat deck)."""
         tag = "-end" if end_included else ""
         lines = self.deck_lines()
         start, end = lines.index("*NODE"), lines.index("*ELEMENT_SOLID")
@@ -1194,6 +1195,11 @@ class HandWrittenDecks(DeckCase):
                 back = meshio.read(self.path(name[:-2] + "-back.vtu"))
                 np.testing.assert_array_equal(back.cells_dict["tetra"], self.tets)
                 np.testing.assert_allclose(back.points, expected, rtol=WRITTEN_RTOL, atol=WRITTEN_ATOL)
+        # Without the mark LS-DYNA reads the file in the deck's layout,
+        # whatever its own *KEYWORD says: refused, naming the mark.
+        src = self.write("include-unmarked.k", lines[:start] + ["*INCLUDE", "parts/i10-keyword.k"] + lines[end:])
+        proc = run("quality", src, check=False)
+        self.assert_one_error_line(proc, EXIT_INPUT, "i10-keyword.k:1:", '"*INCLUDE %"')
 
     def test_left_handed_tets(self):
         # Every third tet listed left-handed (N2 and N3 swapped): LS-DYNA

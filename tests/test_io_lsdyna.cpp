@@ -457,6 +457,28 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
             "*KEYWORD I10=Y\n$*KEYWORD\n" + std::string("*NODE -") + kNodes.substr(5) + "*ELEMENT_SOLID -\n" +
                 kSolids.substr(kSolids.find('\n') + 1) + "*END\n");
+  // Back from a file that includes another in its own layout, the next file
+  // named under the first *INCLUDE takes that *INCLUDE's layout again.
+  std::ofstream(dir.file("mesh/part.k")) << "*INCLUDE -\nmesh/empty.k\n";
+  std::ofstream(dir.file("mesh/empty.k")) << "$ nothing\n";
+  std::ofstream(dir.file("mesh/nodes.k")) << i10_nodes;
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE %\nmesh/part.k\nmesh/nodes.k\n" << kSolids << "*END\n";
+  EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
+            "*KEYWORD\n$ nothing\n" + i10_written + kSolids + "*END\n");
+  // An included *KEYWORD_ID's card goes with it into a comment.
+  std::ofstream(dir.file("mesh/part.k")) << "*KEYWORD_ID\nmy model\n";
+  EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
+            "*KEYWORD\n$*KEYWORD_ID\n$my model\n" + i10_written + kSolids + "*END\n");
+  // The long layout is refused on an *INCLUDE and on an included *KEYWORD.
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE +\nmesh/nodes.k\n" << kSolids << "*END\n";
+  EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
+            dir.file("main.k") + ":2: the long layout (*INCLUDE +) is not read: save the deck in the standard "
+                                 "layout, or in the I10 layout for ids of 9 or 10 digits");
+  std::ofstream(dir.file("mesh/part.k")) << "*KEYWORD +\n";
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/part.k\n" << kNodes << kSolids << "*END\n";
+  EXPECT_NE(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k")
+                .find("part.k:1: the long layout (*KEYWORD +) is not read"),
+            std::string::npos);
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nod +\nes.k\n" << kSolids << "*END\n";
   std::ofstream(dir.file("mesh/nodes.k")) << kNodes << node(5, "1", "1", "1");
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),

@@ -150,14 +150,21 @@ void DeckReader::keyword(const std::string& line) {
   title_pending_ = head_pending_ = false;
   part_pid_card_ = 0;
   const std::string& name = keyword_;
+  const auto refuse_long = [&](const std::string& how) {
+    fail("the long layout (" + how +
+         ") is not read: save the deck in the standard layout, or in the I10 layout for ids of 9 or 10 digits");
+  };
+  // An included file's *KEYWORD and its cards are written as comments
+  // (written_inline).
+  inline_comments_ = false;
   if (name == "KEYWORD" || name == "KEYWORD_ID") {
     const std::string options = upper_case(k.rest);
     for (const char* key : {"LONG=Y", "LONG=S", "LONG=K"})
-      if (options.find(key) != std::string::npos)
-        fail("the long layout (" + std::string(key) +
-             ") is not read: save the deck in the standard layout, or in the I10 layout for ids of 9 or 10 digits");
+      if (options.find(key) != std::string::npos) refuse_long(key);
     Layout asked = options.find("I10=Y") != std::string::npos ? Layout::I10 : deck_layout_;
     if (k.marked) asked = k.layout;
+    if (asked == Layout::Long) refuse_long("*" + name + " +");
+    inline_comments_ = lines_.depth() > 1;
     if (lines_.depth() == 1) {
       deck_layout_ = layout_ = asked;
     } else if (asked != deck_layout_) {
@@ -176,6 +183,7 @@ void DeckReader::keyword(const std::string& line) {
     return;
   }
   if (name == "INCLUDE") {
+    if (layout_ == Layout::Long) refuse_long("*INCLUDE +");
     section_ = Section::Include;
     include_layout_ = layout_;  // "*INCLUDE %": the files named are in the I10 layout
     include_name_.clear();
@@ -437,7 +445,7 @@ std::string DeckReader::written_inline(const std::string& line) const {
   // where that differs.
   const Keyword k = keyword_of(line);
   if (k.name == "KEYWORD" || k.name == "KEYWORD_ID") return "$" + line;
-  if (k.marked || layout_ == outer_layouts_.front()) return line;
+  if (k.marked || layout_ == outer_layouts_.front().deck) return line;
   const std::size_t name_end = std::min(line.find_first_of(" \t\r"), line.size());
   return line.substr(0, name_end) + (layout_ == Layout::I10 ? " %" : " -") + line.substr(name_end);
 }
@@ -504,7 +512,7 @@ void DeckReader::data(const std::string& line) {
       if (!blank) pin_fields(card_of(line, wide_widths()), node_fields_);
       break;
   }
-  keep(line, false);
+  keep(inline_comments_ ? "$" + line : line, false);
 }
 
 void DeckReader::keep_notes() {
@@ -523,12 +531,16 @@ TetMesh DeckReader::read() {
   std::string line;
   std::size_t depth = 1;
   while (lines_.next(line)) {
-    // A file's layout is its own: *INCLUDE's, or the one its *KEYWORD sets.
+    // An included file's layout is its *INCLUDE's; back in the file that
+    // named it, that file's own layouts hold again.
     if (lines_.depth() > depth) {
-      outer_layouts_.push_back(deck_layout_);
+      outer_layouts_.push_back({deck_layout_, include_layout_});
       deck_layout_ = include_layout_;
     }
-    for (; outer_layouts_.size() >= lines_.depth(); outer_layouts_.pop_back()) deck_layout_ = outer_layouts_.back();
+    for (; outer_layouts_.size() >= lines_.depth(); outer_layouts_.pop_back()) {
+      deck_layout_ = outer_layouts_.back().deck;
+      include_layout_ = outer_layouts_.back().include;
+    }
     // Back from an included file: the cards that follow name more files.
     if (lines_.depth() < depth) {
       if (card_ != 0 && section_ != Section::Other && section_ != Section::Ended)

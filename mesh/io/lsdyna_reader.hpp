@@ -98,8 +98,12 @@ class DeckReader {
   std::string keyword_;           // its name, for messages and pins
   Layout layout_ = Layout::Standard;
   Layout deck_layout_ = Layout::Standard;  // the current file's: *KEYWORD's, or its *INCLUDE's
-  Layout include_layout_ = Layout::Standard;  // the last *INCLUDE's, for the files it names
-  std::vector<Layout> outer_layouts_;         // those of the files that include the current one
+  Layout include_layout_ = Layout::Standard;  // the current *INCLUDE's, for the files it names
+  struct OuterLayouts {
+    Layout deck, include;
+  };
+  std::vector<OuterLayouts> outer_layouts_;  // those of the files that include the current one
+  bool inline_comments_ = false;             // an included file's *KEYWORD section
   int cards_each_ = 1;            // cards an element takes (options add some)
   int card_ = 0;                  // cards of the current element (or part) read so far
   bool title_pending_ = false;    // a _TITLE keyword's title card comes next

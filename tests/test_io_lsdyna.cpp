@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <map>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -309,14 +309,13 @@ TEST(LsdynaRead, ConstraintsSetsLoadsAndElementsPin) {
 }
 
 TEST(LsdynaRead, PartHeadingsNameRegions) {
-  const TetMesh mesh = read_text(with("*PART\nrock mass\n" + ints({1, 1, 1}, 10) + "*PART\n\n" +
-                                      ints({2, 1, 1}, 10) + "*PART_CONTACT\ntunnel lining\n" + ints({4}, 10) +
-                                      ints({0}, 10) +
-                                      // Cards of other kinds: no heading, no PID card (a name for
-                                      // part 2 here would come first).
-                                      "*PART_SENSOR\n" + ints({1, 7, 1}, 10) + ints({2, 8, 1}, 10) +
-                                      "*PART_DUPLICATE\nPART" + ints({1, 0, 1000}, 10) +
-                                      "*PART_INERTIA_CONTACT\nbolt\n" + ints({2}, 10)));
+  const TetMesh mesh =
+      read_text(with("*PART\nrock mass\n" + ints({1, 1, 1}, 10) + "*PART\n\n" + ints({2, 1, 1}, 10) +
+                     "*PART_CONTACT\ntunnel lining\n" + ints({4}, 10) + ints({0}, 10) +
+                     // Cards of other kinds: no heading, no PID card (a name for
+                     // part 2 here would come first).
+                     "*PART_SENSOR\n" + ints({1, 7, 1}, 10) + ints({2, 8, 1}, 10) + "*PART_DUPLICATE\nPART" +
+                     ints({1, 0, 1000}, 10) + "*PART_INERTIA_CONTACT\nbolt\n" + ints({2}, 10)));
   const std::string* names = raw_section(mesh.extras, "$PhysicalNames");
   ASSERT_NE(names, nullptr);
   const std::map<int, std::string> solids = physical_names_of(*names, 3);
@@ -405,8 +404,9 @@ TEST(LsdynaWrite, ShellsAndBeamsOfASolidsTagGetTheirOwnParts) {
   EXPECT_EQ(back.extras.blocks[1].tags, (std::vector<int>{4}));
   const std::vector<std::string> notes = output_losses(mesh, "out.k");
   ASSERT_EQ(notes.size(), 1u);
-  EXPECT_EQ(notes[0], "elements of several dimensions in one region get PIDs of their own (shells of region 1 as PID "
-                      "3, lines of region 2 as PID 4): an LS-DYNA part takes one section (solid, shell or beam)");
+  EXPECT_EQ(notes[0],
+            "elements of several dimensions in one region get PIDs of their own (shells of region 1 as PID "
+            "3, lines of region 2 as PID 4): an LS-DYNA part takes one section (solid, shell or beam)");
   // Nastran's PIDs the same way.
   EXPECT_EQ(nastran_region_ids(mesh).split(), pids.split());
 }
@@ -431,7 +431,8 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   // An included file's layout: its *INCLUDE's mark, or its own *KEYWORD,
   // which holds in that file alone. Written inline, its keywords carry it.
   std::string i10_nodes = "*NODE\n";
-  for (std::size_t at = kNodes.find("\n", kNodes.find("\n") + 1) + 1; at < kNodes.size(); at = kNodes.find('\n', at) + 1)
+  for (std::size_t at = kNodes.find("\n", kNodes.find("\n") + 1) + 1; at < kNodes.size();
+       at = kNodes.find('\n', at) + 1)
     i10_nodes += "  " + kNodes.substr(at, kNodes.find('\n', at) + 1 - at);  // ids in 10 columns
   const std::string i10_written = "*NODE %\n" + i10_nodes.substr(6);
   std::ofstream(dir.file("mesh/nodes.k")) << i10_nodes;
@@ -448,15 +449,16 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   // Without the mark LS-DYNA would read the file in the deck's layout.
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nodes.k\n" << kSolids << "*END\n";
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
-            dir.file("mesh/nodes.k") + ":1: an included file's *KEYWORD sets no layout in LS-DYNA, and this file is "
-                                       "read in the standard layout: mark its *INCLUDE (\"*INCLUDE %\") for a file "
-                                       "in the I10 layout");
+            dir.file("mesh/nodes.k") +
+                ":1: an included file's *KEYWORD sets no layout in LS-DYNA, and this file is "
+                "read in the standard layout: mark its *INCLUDE (\"*INCLUDE %\") for a file "
+                "in the I10 layout");
   std::ofstream(dir.file("mesh/nodes.k")) << "*KEYWORD\n" << kNodes << "*END\n";
   std::ofstream(dir.file("main.k")) << "*KEYWORD I10=Y\n*INCLUDE -\nmesh/nodes.k\n*ELEMENT_SOLID -\n"
                                     << kSolids.substr(kSolids.find('\n') + 1) << "*END\n";
-  EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
-            "*KEYWORD I10=Y\n$*KEYWORD\n" + std::string("*NODE -") + kNodes.substr(5) + "*ELEMENT_SOLID -\n" +
-                kSolids.substr(kSolids.find('\n') + 1) + "*END\n");
+  EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))), "*KEYWORD I10=Y\n$*KEYWORD\n" + std::string("*NODE -") +
+                                                                  kNodes.substr(5) + "*ELEMENT_SOLID -\n" +
+                                                                  kSolids.substr(kSolids.find('\n') + 1) + "*END\n");
   // Back from a file that includes another in its own layout, the next file
   // named under the first *INCLUDE takes that *INCLUDE's layout again.
   std::ofstream(dir.file("mesh/part.k")) << "*INCLUDE -\nmesh/empty.k\n";
@@ -472,8 +474,9 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   // The long layout is refused on an *INCLUDE and on an included *KEYWORD.
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE +\nmesh/nodes.k\n" << kSolids << "*END\n";
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
-            dir.file("main.k") + ":2: the long layout (*INCLUDE +) is not read: save the deck in the standard "
-                                 "layout, or in the I10 layout for ids of 9 or 10 digits");
+            dir.file("main.k") +
+                ":2: the long layout (*INCLUDE +) is not read: save the deck in the standard "
+                "layout, or in the I10 layout for ids of 9 or 10 digits");
   std::ofstream(dir.file("mesh/part.k")) << "*KEYWORD +\n";
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/part.k\n" << kNodes << kSolids << "*END\n";
   EXPECT_NE(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k")

@@ -523,7 +523,10 @@ TEST(NastranIo, RealsInEveryFormAndInTheirWidth) {
     check(value, 16, std::abs(p) < 13 && std::fabs(value) >= 1 ? 5e-14 : std::abs(p) < 99 ? 5e-10 : 5e-9);
     check(value, 8, std::abs(p) < 99 ? 5e-2 : 0.5);
     // C's style spends a character on the exponent's sign or a leading 0.
-    check(value, 16, std::abs(p) < 13 && std::fabs(value) >= 1 ? 5e-14 : std::abs(p) < 99 ? 5e-9 : 5e-8,
+    check(value, 16,
+          std::abs(p) < 13 && std::fabs(value) >= 1 ? 5e-14
+          : std::abs(p) < 99                        ? 5e-9
+                                                    : 5e-8,
           nastran::RealStyle::C);
   }
 }

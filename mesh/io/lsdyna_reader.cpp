@@ -173,8 +173,8 @@ void DeckReader::keyword(const std::string& line) {
       // otherwise, the file would mean something else to it.
       fail("an included file's *KEYWORD sets no layout in LS-DYNA, and this file is read in the " +
            std::string(deck_layout_ == Layout::I10 ? "I10" : "standard") + " layout: mark its *INCLUDE (\"*INCLUDE " +
-           (asked == Layout::I10 ? "%" : "-") + "\") for a file in the " +
-           (asked == Layout::I10 ? "I10" : "standard") + " layout");
+           (asked == Layout::I10 ? "%" : "-") + "\") for a file in the " + (asked == Layout::I10 ? "I10" : "standard") +
+           " layout");
     }
     return;
   }

@@ -97,7 +97,7 @@ class DeckReader {
   Section section_ = Section::Other;
   std::string keyword_;           // its name, for messages and pins
   Layout layout_ = Layout::Standard;
-  Layout deck_layout_ = Layout::Standard;  // the current file's: *KEYWORD's, or its *INCLUDE's
+  Layout deck_layout_ = Layout::Standard;     // the current file's: *KEYWORD's, or its *INCLUDE's
   Layout include_layout_ = Layout::Standard;  // the current *INCLUDE's, for the files it names
   struct OuterLayouts {
     Layout deck, include;

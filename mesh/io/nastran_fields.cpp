@@ -78,7 +78,8 @@ std::string real_field(double value, std::size_t width, RealStyle style) {
   // are tried too.
   const auto most_digits = [&](auto format, int bare) {
     const int digits = static_cast<int>(width) - bare;
-    for (int d = std::min(digits + 1, 17); d >= std::max(digits - 1, 0); --d) consider(to_text(style, value, format, d));
+    for (int d = std::min(digits + 1, 17); d >= std::max(digits - 1, 0); --d)
+      consider(to_text(style, value, format, d));
   };
   // "d.E<exponent>", the sign: every double fits 8 columns so (C's
   // style only adds the sign of exponents from 100, "-1.E+300").

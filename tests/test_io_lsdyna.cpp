@@ -467,10 +467,12 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE %\nmesh/part.k\nmesh/nodes.k\n" << kSolids << "*END\n";
   EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
             "*KEYWORD\n$ nothing\n" + i10_written + kSolids + "*END\n");
-  // An included *KEYWORD_ID's card goes with it into a comment.
+  // An included *KEYWORD_ID's card goes with it into a comment, and no
+  // further line of the deck.
   std::ofstream(dir.file("mesh/part.k")) << "*KEYWORD_ID\nmy model\n";
+  std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE %\nmesh/part.k\n\nmesh/nodes.k\n" << kSolids << "*END\n";
   EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
-            "*KEYWORD\n$*KEYWORD_ID\n$my model\n" + i10_written + kSolids + "*END\n");
+            "*KEYWORD\n$*KEYWORD_ID\n$my model\n\n" + i10_written + kSolids + "*END\n");
   // The long layout is refused on an *INCLUDE and on an included *KEYWORD.
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE +\nmesh/nodes.k\n" << kSolids << "*END\n";
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),

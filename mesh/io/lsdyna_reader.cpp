@@ -548,6 +548,7 @@ TetMesh DeckReader::read() {
       section_ = Section::Include;
       keyword_ = "INCLUDE";
       include_name_.clear();
+      inline_comments_ = false;
     }
     depth = lines_.depth();
     // An included file's *END ends that file alone: it and what follows are

@@ -12,8 +12,8 @@ namespace {
 
 // A number from std::to_chars in `style`: a decimal point always, no
 // zeros after the mantissa's last digit, "E" with the exponent's leading
-// zeros left out; Nastran's style also leaves
-// out the exponent's '+' and writes "0." as ".".
+// zeros left out; Nastran's style also leaves out the exponent's '+' and
+// writes "0." as ".".
 std::string styled(std::string s, RealStyle style) {
   const bool nastran = style == RealStyle::Nastran;
   std::string exponent;

@@ -124,6 +124,19 @@ class CliTestCase(unittest.TestCase):
         for fragment in fragments:
             self.assertIn(fragment, lines[0])
 
+    def assert_refused_output_kept(self, args, out, older):
+        """A run of `args` that is refused (EXIT_INPUT) leaves the output
+        `out`, written with `older` first, as it was; `out` is removed after.
+        Returns the run."""
+        with open(out, "w") as f:
+            f.write(older)
+        proc = run(*args, check=False)
+        self.assertEqual(proc.returncode, EXIT_INPUT, proc.stderr)
+        with open(out) as f:
+            self.assertEqual(f.read(), older, "a refused run touched the output")
+        os.remove(out)
+        return proc
+
 
 class GenerateSmoothQuality(CliTestCase):
     @classmethod

@@ -312,6 +312,34 @@ TEST_F(IoDir, AtomicWriteThroughAHeldFileAppendsInPlace) {
   EXPECT_EQ(files(), 2u);  // held.txt and the link, no temporary
 }
 
+// /dev/fd/N and /proc/self/fd/N name a descriptor's file too, though lstat
+// shows no hop into /proc (the kernel resolves /dev/fd and /proc/self on
+// the way). The body goes through a copy of the descriptor: the file is
+// neither replaced nor written over by what the process writes through the
+// descriptor afterwards (a report sent to the same stdout).
+TEST_F(IoDir, AtomicWriteThroughDevFdSharesTheDescriptorsPlace) {
+  for (const std::string prefix : {"/dev/fd/", "/proc/self/fd/"}) {
+    SCOPED_TRACE(prefix);
+    const int fd = ::open(path("held.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    ASSERT_GE(fd, 0);
+    ASSERT_EQ(::write(fd, "head ", 5), 5);
+    struct stat before {};
+    ASSERT_EQ(::fstat(fd, &before), 0);
+    const std::string target = prefix + std::to_string(fd);
+    const LinkEnd end = follow_links(target);
+    EXPECT_TRUE(end.held);
+    EXPECT_EQ(end.fd, fd);
+    write_atomically(target, [](std::ostream& out) { out << "body"; });
+    ASSERT_EQ(::write(fd, " tail", 5), 5);
+    struct stat after {};
+    ASSERT_EQ(::stat(path("held.txt").c_str(), &after), 0);
+    ::close(fd);
+    EXPECT_EQ(after.st_ino, before.st_ino) << "the held file was replaced";
+    EXPECT_EQ(contents(path("held.txt")), "head body tail");
+    EXPECT_EQ(files(), 1u);  // no temporary
+  }
+}
+
 // Killed while the body is still writing: the temporary goes with the
 // process, and the old file stays.
 TEST_F(IoDir, AtomicWriteInterruptedBySignalLeavesNoTemporary) {

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cerrno>
 #include <climits>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <streambuf>
@@ -65,6 +66,11 @@ class FdBuf : public std::streambuf {
   char buf_[1 << 16];
 };
 
+bool same_inode(int fd, const struct stat& st) {
+  struct stat held {};
+  return ::fstat(fd, &held) == 0 && held.st_dev == st.st_dev && held.st_ino == st.st_ino;
+}
+
 // Where the bytes go: a temporary beside the target, renamed over it by
 // commit() and removed otherwise; or, for a target that is a device, FIFO or
 // socket, or a file this process holds open through /proc, the target itself.
@@ -79,9 +85,17 @@ class TempFile {
     const bool exists = ::stat(target_.c_str(), &st) == 0;  // through every link, /proc's too
     if (exists && ((!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) || held)) {
       direct_ = true;
-      // A held regular file (stdout sent to a file) is appended to, after
-      // what the process has written there, as through its descriptor.
-      fd_ = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | (S_ISREG(st.st_mode) ? O_APPEND : O_TRUNC));
+      if (end.fd >= 0 && same_inode(end.fd, st)) {
+        // Our own descriptor (stdout sent to a file): a copy shares its
+        // offset, so the body lands where the process writes and whatever
+        // it writes there afterwards (a report on stdout) follows the body
+        // instead of overwriting it. Bytes still in stdio's buffers go first.
+        std::fflush(nullptr);
+        fd_ = ::fcntl(end.fd, F_DUPFD_CLOEXEC, 0);
+      } else {
+        // Another process's held file is appended to, after what was written there.
+        fd_ = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | (S_ISREG(st.st_mode) ? O_APPEND : O_TRUNC));
+      }
       if (fd_ < 0) fail(target_, "", errno);
       return;
     }
@@ -162,11 +176,32 @@ class TempFile {
   int slot_ = -1;
 };
 
+// Marks `end` held when its path's directory resolves into /proc: a path
+// given as /dev/fd/N or /proc/self/fd/N names a descriptor's file even
+// though lstat shows no hop into /proc (the kernel resolves /dev/fd and
+// /proc/self on the way). A directory /proc/<this pid>/fd also names the
+// descriptor.
+void note_proc_entry(LinkEnd& end) {
+  const std::size_t slash = end.path.rfind('/');
+  const std::string dir = slash == std::string::npos ? "." : slash == 0 ? "/" : end.path.substr(0, slash);
+  char resolved[PATH_MAX];
+  if (::realpath(dir.c_str(), resolved) == nullptr) return;
+  const std::string real(resolved);
+  if (real.compare(0, 6, "/proc/") != 0) return;
+  end.held = true;
+  const std::string name = end.path.substr(slash + 1);
+  if (real != "/proc/" + std::to_string(::getpid()) + "/fd" || name.empty() || name.size() > 9 ||
+      name.find_first_not_of("0123456789") != std::string::npos)
+    return;
+  end.fd = std::stoi(name);
+}
+
 }  // namespace
 
 LinkEnd follow_links(const std::string& start) {
   LinkEnd end{start};
   for (int hop = 0; hop < 40; ++hop) {
+    note_proc_entry(end);
     struct stat st {};
     if (::lstat(end.path.c_str(), &st) != 0 || !S_ISLNK(st.st_mode)) return end;
     std::string link(static_cast<std::size_t>(st.st_size > 0 ? st.st_size : 255) + 1, '\0');

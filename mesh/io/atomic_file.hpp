@@ -13,11 +13,14 @@
 //    it names is replaced and the link stays a link; links that never end (a
 //    cycle, or more than 40) fail as open() would, with ELOOP;
 //  * an existing regular file keeps its permission bits;
-//  * a device, FIFO or socket (a terminal, a pipe), or a file the process
-//    holds open, reached through /proc (/dev/stdout sent to a file), is
-//    written directly (the held file appended to), as there is nothing to
-//    rename over it, or renaming would cut it off from its descriptor: such
-//    a write is not atomic.
+//  * a device, FIFO or socket (a terminal, a pipe), or a file a process
+//    holds open, reached through /proc (/dev/stdout or /dev/fd/1 sent to a
+//    file), is written directly, as there is nothing to rename over it, or
+//    renaming would cut it off from its descriptor: such a write is not
+//    atomic. A file this process holds is written through a copy of its own
+//    descriptor, so that the bytes land at that descriptor's place and what
+//    the process writes there next comes after them (stdout's buffers are
+//    flushed first); another process's held file is appended to.
 #include <functional>
 #include <ostream>
 #include <string>
@@ -31,13 +34,18 @@ using StreamBody = std::function<void(std::ostream&)>;
 
 // Where a write to `path` lands: symbolic links followed to their end, each
 // relative one against its own directory. `held` when the chain goes through
-// /proc (/dev/stdout is a link to /proc/self/fd/1): the file is one this
-// process has open, and renaming another over it would cut it off from that
-// descriptor. `endless` when the links do not end (a cycle, or more than 40
-// of them); `path` is then the last one reached.
+// /proc, by a link's target (/dev/stdout is a link to /proc/self/fd/1) or by
+// a directory that resolves there (/dev/fd is a link to /proc/self/fd, which
+// the kernel follows inside lstat, so /dev/fd/1's only visible hop leads
+// straight to the file): the file is one a process has open, and renaming
+// another over it would cut it off from that descriptor. `fd` is this
+// process's descriptor the chain went through (/proc/self/fd/N, N), or -1.
+// `endless` when the links do not end (a cycle, or more than 40 of them);
+// `path` is then the last one reached.
 struct LinkEnd {
   std::string path;
   bool held = false, endless = false;
+  int fd = -1;
 };
 LinkEnd follow_links(const std::string& path);
 

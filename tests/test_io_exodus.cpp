@@ -245,6 +245,21 @@ TEST(ExodusFiles, WrittenBackWithOnlyTheCoordinatesChanged) {
   EXPECT_FALSE(std::ifstream(dir.file("bad.exo")).good());
 }
 
+// A map that a new file could not keep (a repeated and a zero id) draws no
+// "renumbered" warning when the file is written back: its maps stay as read.
+TEST(ExodusFiles, WrittenBackKeepsEvenMapsANewFileCouldNot) {
+  ExodusSpec s = grid_spec();
+  s.node_map.resize(64);
+  for (int i = 0; i < 64; ++i) s.node_map[static_cast<std::size_t>(i)] = 1000 + i;
+  s.node_map[1] = s.node_map[0];
+  s.node_map[2] = 0;
+  TetMesh mesh = read_exodus(build_exodus(s), "t.exo");
+  EXPECT_EQ(exodus_numbers_lost(mesh), "");
+  TetMesh fresh = testing::cube_grid(3);  // the same ids in a new file are renumbered, and said so
+  fresh.extras.node_tags = mesh.extras.node_tags;
+  EXPECT_NE(exodus_numbers_lost(fresh), "");
+}
+
 TEST(ExodusFiles, NewFilesReadBackAsWritten) {
   TetMesh mesh = testing::cube_grid(3);
   FileExtras& e = mesh.extras;

@@ -258,6 +258,11 @@ TEST_F(TetGenIo, SeveralTetAttributesAreKept) {
   EXPECT_EQ(line, "1 1 2 3 4 1000000 0.5 0.001");  // whole numbers as integers, as meshio reads them
   EXPECT_EQ(read_tetgen(path("three")).extras.tet_attributes, mesh.extras.tet_attributes);
   // One whole region attribute needs no copy: the tags give it back.
+  // The ends of int's range are tags as they are (-2^31 is an int too).
+  std::istringstream n2(kNode), e2("2 4 1\n0 0 1 2 3 2147483647\n1 1 2 3 4 -2147483648\n");
+  const TetMesh ends = read_tetgen(n2, "box.node", e2, "box.ele");
+  EXPECT_EQ(ends.extras.tet_tags, (std::vector<int>{2147483647, -2147483647 - 1}));
+  EXPECT_TRUE(ends.extras.read_notes.empty());
   std::istringstream n1(kNode), e1("2 4 1\n0 0 1 2 3 7\n1 1 2 3 4 -3\n");
   const TetMesh one = read_tetgen(n1, "box.node", e1, "box.ele");
   EXPECT_TRUE(one.extras.tet_attributes.empty());

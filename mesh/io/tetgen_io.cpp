@@ -59,7 +59,7 @@ void take_tet_attributes(std::vector<double> values, std::size_t attrs, FileExtr
   std::vector<double> regions(tets);
   for (std::size_t t = 0; t < tets; ++t) regions[t] = values[t * attrs];
   const auto not_whole = std::find_if(regions.begin(), regions.end(), [](double v) {
-    return v != std::floor(v) || std::abs(v) > std::numeric_limits<int>::max();
+    return v != std::floor(v) || v < std::numeric_limits<int>::min() || v > std::numeric_limits<int>::max();
   });
   extras.tet_tags.reserve(tets);
   if (not_whole == regions.end()) {

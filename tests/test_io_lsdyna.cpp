@@ -503,6 +503,13 @@ TEST(LsdynaRead, ErrorsNameFileAndLine) {
   EXPECT_EQ(read_error("*NODE\n&nid,0,0,0\n"), "t.k:2: expected a node id (NID), a positive whole number, found '&nid'");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3, 9, 9, 9, 9, 9}))),
             "t.k:15: solid element 15 names node 9, which no *NODE defines");
+  // A blank node field names no node: a card cut short is refused, not dropped.
+  EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3}))),
+            "t.k:15: solid element 15 leaves node N4 blank or 0, which names no node (a card cut short?)");
+  EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 3}))),
+            "t.k:15: solid element 15 leaves node N2 blank or 0, which names no node (a card cut short?)");
+  EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3, 4, 5, 0, 6, 6}))),
+            "t.k:15: solid element 15 leaves node N6 blank or 0, which names no node (a card cut short?)");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({14, 1, 1, 2, 3, 5, 5, 5, 5, 5}))),
             "t.k:15: solid element 14 is defined a second time");
   EXPECT_EQ(read_error(with("*SET_NODE_LIST\n" + ints({1}, 10) + ints({77}, 10))),

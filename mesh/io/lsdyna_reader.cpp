@@ -301,6 +301,18 @@ void DeckReader::other_element(const std::string& kind, int nodes, long long id,
 }
 
 void DeckReader::solid_nodes(const long long* n, int count) {
+  // A blank node field reads as 0, which names no node: degenerate solids
+  // repeat a node instead, and only a tet's N5-N8 may stay blank. A card
+  // cut short (a deck copied in part) would otherwise lose its element.
+  const auto blank = [&](int k) {
+    fail("solid element " + std::to_string(pending_id_) + " leaves node N" + std::to_string(k + 1) +
+         " blank or 0, which names no node (a card cut short?)");
+  };
+  for (int k = 0; k < 4; ++k)
+    if (n[k] == 0) blank(k);
+  if (!all_equal(n, 4, 8, 0))
+    for (int k = 4; k < 8; ++k)
+      if (n[k] == 0) blank(k);
   solid_ids_.push_back(pending_id_);
   solid_marks_.push_back(lines_.mark());
   const auto tet = [&](std::initializer_list<int> places) {

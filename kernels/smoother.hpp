@@ -16,7 +16,8 @@ namespace tetsmooth {
 SmoothResult smooth_cpu(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring = nullptr);
 
 // The CUDA smoother. Throws DeviceError when CUDA support is not built or no
-// device is usable.
+// device is usable, and InputError for a mesh validate_mesh refuses (no
+// tets, an index out of range, arrays of the wrong length).
 SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring = nullptr);
 
 // True when a CUDA device can be used; otherwise `why` says why not.

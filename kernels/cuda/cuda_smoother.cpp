@@ -9,6 +9,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/quality_summary.hpp"
 #include "mesh/topology.hpp"
+#include "mesh/validate.hpp"
 
 namespace tetsmooth {
 
@@ -30,6 +31,10 @@ bool cuda_available(std::string* why) {
 SmoothResult smooth_cuda(TetMesh& mesh, const SmoothOptions& options, const Colouring* colouring) {
   std::string why;
   if (!cuda_available(&why)) throw DeviceError(why);
+  // The device trusts the mesh's shape: an index out of range, or a fixed
+  // array of another length, would be read out of bounds there, and a mesh
+  // without tets launches kernels of no blocks. The host's check names them.
+  validate_mesh(mesh, "the mesh given to smooth_cuda");
   // The summaries need the movable flags; the host topology, on the CPU
   // threads the options ask for, is cheap next to reading and writing the
   // mesh files around this call.

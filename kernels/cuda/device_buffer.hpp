@@ -3,6 +3,7 @@
 #include <cuda_runtime.h>
 
 #include <cstddef>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -38,7 +39,16 @@ class DeviceBuffer {
       return;
     }
     release();
-    if (n > 0) CUDA_CHECK(cudaMalloc(reinterpret_cast<void**>(&ptr_), (n * sizeof(T) + 15) / 16 * 16));
+    if (n > 0) {
+      // The size in the message: running out of device memory on a large
+      // mesh says how much one array wanted.
+      const std::size_t bytes = (n * sizeof(T) + 15) / 16 * 16;
+      const cudaError_t err = cudaMalloc(reinterpret_cast<void**>(&ptr_), bytes);
+      if (err != cudaSuccess) {
+        ptr_ = nullptr;
+        throw_cuda_error(err, ("cudaMalloc of " + std::to_string(bytes) + " bytes").c_str(), __FILE__, __LINE__);
+      }
+    }
     size_ = capacity_ = n;
   }
   void upload(const T* host, std::size_t n, cudaStream_t stream = nullptr) {

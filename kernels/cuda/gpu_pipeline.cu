@@ -43,6 +43,7 @@ struct GpuPipeline::Impl {
   // What restore_coordinates loaded, and where the result of the last run is.
   Precision precision = Precision::Double;
   Layout layout = Layout::AoS;
+  bool loaded = false;  // buf0 and buf1 hold coordinates: until then they are uninitialised
   double centre[3] = {0, 0, 0};
   double scale = 1;
   bool result_in_buf1 = false;
@@ -94,8 +95,8 @@ GpuPipeline::GpuPipeline(const TetMesh& mesh) : impl_(std::make_unique<Impl>()) 
   m.output.resize(3 * m.n);
   m.state.resize(1);
   m.repair_found.resize(kMaxRepairPasses);
-  // Centre and half-extent of the bounding box: float runs work in [-1, 1].
-  const BoundingBox box = bounding_box(mesh);
+  // Centre and half-extent of the tets' box: float runs work in [-1, 1].
+  const BoundingBox box = tet_corners_bounding_box(mesh);
   for (int k = 0; k < 3; ++k) m.centre[k] = box.centre(k);
   const double half = 0.5 * box.largest_side();
   m.scale = half > 0 ? half : 1.0;
@@ -129,12 +130,14 @@ void GpuPipeline::restore_coordinates(const SmoothOptions& o) {
   }
   m.result_in_buf1 = false;
   CUDA_CHECK(cudaStreamSynchronize(m.stream));
+  m.loaded = true;
 }
 
 SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring) {
   check_smooth_options(o);
   check_gpu_sweeps(o);
   Impl& m = *impl_;
+  if (!m.loaded) throw UsageError("GpuPipeline::run: restore_coordinates() has not been called");
   if (o.precision != m.precision || o.layout != m.layout)
     throw UsageError("GpuPipeline::run: restore_coordinates() was called for another precision or layout");
   check_gpu_strategy(o);
@@ -233,7 +236,20 @@ SmoothResult GpuPipeline::run(const SmoothOptions& o, const Colouring* colouring
   }
   a.stream = m.stream;
   a.unit = is_float ? m.scale : 1.0;
-  const SweepLoopStats loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
+  SweepLoopStats loop;
+  try {
+    loop = is_float ? run_sweep_loop<float>(a, o) : run_sweep_loop<double>(a, o);
+  } catch (...) {
+    // Stopped part way (a progress callback that cancels, say): the sweeps
+    // made stand, so download_xyz and a later run() must take the buffer
+    // that holds their result. At best effort: a device in error leaves the
+    // flag as it was, and the first error is the one passed on.
+    if (cudaMemcpyAsync(m.host_state, m.state.data(), sizeof(SweepState), cudaMemcpyDeviceToHost, m.stream) ==
+            cudaSuccess &&
+        cudaStreamSynchronize(m.stream) == cudaSuccess)
+      m.result_in_buf1 = latest_in_buf1(o.form, m.host_state->sweep);
+    throw;
+  }
   e_end.record(m.stream);
   CUDA_CHECK(cudaMemcpyAsync(m.host_state, m.state.data(), sizeof(SweepState), cudaMemcpyDeviceToHost, m.stream));
   CUDA_CHECK(cudaStreamSynchronize(m.stream));

@@ -50,7 +50,9 @@ class GpuPipeline {
   // (quality summaries are left for the caller). `colouring` replaces the
   // device colouring (tests use the CPU one); it must fit the mesh
   // (colouring_flaw, which smooth_cuda checks on the host topology), since
-  // every node its classes list may move. Synchronises at the end.
+  // every node its classes list may move. Synchronises at the end. Throws
+  // UsageError before any restore_coordinates(); a run that throws part way
+  // keeps the sweeps it made for download_xyz() and the next run().
   SmoothResult run(const SmoothOptions& options, const Colouring* colouring = nullptr);
 
   const GpuRunTimes& last_times() const;

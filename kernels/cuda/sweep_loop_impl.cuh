@@ -96,30 +96,30 @@ class SweepLauncher {
     if (kAdaptive) {
       tet_quality_kernel<<<blocks_for((a_.num_tets + kTetsPerThread - 1) / kTetsPerThread), kBlock, 0, a_.stream>>>(
           a_.view.tets, a_.num_tets, read, tet_q, a_.state);
-      launched();
+      launched("tet_quality_kernel");
       phases_.end_of("tet_quality");
     }
     sweep_kernel<Real, kAdaptive, F><<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(
         a_.view, read, write, a_.n, a_.movable, tet_q, old_min(), a_.moved, a_.state, a_.counters);
-    launched();
+    launched("sweep_kernel");
     phases_.end_of("node_update");
     stats_.lanes_per_node = 1;
     if (F == Form::A) {
       for (int pass = 0; kAdaptive && pass < kMaxRepairPasses; ++pass) {
         repair_check_kernel<<<blocks_for(a_.num_tets), kBlock, 0, a_.stream>>>(
             a_.view.tets, a_.num_tets, read, write, a_.moved, old_min(), a_.revert, a_.state, a_.counters, pass);
-        launched();
+        launched("repair_check_kernel");
         repair_apply_kernel<<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(a_.n, read, write, a_.moved, a_.revert,
                                                                          a_.state, a_.counters, pass);
-        launched();
+        launched("repair_apply_kernel");
       }
       count_moves_kernel<<<blocks_for(a_.n), kBlock, 0, a_.stream>>>(a_.n, read, write, a_.moved, a_.state,
                                                                       a_.counters);
-      launched();
+      launched("count_moves_kernel");
       phases_.end_of("repair");
     }
     verdict_kernel<<<1, 1, 0, a_.stream>>>(a_.state, a_.counters, o_.max_iterations);
-    launched();
+    launched("verdict_kernel");
     phases_.end_of("stopping_rule");
   }
 
@@ -134,8 +134,11 @@ class SweepLauncher {
     return stats_;
   }
 
-  void launched() {
-    CUDA_CHECK_LAUNCH();
+  // Checks the launch just made, naming its kernel: every launch of the
+  // loop passes through here, so the line alone would not tell them apart.
+  void launched(const char* kernel) {
+    const cudaError_t err = cudaGetLastError();
+    if (err != cudaSuccess) throw_cuda_error(err, kernel, __FILE__, __LINE__);
     ++stats_.launches;
   }
 
@@ -162,7 +165,7 @@ class SweepLauncher {
     const unsigned blocks = std::max(1u, std::min(blocks_for(a_.num_tets), kQualityMaxBlocks));
     min_mean_quality_kernel<Real>
         <<<blocks, kBlock, 0, a_.stream>>>(a_.view.tets, a_.num_tets, latest(sweeps), a_.state);
-    launched();
+    launched("min_mean_quality_kernel");
     CUDA_CHECK(cudaMemcpyAsync(a_.host_state, a_.state, sizeof(SweepState), cudaMemcpyDeviceToHost, a_.stream));
     CUDA_CHECK(cudaStreamSynchronize(a_.stream));
     MinMeanQuality q;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <initializer_list>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -585,6 +586,71 @@ TEST(GpuSmoother, ProgressReportsTheSweepsAndTheirQuality) {
   EXPECT_LT(seen.quality.back().min, 0.0);
   EXPECT_NEAR(seen.quality.back().min, r.after.min, 1e-12);
   EXPECT_NEAR(seen.quality.back().mean, r.after.mean, 1e-12);
+}
+
+// Float runs work in a frame around the tets' corners: a node no tet uses,
+// far away, must not stretch it (at 1e6 it squeezed the cube into a few
+// float steps, and the centre landed 0.06 from the centroid).
+TEST(GpuSmoother, FloatFrameIgnoresNodesInNoTet) {
+  SKIP_WITHOUT_GPU();
+  const TetMesh base = testing::cube_with_centre(0.3, 0.6, 0.45);
+  TetMesh stray = base;
+  stray.xyz.insert(stray.xyz.end(), {1e6, -1e6, 1e6});
+  for (Strategy strategy : {Strategy::MultiBlock, Strategy::Coloured, Strategy::SingleBlock}) {
+    SCOPED_TRACE(to_string(strategy));
+    SmoothOptions o = gpu_options(Form::B, Layout::AoS, strategy, Method::Ordinary, Precision::Float);
+    o.max_iterations = 1;
+    TetMesh gpu = stray;
+    smooth_cuda(gpu, o);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(gpu.xyz[3 * 8 + k], 0.5, 1e-6) << k;  // the corners' centroid
+    EXPECT_EQ(std::vector<double>(gpu.xyz.begin() + 27, gpu.xyz.end()), (std::vector<double>{1e6, -1e6, 1e6}));
+  }
+}
+
+// smooth_cuda checks on the host what the device would trust: a mesh
+// without tets, an index out of range, a fixed array of another length.
+TEST(GpuSmoother, MeshesTheDeviceCannotTrustAreRefused) {
+  SKIP_WITHOUT_GPU();
+  const SmoothOptions o = gpu_options(Form::B, Layout::AoS, Strategy::MultiBlock, Method::Adaptive, Precision::Double);
+  TetMesh none = testing::cube_with_centre();
+  none.tets.clear();
+  EXPECT_THROW(smooth_cuda(none, o), InputError);
+  TetMesh out_of_range = testing::cube_with_centre();
+  out_of_range.tets[5] = 9;
+  EXPECT_THROW(smooth_cuda(out_of_range, o), InputError);
+  TetMesh short_fixed = testing::cube_with_centre();
+  short_fixed.fixed.assign(3, 0);
+  EXPECT_THROW(smooth_cuda(short_fixed, o), InputError);
+}
+
+// run() needs coordinates loaded, and a run stopped part way (a progress
+// callback that cancels) keeps the sweeps it made: Form A's result lies in
+// the other buffer after an odd count, which download_xyz must take.
+TEST(GpuPipeline, RunNeedsCoordinatesAndAStoppedRunKeepsItsSweeps) {
+  SKIP_WITHOUT_GPU();
+  const TetMesh& mesh = model_5k();
+  SmoothOptions o = gpu_options(Form::A, Layout::AoS, Strategy::MultiBlock, Method::Adaptive, Precision::Double);
+  o.tolerance = 0;
+  o.max_iterations = 20;
+  o.check_every = 1;
+  cuda::GpuPipeline stopped(mesh);
+  EXPECT_THROW(stopped.run(o), UsageError);
+  int reported = 0;
+  SmoothOptions cancelling = o;
+  cancelling.progress = [&](const SweepProgress& s) {
+    reported = s.sweep;
+    throw std::runtime_error("cancelled");
+  };
+  stopped.restore_coordinates(cancelling);
+  EXPECT_THROW(stopped.run(cancelling), std::runtime_error);
+  ASSERT_EQ(reported, 1);
+  cuda::GpuPipeline one(mesh);
+  o.max_iterations = 1;
+  one.restore_coordinates(o);
+  one.run(o);
+  const std::vector<double> after_one = one.download_xyz();
+  EXPECT_NE(after_one, mesh.xyz);
+  EXPECT_EQ(stopped.download_xyz(), after_one);
 }
 
 TEST(GpuPipeline, RestoreGivesTheSameRunAgain) {

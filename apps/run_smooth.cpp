@@ -17,6 +17,7 @@
 #include "mesh/errors.hpp"
 #include "mesh/io/mesh_io.hpp"
 #include "mesh/io/writable_check.hpp"
+#include "mesh/quality_summary.hpp"
 #include "mesh/validate.hpp"
 
 namespace tetsmooth::cli {
@@ -80,8 +81,11 @@ std::string stop_phrase(const SmoothResult& r, Method method) {
 // What may have inverted tets in this run: ordinary smoothing moves without
 // looking, and in-place Form B under CUDA MultiBlock or SingleBlock (the
 // paper's racy variants) judges moves against neighbours that are moving.
-std::string inversion_warning(const SmoothCommand& c, Device device, std::size_t inverted) {
-  const std::string count = with_thousands(inverted) + " tets";
+std::string inversion_warning(const SmoothCommand& c, Device device, const InversionChange& change) {
+  const std::string count = with_thousands(change.made) + " tets" +
+                            (change.mended > 0 ? " (and put right " + with_thousands(change.mended) +
+                                                     " that the input had inverted)"
+                                               : "");
   if (c.options.method == Method::Ordinary) return "ordinary smoothing inverted " + count + "; --method adaptive with "
                                                    "the coloured strategy or --form A never does";
   if (device == Device::Cuda && c.options.form == Form::B && c.options.strategy != Strategy::Coloured)
@@ -154,6 +158,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
   ProgressLine progress(console.err, style, options.max_iterations, ProgressLine::kDelay,
                         ProgressLine::interval_for(style));
   if (style != ProgressLine::Style::Off) options.progress = [&progress](const SweepProgress& p) { progress.update(p); };
+  std::vector<std::uint8_t> inverted_before;  // tet by tet: a net count would hide mended tets behind new ones
   try {
     const SmoothingPins pins(mesh, options.threads);
     const auto stay = [](std::size_t n) { return n == 1 ? " stays fixed" : " stay fixed"; };
@@ -177,6 +182,7 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
     else if (corners > 0)
       console.note(counted(corners, "node", "nodes") + " at the ends of edges whose midside node is pinned" +
                    stay(corners));
+    inverted_before = inverted_tets(mesh);
     record.result = on_input_mesh(c.input, [&] { return smooth(mesh, options, record.device); });
   } catch (...) {
     progress.finish();
@@ -190,8 +196,8 @@ void run_smooth(const SmoothCommand& c, const Console& console) {
                  " with midside nodes off their edges' midpoints would have folded (a Jacobian turning "
                  "non-positive): " + (r.folded_tets == 1 ? "its" : "their") + " corners stay, and smoothing started "
                  "again " + counted(static_cast<std::size_t>(r.second_order_restarts), "time", "times"));
-  if (r.after.inverted > r.before.inverted) {
-    record.warnings.push_back(inversion_warning(c, record.device, r.after.inverted - r.before.inverted));
+  if (const InversionChange change = inversion_change(inverted_before, inverted_tets(mesh)); change.made > 0) {
+    record.warnings.push_back(inversion_warning(c, record.device, change));
     console.warn(record.warnings.back());
   }
   if (!console.quiet) print_report(console, c, record);

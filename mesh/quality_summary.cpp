@@ -52,6 +52,25 @@ MinMeanQuality min_mean_quality(const TetMesh& mesh, int threads) {
   return r;
 }
 
+std::vector<std::uint8_t> inverted_tets(const TetMesh& mesh) {
+  std::vector<std::uint8_t> inverted(mesh.num_tets());
+#pragma omp parallel for schedule(static)
+  for (std::size_t t = 0; t < inverted.size(); ++t) {
+    const Corners c = corners(mesh, t);
+    inverted[t] = signed_volume6(c.v[0], c.v[1], c.v[2], c.v[3]) < 0;
+  }
+  return inverted;
+}
+
+InversionChange inversion_change(const std::vector<std::uint8_t>& before, const std::vector<std::uint8_t>& after) {
+  InversionChange change;
+  for (std::size_t t = 0; t < std::min(before.size(), after.size()); ++t) {
+    change.made += !before[t] && after[t];
+    change.mended += before[t] && !after[t];
+  }
+  return change;
+}
+
 QualitySummary summarize_quality(const TetMesh& mesh, const std::vector<std::uint8_t>& movable) {
   QualitySummary s;
   s.tets = mesh.num_tets();

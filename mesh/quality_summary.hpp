@@ -41,6 +41,18 @@ struct MinMeanQuality {
 // taken in double, its rounding depending on the thread count.
 MinMeanQuality min_mean_quality(const TetMesh& mesh, int threads = 0);
 
+// Which tets are inverted, as QualitySummary::inverted counts them (signed
+// volume < 0): 1 a tet, in tet order.
+std::vector<std::uint8_t> inverted_tets(const TetMesh& mesh);
+
+// How a run changed the inverted tets, from inverted_tets before and after
+// (of the same length): `made` were valid and are inverted, `mended` were
+// inverted and are not. A net count would hide one behind the other.
+struct InversionChange {
+  std::size_t made = 0, mended = 0;
+};
+InversionChange inversion_change(const std::vector<std::uint8_t>& before, const std::vector<std::uint8_t>& after);
+
 // `movable` may be empty (then min_movable is the overall min).
 QualitySummary summarize_quality(const TetMesh& mesh, const std::vector<std::uint8_t>& movable = {});
 

@@ -895,6 +895,34 @@ TEST_F(CliFiles, InversionWarningCountsOnlyTheTetsSmoothingInverted) {
       << r.err;
 }
 
+// Tets put right do not hide tets inverted: beside the concave star, a cube
+// whose centre lies outside it (its 2 tets on the face x = 1 inverted),
+// which ordinary smoothing moves back to the corners' centroid. A net count
+// said nothing where the two were equal.
+TEST_F(CliFiles, InversionWarningCountsTetsInvertedAndPutRightApart) {
+  TetMesh mesh = testing::concave_star();
+  const std::size_t star_tets = mesh.num_tets();
+  const TetMesh cube = testing::cube_with_centre(1.5, 0.5, 0.5);
+  const index_t first = static_cast<index_t>(mesh.num_nodes());
+  for (std::size_t i = 0; i < cube.xyz.size(); ++i) mesh.xyz.push_back(cube.xyz[i] + (i % 3 == 0 ? 10.0 : 0.0));
+  for (const index_t v : cube.tets) mesh.tets.push_back(first + v);
+  write_mesh(mesh, path("in.vtu"));
+  const std::size_t inverted_before = count_inverted(read_mesh(path("in.vtu")));
+  ASSERT_EQ(inverted_before, 2u);
+  const CliRun r = run({"smooth", path("in.vtu"), "-o", path("out.vtu"), "--device", "cpu", "--method", "ordinary"});
+  ASSERT_EQ(r.code, kExitOk) << r.err;
+  const TetMesh out = read_mesh(path("out.vtu"));
+  TetMesh cube_part = out;
+  cube_part.tets.erase(cube_part.tets.begin(), cube_part.tets.begin() + static_cast<std::ptrdiff_t>(4 * star_tets));
+  ASSERT_EQ(count_inverted(cube_part), 0u) << "the cube's tets are not all put right";
+  const std::size_t made = count_inverted(out);  // all of them in the star
+  ASSERT_GT(made, 0u) << "the fixture no longer inverts under ordinary smoothing";
+  EXPECT_NE(r.err.find("ordinary smoothing inverted " + std::to_string(made) +
+                       " tets (and put right 2 that the input had inverted);"),
+            std::string::npos)
+      << r.err;
+}
+
 // The report's total covers every phase it lists (it is measured from the
 // start of the run to the end of the write), and the write is timed: a
 // phase left unset reads 0, while writing a file on steady_clock's

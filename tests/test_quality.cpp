@@ -333,5 +333,23 @@ TEST(MinMeanQuality, MatchesTheSummaryForAnyThreadCount) {
   EXPECT_EQ(none.mean, 0.0);
 }
 
+// Tet by tet, against the summary's count: the centre outside the cube past
+// x = 1 inverts the 2 tets on that face; moved back, those are put right
+// and none is made.
+TEST(InvertedTets, FlagsAndTheirChange) {
+  const TetMesh outside = testing::cube_with_centre(1.5, 0.5, 0.5);
+  const std::vector<std::uint8_t> before = inverted_tets(outside);
+  ASSERT_EQ(before.size(), outside.num_tets());
+  EXPECT_EQ(static_cast<std::size_t>(std::count(before.begin(), before.end(), 1)), summarize_quality(outside).inverted);
+  EXPECT_EQ(summarize_quality(outside).inverted, 2u);
+  const std::vector<std::uint8_t> after = inverted_tets(testing::cube_with_centre());
+  const InversionChange mended = inversion_change(before, after);
+  EXPECT_EQ(mended.made, 0u);
+  EXPECT_EQ(mended.mended, 2u);
+  const InversionChange made = inversion_change(after, before);
+  EXPECT_EQ(made.made, 2u);
+  EXPECT_EQ(made.mended, 0u);
+}
+
 }  // namespace
 }  // namespace tetsmooth

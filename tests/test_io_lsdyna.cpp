@@ -162,6 +162,19 @@ TEST(LsdynaRead, NodesTetsPartsAndIds) {
   EXPECT_TRUE(mesh.extras.read_notes.empty());
 }
 
+// A deck that opens with *KEYWORD and lacks *END reads as it is, with a
+// note: a deck cut short on a card's end looks just so. An included file
+// needs no *END of its own.
+TEST(LsdynaRead, ADeckWithoutEndIsNoted) {
+  const std::string cut = kStar.substr(0, kStar.find("*END"));
+  const TetMesh mesh = read_text(cut);
+  EXPECT_EQ(mesh.num_tets(), 4u);
+  EXPECT_EQ(mesh.extras.read_notes,
+            std::vector<std::string>{"the deck has *KEYWORD but ends without *END, as a deck cut short would: check "
+                                     "that its last cards are all there"});
+  EXPECT_TRUE(read_text(cut.substr(cut.find("*TITLE"))).extras.read_notes.empty());
+}
+
 TEST(LsdynaRead, EveryFormOfTet) {
   const std::vector<std::string> forms = {
       ints({1, 7, 1, 2, 3, 4, 4, 4, 4, 4}),  // LS-DYNA's

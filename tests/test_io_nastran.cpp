@@ -98,6 +98,19 @@ TEST(NastranIo, ReadsEntriesInEveryFieldFormat) {
   EXPECT_EQ(*raw_section(mesh.extras, "nastran:deck"), "6 2");
 }
 
+// A deck with BEGIN BULK but no ENDDATA reads as it is, with a note: a
+// deck cut short looks just so. Bulk data alone needs no ENDDATA.
+TEST(NastranIo, ADeckWithoutEnddataIsNoted) {
+  EXPECT_TRUE(read_text(kDeck).extras.read_notes.empty());
+  const std::string cut = kDeck.substr(0, kDeck.find("ENDDATA"));
+  const TetMesh mesh = read_text(cut);
+  EXPECT_EQ(mesh.num_tets(), 2u);
+  EXPECT_EQ(mesh.extras.read_notes,
+            std::vector<std::string>{"the deck has BEGIN BULK but ends without ENDDATA, as a deck cut short would: "
+                                     "check that its last entries are all there"});
+  EXPECT_TRUE(read_text(cut.substr(cut.find("BEGIN BULK\n") + 11)).extras.read_notes.empty());
+}
+
 TEST(NastranIo, WritesTheDeckBackChangingOnlyTheGridsOfMovedNodes) {
   EXPECT_EQ(write_text(read_text(kDeck)), kDeck);
   std::string crlf;

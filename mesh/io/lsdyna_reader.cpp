@@ -166,6 +166,7 @@ void DeckReader::keyword(const std::string& line) {
     if (asked == Layout::Long) refuse_long("*" + name + " +");
     inline_comments_ = lines_.depth() > 1;
     if (lines_.depth() == 1) {
+      deck_keyword_ = true;
       deck_layout_ = layout_ = asked;
     } else if (asked != deck_layout_) {
       // LS-DYNA reads an included file in the deck's layout, or in the one
@@ -180,6 +181,7 @@ void DeckReader::keyword(const std::string& line) {
   }
   if (name == "END") {
     section_ = Section::Ended;
+    deck_end_ = deck_end_ || lines_.depth() == 1;
     return;
   }
   if (name == "INCLUDE") {
@@ -537,6 +539,11 @@ void DeckReader::keep_notes() {
     e.read_notes.push_back("the deck's " + joined(unread_) +
                            " keywords are not read: where they name nodes, those nodes are not pinned (list the "
                            "nodes that must stay in a *SET_NODE_LIST)");
+  // LS-DYNA reads to the end of the file without *END, but the writers put
+  // it there: a deck that opens with *KEYWORD and lacks it may be cut short.
+  if (deck_keyword_ && !deck_end_)
+    e.read_notes.push_back("the deck has *KEYWORD but ends without *END, as a deck cut short would: check that its "
+                           "last cards are all there");
 }
 
 TetMesh DeckReader::read() {

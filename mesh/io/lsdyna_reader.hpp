@@ -104,6 +104,7 @@ class DeckReader {
   };
   std::vector<OuterLayouts> outer_layouts_;  // those of the files that include the current one
   bool inline_comments_ = false;             // an included file's *KEYWORD section
+  bool deck_keyword_ = false, deck_end_ = false;  // the deck's own *KEYWORD and *END, not an included file's
   int cards_each_ = 1;            // cards an element takes (options add some)
   int card_ = 0;                  // cards of the current element (or part) read so far
   bool title_pending_ = false;    // a _TITLE keyword's title card comes next

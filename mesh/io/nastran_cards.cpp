@@ -157,6 +157,7 @@ BulkCards::Kind BulkCards::next_undecided() {
       undecided_.clear();
       header_.push_back(std::move(line));
       part_ = Part::Bulk;
+      began_bulk_ = true;
       return next();
     }
     if (include_name_at(line.text) != std::string::npos) {

@@ -41,6 +41,9 @@ class BulkCards {
   const std::string& text() const { return text_; }
   // Whether the last Text line is a comment of the bulk data, and its mark.
   bool bulk_comment() const { return bulk_comment_; }
+  // After the last card: BEGIN BULK was read but no ENDDATA, as in a deck
+  // cut short. Bulk data alone (an included file's) needs neither.
+  bool bulk_unended() const { return began_bulk_ && part_ != Part::After; }
   std::uint32_t text_mark() const { return text_mark_; }
 
   // "file:line" of a mark, and InputError there.
@@ -67,6 +70,7 @@ class BulkCards {
 
   IncludedLines lines_;
   Part part_ = Part::Undecided;
+  bool began_bulk_ = false;
   std::deque<Line> ahead_;  // lines read but not yet taken
   // Lines before BEGIN BULK or the first mesh entry, whichever comes first.
   std::deque<Line> undecided_;

@@ -1085,6 +1085,75 @@ TEST(GmshIo, OutputLossesCountNodesThatGmshEntitiesPin) {
   }
 }
 
+// cube_grid(4) of one volume, its nodes classified as Gmsh classifies those
+// of a surface inside it with a curve and a point on that surface, and of
+// the boundary surface, with no element on any of these (meshio's VTU or
+// VTK of a Gmsh mesh whose physical group is the volume names them in
+// gmsh:dim_tags alone): MSH 4.1 output declares them, so the nodes come
+// back on them and stay in place. Two classifications fall back to the
+// volume of the node's tets: a volume no tet is on, which pins nothing, and
+// a surface of tag 0, which no Gmsh entity has; only the latter's node is a
+// loss.
+TEST(GmshIo, Msh41OutputDeclaresTheEntitiesThatOnlyTheNodesNameFromOtherFormats) {
+  TetMesh mesh = testing::cube_grid(4);
+  mesh.extras.tet_entity_tags.assign(mesh.num_tets(), 1);
+  std::vector<int> dims, tags, want_dims, want_tags;
+  for (std::size_t i = 0; i < mesh.num_nodes(); ++i) {
+    const double* p = &mesh.xyz[3 * i];
+    const bool boundary = std::any_of(p, p + 3, [](double c) { return c == 0 || c == 4; });
+    std::pair<int, int> entity{3, 1};
+    if (boundary)
+      entity = {2, 20};
+    else if (p[2] == 2)
+      entity = p[0] == 2 && p[1] == 2 ? std::pair{0, 4} : (p[1] == 2 ? std::pair{1, 3} : std::pair{2, 5});
+    else if (p[0] == 1 && p[1] == 1 && p[2] == 1)
+      entity = {3, 9};
+    else if (p[0] == 3 && p[1] == 3 && p[2] == 3)
+      entity = {2, 0};
+    dims.push_back(entity.first);
+    tags.push_back(entity.second);
+    const bool kept = entity != std::pair{3, 9} && entity != std::pair{2, 0};
+    want_dims.push_back(kept ? entity.first : 3);
+    want_tags.push_back(kept ? entity.second : 1);
+  }
+  mesh.extras.node_entity_dims = dims;
+  mesh.extras.node_entity_tags = tags;
+  for (MshFlavour flavour : {MshFlavour::V41Ascii, MshFlavour::V41Binary}) {
+    const TetMesh back = read_text(write_text(mesh, flavour));
+    EXPECT_EQ(back.extras.node_entity_dims, want_dims);
+    EXPECT_EQ(back.extras.node_entity_tags, want_tags);
+    EXPECT_EQ(back.extras.tet_entity_tags, mesh.extras.tet_entity_tags);
+    // The 9 nodes of the inner surface stay in place, as they do in the
+    // mesh, less the one of surface 0.
+    const std::vector<std::uint8_t> pinned = region_interface_nodes(mesh);
+    const std::vector<std::uint8_t> back_pinned = region_interface_nodes(back);
+    EXPECT_EQ(std::count(pinned.begin(), pinned.end(), kOnGmshFeature), 10);
+    EXPECT_EQ(std::count(back_pinned.begin(), back_pinned.end(), kOnGmshFeature), 9);
+  }
+  // The entities made for them have no physical group and no boundary; a
+  // point is where its node is, the others span their nodes.
+  const std::string text = write_text(mesh, MshFlavour::V41Ascii);
+  const std::string entities =
+      text.substr(text.find("$Entities\n") + 10, text.find("$EndEntities") - text.find("$Entities\n") - 10);
+  EXPECT_EQ(entities.substr(0, entities.find('\n')), "1 1 2 1");
+  EXPECT_NE(entities.find("\n4 2 2 2 0\n"), std::string::npos) << entities;
+  EXPECT_NE(entities.find("\n3 1 2 2 3 2 2 0 0\n"), std::string::npos) << entities;
+  EXPECT_NE(entities.find("\n5 1 1 2 3 3 2 0 0\n"), std::string::npos) << entities;
+  EXPECT_NE(entities.find("\n20 0 0 0 4 4 4 0 0\n"), std::string::npos) << entities;
+  const std::string feature =
+      " that Gmsh's entities keep in place (between volumes of one physical group, or on points, curves or surfaces "
+      "inside the mesh) will not be pinned in the ";
+  std::vector<std::string> losses;
+  for (const std::string& loss : output_losses(mesh, "out.msh"))
+    if (loss.find(feature) != std::string::npos) losses.push_back(loss);
+  EXPECT_EQ(losses, (std::vector<std::string>{"1 node" + feature +
+                                              "msh41 output, which does not keep the nodes' entities, so a later "
+                                              "run may move it"}));
+  mesh.extras.node_entity_tags[static_cast<std::size_t>(std::find(tags.begin(), tags.end(), 0) - tags.begin())] = 5;
+  for (const std::string& loss : output_losses(mesh, "out.msh"))
+    EXPECT_EQ(loss.find(feature), std::string::npos) << loss;
+}
+
 // Entity tags from another program need not nest in the physical groups
 // (meshio's gmsh:geometrical of a file whose writer gave every element
 // entity 1, say). An MSH 4.1 entity puts all its elements in the same

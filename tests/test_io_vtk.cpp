@@ -29,6 +29,7 @@
 #include "mesh/io/vtk_cells.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
+#include "mesh/io/writable_check.hpp"
 #include "mesh/io/xml_scan.hpp"
 #include "mesh/region_interfaces.hpp"
 #include "support/scratch_dir.hpp"
@@ -858,6 +859,30 @@ TEST(VtkTagArrays, MeshioCopiesOfAGmshMeshKeepItsVolumesAndEmbeddedPoint) {
     EXPECT_EQ(m.extras.node_entity_dims, msh.extras.node_entity_dims);
     EXPECT_EQ(m.extras.node_entity_tags, msh.extras.node_entity_tags);
     EXPECT_EQ(region_interface_nodes(m), pinned);
+  }
+}
+
+// The meshio copies name the points, curves and surfaces of the Gmsh mesh
+// in gmsh:dim_tags alone (they hold tets only): MSH 4.1 written from them
+// declares those entities, so the nodes come back classified as in the MSH
+// file and the same nodes stay in place, with no warning of a loss.
+TEST(VtkTagArrays, MeshioCopiesOfAGmshMeshGiveItsClassificationToMsh41) {
+  const TetMesh msh = read_mesh(testing::data_path("gmsh_layers41.msh"));
+  const testing::ScratchDir dir("vtk_to_msh41");
+  for (const char* copy : {"vtu_meshio_gmsh.vtu", "vtk_meshio_gmsh.vtk"}) {
+    SCOPED_TRACE(copy);
+    const TetMesh m = read_mesh(testing::data_path(copy));
+    ASSERT_TRUE(m.extras.blocks.empty());
+    for (const std::string& loss : output_losses(m, "out.msh"))
+      EXPECT_EQ(loss.find("Gmsh's entities keep in place"), std::string::npos) << loss;
+    for (MeshFormat format : {MeshFormat::Msh41, MeshFormat::Msh41Binary}) {
+      const std::string file = (dir.path() / "out.msh").string();
+      write_mesh(m, file, format);
+      const TetMesh back = read_mesh(file);
+      EXPECT_EQ(back.extras.node_entity_dims, msh.extras.node_entity_dims);
+      EXPECT_EQ(back.extras.node_entity_tags, msh.extras.node_entity_tags);
+      EXPECT_EQ(region_interface_nodes(back), region_interface_nodes(msh));
+    }
   }
 }
 

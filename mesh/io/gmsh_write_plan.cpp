@@ -130,6 +130,33 @@ class EntityTags {
   }
 };
 
+// The points, curves and surfaces that the nodes' classification names
+// (meshio's gmsh:dim_tags in VTU and VTK) and no element is on: Gmsh writes
+// those too where only the volumes are in a physical group (an embedded
+// fault surface whose triangles are not saved), with the nodes classified
+// on them, and that is what pins the nodes in a later run. Each is declared
+// without physical groups and, as the mesh does not tell them, without
+// bounding entities (a discrete entity to Gmsh), its box that of its nodes.
+// Left undeclared, so that their nodes go where classify_nodes puts nodes
+// without a classification: a volume no tet is on (Gmsh's volume holds the nodes inside
+// its tets, and a volume of stray nodes beside the tets' own is no model a
+// Gmsh user has; nothing pins a volume's nodes, so nothing is lost), and an
+// entity of a tag below 1 (Gmsh's model entities have positive tags).
+void add_classification_entities(const TetMesh& mesh, Entities& entities) {
+  const FileExtras& extras = mesh.extras;
+  const std::size_t n = mesh.num_nodes();
+  if (extras.node_entity_dims.size() != n || extras.node_entity_tags.size() != n) return;
+  EntityBuilder builder;
+  for (std::size_t i = 0; i < n; ++i) {
+    const int dim = extras.node_entity_dims[i], tag = extras.node_entity_tags[i];
+    if (dim >= 3 || tag < 1 || entities.find(dim, tag) != nullptr) continue;
+    const auto node = static_cast<std::int32_t>(i);
+    builder.add(dim, tag, mesh.xyz.data(), &node, 1);
+  }
+  const Entities made = builder.take();
+  for (const Entity& x : made.list()) entities.add(x);
+}
+
 void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, WritePlan& plan) {
   EntityBuilder builder;
   EntityTags entity_tag(groups);
@@ -150,22 +177,16 @@ void make_entities(const TetMesh& mesh, std::vector<ElementGroup>& groups, Write
     g.physical = std::move(physical);
   }
   plan.entities = builder.take();
+  add_classification_entities(mesh, plan.entities);
   plan.entities_text = format_entities_text(plan.entities);
 }
 
+// The nodes' own classification where the entity it names is declared,
+// else (and for a mesh without one) the lowest-dimensional entity of an
+// element that uses the node, as Gmsh classifies them.
 void classify_nodes(const TetMesh& mesh, const std::vector<ElementGroup>& groups, WritePlan& plan) {
   const FileExtras& extras = mesh.extras;
   const std::size_t n = mesh.num_nodes();
-  if (extras.node_entity_dims.size() == n && extras.node_entity_tags.size() == n) {
-    bool known = true;
-    for (std::size_t i = 0; i < n && known; ++i)
-      known = plan.entities.find(extras.node_entity_dims[i], extras.node_entity_tags[i]) != nullptr;
-    if (known) {
-      plan.node_dims = extras.node_entity_dims;
-      plan.node_entities = extras.node_entity_tags;
-      return;
-    }
-  }
   // Nodes in no element go with the first tet's volume.
   plan.node_dims.assign(n, 3);
   plan.node_entities.assign(n, groups.front().entity.front());
@@ -181,6 +202,12 @@ void classify_nodes(const TetMesh& mesh, const std::vector<ElementGroup>& groups
       }
     }
   }
+  if (extras.node_entity_dims.size() != n || extras.node_entity_tags.size() != n) return;
+  for (std::size_t i = 0; i < n; ++i)
+    if (plan.entities.find(extras.node_entity_dims[i], extras.node_entity_tags[i]) != nullptr) {
+      plan.node_dims[i] = extras.node_entity_dims[i];
+      plan.node_entities[i] = extras.node_entity_tags[i];
+    }
 }
 
 void check_indices(const TetMesh& mesh, const std::vector<ElementGroup>& groups) {
@@ -238,15 +265,17 @@ WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour) {
   return plan;
 }
 
-bool keeps_node_entities(const TetMesh& mesh) {
+std::vector<std::uint8_t> msh41_feature_nodes(const TetMesh& mesh) {
   const FileExtras& extras = mesh.extras;
   if (extras.node_entity_dims.size() != mesh.num_nodes() || extras.node_entity_tags.size() != mesh.num_nodes())
-    return false;
+    return {};
   try {
     const WritePlan plan = plan_gmsh_output(mesh, MshFlavour::V41Ascii);
-    return plan.node_dims == extras.node_entity_dims && plan.node_entities == extras.node_entity_tags;
+    std::vector<std::uint8_t> features(mesh.num_nodes());
+    for (std::size_t i = 0; i < features.size(); ++i) features[i] = plan.node_dims[i] < 3;
+    return features;
   } catch (const OutputError&) {
-    return false;  // nothing is written at all
+    return {};  // nothing is written at all
   }
 }
 

@@ -3,15 +3,20 @@
 // the model entities and each element's entity and physical tag. Internal
 // to the Gmsh writer.
 //
-// A mesh read from MSH 4.1 keeps its $Entities (verbatim) and its node and
-// element classification, as long as every entity an element or node refers
-// to is still declared. (A partitioned file qualifies: the reader moves its
-// elements and nodes to the model entities of $Entities, so what is written
-// is not partitioned.) Any other mesh gets entities made up from what it
-// carries: each element's entity tag, else its physical tag (region
-// attribute, Medit reference), else 1; each entity lists the positive
-// physical tags of its elements. Nodes are then classified on the
-// lowest-dimensional entity of an element that uses them, as Gmsh does.
+// A mesh read from MSH 4.1 keeps its $Entities (verbatim) and its element
+// classification, as long as every entity an element refers to is still
+// declared. (A partitioned file qualifies: the reader moves its elements and
+// nodes to the model entities of $Entities, so what is written is not
+// partitioned.) Any other mesh gets entities made up from what it carries:
+// each element's entity tag, else its physical tag (region attribute, Medit
+// reference), else 1; each entity lists the positive physical tags of its
+// elements. To those come the points, curves and surfaces that the nodes'
+// classification (meshio's gmsh:dim_tags in VTU and VTK) names and no
+// element is on, an embedded surface say (add_classification_entities in
+// the .cpp tells which are left out and why). A node keeps its
+// classification where the entity is declared; the others are classified
+// on the lowest-dimensional entity of an element that uses them, as Gmsh
+// does.
 // Node and element tags are the file's where it gave usable ones (see
 // WritePlan), so ids that a simulation deck refers to survive.
 #include <cstddef>
@@ -68,10 +73,11 @@ struct WritePlan {
 // Throws OutputError for pass-through blocks that MSH cannot hold.
 WritePlan plan_gmsh_output(const TetMesh& mesh, MshFlavour flavour);
 
-// Whether MSH 4.1 output classifies the nodes as the mesh's
-// node_entity_dims and node_entity_tags do: it has them, and the plan keeps
-// them (every node's entity is declared in the entities written).
-bool keeps_node_entities(const TetMesh& mesh);
+// Per node, 1 where MSH 4.1 output classifies it on a point, curve or
+// surface, which is what pins it in a run on the output (as the mesh's own
+// node_entity_dims pin it); empty where the mesh has no classification or
+// cannot be written at all.
+std::vector<std::uint8_t> msh41_feature_nodes(const TetMesh& mesh);
 
 // The physical tags element e of `g` is written with in MSH 2.2, which gives
 // an element one physical tag a line: as Gmsh does, an element of several

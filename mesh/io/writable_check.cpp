@@ -106,12 +106,19 @@ bool keeps_entity_tags(MeshFormat format) {
   return is_msh(format) || format == MeshFormat::Vtu || format == MeshFormat::Vtk;
 }
 
+bool is_msh41(MeshFormat format) { return format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary; }
+
 // Whether `format` keeps the entity each node of `mesh` is classified on:
-// MSH 4.1 where the writer can declare every node's entity, VTU and VTK (as
-// meshio's gmsh:dim_tags point data).
+// MSH 4.1 where the writer keeps every node of a point, curve or surface on
+// one (msh41_feature_nodes), VTU and VTK (as meshio's gmsh:dim_tags point
+// data).
 bool keeps_node_classification(const TetMesh& mesh, MeshFormat format) {
-  const bool msh41 = format == MeshFormat::Msh41 || format == MeshFormat::Msh41Binary;
-  return msh41 ? gmsh::keeps_node_entities(mesh) : format == MeshFormat::Vtu || format == MeshFormat::Vtk;
+  if (!is_msh41(format)) return format == MeshFormat::Vtu || format == MeshFormat::Vtk;
+  const std::vector<std::uint8_t> features = gmsh::msh41_feature_nodes(mesh);
+  if (features.empty()) return false;
+  for (std::size_t i = 0; i < features.size(); ++i)
+    if (mesh.extras.node_entity_dims[i] < 3 && !features[i]) return false;
+  return true;
 }
 
 // What `format` keeps of the data that region_interface_nodes reads besides
@@ -182,9 +189,15 @@ std::size_t entity_pins_lost(const TetMesh& mesh, MeshFormat format) {
   // Neither marks a boundary node: those stay fixed anyway.
   const std::vector<std::uint8_t> all = region_interface_nodes(mesh);
   const std::vector<std::uint8_t> kept = region_interface_nodes(mesh, kept_sources);
+  // MSH 4.1 loses only the classification of the nodes whose entity it
+  // cannot declare (gmsh_write_plan.hpp): the others stay on their feature.
+  // (It keeps the entity tags, so no interface is lost with them.)
+  std::vector<std::uint8_t> features;
+  if (is_msh41(format) && !kept_sources.node_entities) features = gmsh::msh41_feature_nodes(mesh);
+  const auto feature_kept = [&](std::size_t i) { return !features.empty() && features[i]; };
   std::size_t lost = 0;
   for (std::size_t i = 0; i < nodes; ++i)
-    lost += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i);
+    lost += all[i] != kNotPinned && kept[i] == kNotPinned && !pinned_by_file(i) && !feature_kept(i);
   return lost;
 }
 

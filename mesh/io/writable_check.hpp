@@ -26,8 +26,9 @@ void check_writable(const TetMesh& mesh, const std::string& path, MeshFormat for
 //  * nodes that stay fixed only through Gmsh's entities (an interface
 //    between volumes of one physical group, a point, curve or surface
 //    inside the mesh: region_interface_nodes) where the format drops the
-//    entity tags (all but MSH) or the nodes' classification (all but MSH
-//    4.1) and pins none of them itself;
+//    entity tags (all but MSH, VTU and VTK) or the nodes' classification
+//    (all but MSH 4.1, VTU and VTK; MSH 4.1 keeps a node's where it can
+//    declare the entity) and pins none of them itself;
 //  * TetGen node markers (non-zero ones), node attributes and tet
 //    attributes (what tet_tags cannot give back);
 //  * Medit-only sections (Ridges, Normals, Identifier, ...);

@@ -11,7 +11,7 @@ stacked and fragmented, both volumes in one group (3,7)=[1,2], keep the
 surface between them, from MSH 4.1, MSH 2.2 and MSH 2.2 with
 Mesh.SaveParametric (nodes in $ParametricNodes, ASCII and binary); a box
 keeps a surface and a point embedded in it (MSH 4.1, nodes classified on
-them).
+them), also through meshio's VTU of it and MSH 4.1 written from that.
 
 Runs the binary at $TETSMOOTH_BIN_DIR/tetsmooth (CTest sets it)."""
 import json
@@ -131,6 +131,19 @@ def entity_nodes(gmsh, entities):
     return closed, open_
 
 
+def classified_nodes(gmsh, path):
+    """{(dim, tag): sorted tags of the nodes classified on it} of every entity
+    Gmsh reads in `path`, which must open without a warning or an error."""
+    with gmsh_session(gmsh):
+        gmsh.logger.start()
+        gmsh.open(path)
+        complaints = [m for m in gmsh.logger.get() if m.startswith(("Warning", "Error"))]
+        gmsh.logger.stop()
+        assert not complaints, complaints
+        return {(dim, tag): sorted(int(t) for t in gmsh.model.mesh.getNodes(dim, tag, includeBoundary=False)[0])
+                for dim, tag in gmsh.model.getEntities()}
+
+
 class GeometryWithinOnePhysicalGroup(GmshScratchCase):
     """Interfaces and embedded entities that only Gmsh's entities tell of."""
 
@@ -226,6 +239,14 @@ class GeometryWithinOnePhysicalGroup(GmshScratchCase):
         for vtu in (ours, theirs):
             with self.subTest(vtu=os.path.basename(vtu)):
                 self.assertIn(feature_note, run("smooth", vtu, "-o", vtu + ".out.vtu").stderr)
+        # MSH 4.1 from meshio's VTU, where only gmsh:dim_tags names the
+        # points, curves and surfaces (no element is on them), declares them
+        # with their nodes as Gmsh wrote them, so a later run keeps the
+        # embedded nodes in place too.
+        again = os.path.join(self.tmp, "embedded_from_vtu.msh")
+        self.assertNotIn("Gmsh's entities keep in place", run("convert", theirs, again).stderr)
+        self.assertEqual(classified_nodes(self.gmsh, again), classified_nodes(self.gmsh, self.with_embedded))
+        self.assertIn(feature_note, self.smooth_keeps(again, self.embedded).stderr)
         # A format without Gmsh's entities says what a later run may move.
         medit = run("convert", self.with_embedded, os.path.join(self.tmp, "embedded.mesh"))
         self.assertIn(f"{len(self.embedded)} nodes that Gmsh's entities keep in place", medit.stderr)

@@ -368,6 +368,33 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneWhereTheDeckHasNothingElse) {
   EXPECT_EQ(mesh.extras.blocks[0].kind, "wedge");
 }
 
+TEST(AbaqusIo, RegionsFromElementSetsAloneTakeTheNamesOfTheSetsThatHoldThem) {
+  // A region is named after the first set that holds its tets and no others
+  // (as written, quotes removed); one that only several sets describe, or
+  // none, stays unnamed. All holds both regions and names neither.
+  const std::string nodes = "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,-1,-1,-1\n";
+  const std::string tets = "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n3, 6, 1, 3, 2\n";
+  const TetMesh named = read_text(nodes + tets +
+                                  "*ELSET, ELSET=All\n1, 2, 3\n*ELSET, ELSET=\"Hard rock\"\n2\n"
+                                  "*ELSET, ELSET=granite, GENERATE\n1, 3, 2\n*ELSET, ELSET=AlsoGranite\n3, 1, 1\n");
+  EXPECT_EQ(named.extras.tet_tags, (std::vector<int>{1, 2, 1}));
+  ASSERT_NE(raw_section(named.extras, "$PhysicalNames"), nullptr);
+  EXPECT_EQ(*raw_section(named.extras, "$PhysicalNames"), "2\n3 2 \"Hard rock\"\n3 1 \"granite\"\n");
+  // Tet 1 in A and B, tet 2 in B, tet 3 in none: no set holds tet 1 alone.
+  const TetMesh unnamed =
+      read_text(nodes + tets + "*ELSET, ELSET=A\n1\n*ELSET, ELSET=B\n1, 2\n*ELSET, ELSET=C\n2, 3\n");
+  EXPECT_EQ(unnamed.extras.tet_tags, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(*raw_section(unnamed.extras, "$PhysicalNames"), "1\n3 1 \"A\"\n");
+  const TetMesh none = read_text(nodes + tets + "*ELSET, ELSET=A\n1, 2\n*ELSET, ELSET=B\n2, 3\n");
+  EXPECT_EQ(none.extras.tet_tags, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(raw_section(none.extras, "$PhysicalNames"), nullptr);
+  // The engineer's deck, in meshio's layout: the names reach MSH.
+  const TetMesh meshio_layout = read_text(nodes +
+                                          "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=C3D4\n2, 2, 3, 4, 5\n"
+                                          "*ELSET, ELSET=granite\n1\n*ELSET, ELSET=clay\n2\n");
+  EXPECT_EQ(*raw_section(meshio_layout.extras, "$PhysicalNames"), "2\n3 1 \"granite\"\n3 2 \"clay\"\n");
+}
+
 TEST(AbaqusIo, SetsByStepsByElementSetsAndSectionsThatOverlap) {
   const std::string base =
       "*NODE, SYSTEM=R\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,0.4,0.4,0.4\n7,0.3,0.3,0.3\n8,0.2,0.2,0.2\n"

@@ -18,7 +18,8 @@
 //    -2), else the names numbered 1, 2, ... in the order met. Other
 //    elements get their tags from their ELSET= names the same way.
 //    A deck with neither: the tets that the same *ELSET sets hold form a
-//    region (meshio writes Gmsh's physical groups so).
+//    region (meshio writes Gmsh's physical groups so), named after the first
+//    set that holds its tets and no others.
 //  * Pinned nodes, besides those of non-tet elements: nodes that loads and
 //    constraints name (by number or node set): *BOUNDARY, *CLOAD, *CFLUX,
 //    *CFLOW, *EQUATION and *MPC; and the node set TETSMOOTH_PINNED that the
@@ -36,7 +37,8 @@
 //    *ELEMENT, as written, for a note when another format drops them) and
 //    "abaqus:includes" (the files *INCLUDE read); and "$PhysicalNames",
 //    Gmsh's names for the region tags (the sections' and *ELEMENT lines'
-//    element set names, as written), which MSH output keeps.
+//    element set names, or those of the *ELSET lists that name regions, as
+//    written), which MSH output keeps.
 //
 // Writing: a mesh read from a deck is written as that deck, each *NODE line
 // "id, x, y, z" with the new coordinates in shortest round-trip form and

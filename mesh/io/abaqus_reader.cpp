@@ -92,14 +92,16 @@ std::string DeckReader::element_text() const {
   return "element " + std::to_string(pending_.front()) + " of type " + type_name_;
 }
 
-void DeckReader::note_elset(const std::string& name) {
-  if (elsets_met_.insert(name).second) elset_order_.push_back(name);
+void DeckReader::note_elset(const std::string& name, const std::string& written) {
+  if (!elsets_met_.insert(name).second) return;
+  elset_order_.push_back(name);
+  elset_order_written_.push_back(unquoted(written));
 }
 
 std::uint32_t DeckReader::elset_index(const std::string* name) {
   if (name == nullptr) return 0;
   elset_name_ = set_name(*name);
-  note_elset(elset_name_);
+  note_elset(elset_name_, *name);
   const auto [it, added] = elset_numbers_.try_emplace(elset_name_, static_cast<std::uint32_t>(elset_names_.size()) + 1);
   if (added) {
     elset_names_.push_back(elset_name_);
@@ -151,7 +153,7 @@ void DeckReader::start_set(const Keyword& kw) {
   const std::string* name = kw.param(key);
   if (name == nullptr || name->empty()) lines_.fail("*" + std::string(key) + " without " + key + "=");
   set_name_ = set_name(*name);
-  if (!set_of_nodes_) note_elset(set_name_);
+  if (!set_of_nodes_) note_elset(set_name_, *name);
   generate_ = kw.param("GENERATE") != nullptr;
   part_.where = lines_.where();
   // *NSET, ELSET: the data lines name element sets, whose nodes the set

@@ -57,7 +57,7 @@ class DeckReader {
   void set_line();
   void pin_line();
   std::uint32_t elset_index(const std::string* name);
-  void note_elset(const std::string& name);
+  void note_elset(const std::string& name, const std::string& written);
   std::string element_text() const;
 
   // abaqus_resolve.cpp: numbers and names.
@@ -65,6 +65,7 @@ class DeckReader {
   void resolve_regions(const IdIndex& element_ids, RegionNames& names);
   void resolve_pins(const IdIndex& node_ids, const IdIndex& element_ids);
   std::vector<std::size_t> tets_of(const std::vector<std::size_t>& elements) const;
+  void name_regions_by_lists(const std::vector<std::vector<std::size_t>>& tets_of_sets, RegionNames& names) const;
   void keep_deck_notes();
 
   DeckLines& lines_;
@@ -98,8 +99,8 @@ class DeckReader {
   // indices + 1.
   std::vector<std::string> elset_names_, elset_written_;
   std::unordered_map<std::string, std::uint32_t> elset_numbers_;
-  // Every element set, in the order defined.
-  std::vector<std::string> elset_order_;
+  // Every element set, in the order defined (set_name; as first written).
+  std::vector<std::string> elset_order_, elset_order_written_;
   std::unordered_set<std::string> elsets_met_;
 
   SetPart part_;

@@ -49,8 +49,37 @@ void DeckReader::resolve_regions(const IdIndex& element_ids, RegionNames& names)
   // Regions are the tets that the same element sets hold (meshio writes
   // Gmsh's physical groups so).
   RegionSplitter regions(tet_ids_.size());
-  for (const std::string& name : elset_order_) regions.split(tets_of(sets_.elements(name, "", element_ids)));
+  std::vector<std::vector<std::size_t>> tets_of_sets;
+  for (const std::string& name : elset_order_) {
+    tets_of_sets.push_back(tets_of(sets_.elements(name, "", element_ids)));
+    regions.split(tets_of_sets.back());
+  }
   e.tet_tags = regions.tags();
+  name_regions_by_lists(tets_of_sets, names);
+}
+
+void DeckReader::name_regions_by_lists(const std::vector<std::vector<std::size_t>>& tets_of_sets,
+                                       RegionNames& names) const {
+  // A region takes the name of the first set that holds its tets and no
+  // others, as a region named by ELSET= on *ELEMENT would; a region that
+  // only several sets together describe (or none) stays unnamed.
+  const std::vector<int>& tags = mesh_.extras.tet_tags;
+  std::vector<std::size_t> tets_in(tags.size() + 1, 0);  // by tag: 1, 2, ... up to one per tet
+  for (int t : tags) ++tets_in[static_cast<std::size_t>(t)];
+  std::vector<std::size_t> seen_in(tags.size(), 0);  // the last set (+ 1) that met each tet
+  for (std::size_t s = 0; s < tets_of_sets.size(); ++s) {
+    const std::vector<std::size_t>& tets = tets_of_sets[s];
+    if (tets.empty()) continue;
+    const int tag = tags[tets.front()];
+    std::size_t distinct = 0;
+    bool one_region = true;
+    for (std::size_t t : tets) {
+      one_region = one_region && tags[t] == tag;
+      if (seen_in[t] != s + 1) ++distinct;
+      seen_in[t] = s + 1;
+    }
+    if (one_region && distinct == tets_in[static_cast<std::size_t>(tag)]) names.add(3, tag, elset_order_written_[s]);
+  }
 }
 
 void DeckReader::resolve_pins(const IdIndex& node_ids, const IdIndex& element_ids) {

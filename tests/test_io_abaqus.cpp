@@ -6,17 +6,19 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
+#include "input_error.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
 #include "mesh/io/mesh_io.hpp"
+#include "mesh/io/region_sets.hpp"
 #include "mesh/io/writable_check.hpp"
 #include "support/scratch_dir.hpp"
 #include "support/test_meshes.hpp"
-#include "input_error.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -222,6 +224,53 @@ TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
   EXPECT_EQ(back.extras.blocks[0].connectivity, lines.connectivity);
   EXPECT_EQ(back.extras.blocks[0].tags, lines.tags);
   EXPECT_EQ(back.fixed, mesh.fixed);
+}
+
+TEST(AbaqusIo, ANewDeckNamesTheElementSetsAfterTheRegionsWhereAbaqusTakesTheNames) {
+  TetMesh mesh = testing::cube_grid(2);
+  const std::size_t tets = mesh.num_tets();
+  // Tags 1..7, a run of tets each; 8 (unnamed) for the rest.
+  mesh.extras.tet_tags.assign(tets, 8);
+  for (std::size_t t = 0; t < 7; ++t) mesh.extras.tet_tags[t] = static_cast<int>(t) + 1;
+  mesh.extras.blocks.push_back(PassThroughBlock{"triangle", 3, {0, 1, 2, 3, 4, 5}, {5, 6}, {}, {}});
+  const std::string long_name(81, 'L');
+  mesh.extras.raw_sections.emplace_back("$PhysicalNames",
+                                        "9\n3 1 \"granite\"\n3 2 \"soft clay\"\n3 3 \"Rock\"\n3 4 \"ROCK\"\n3 5 \"\"\n"
+                                        "3 6 \"" +
+                                            long_name + "\"\n3 7 \"region_8\"\n2 5 \"Top_2\"\n2 6 \"rock\"\n");
+  const std::string text = write_text(mesh);
+  EXPECT_NE(text.find("*ELEMENT, TYPE=C3D4, ELSET=granite\n1, "), std::string::npos) << text;
+  // Quotes would be needed, the same in another case, no name, over 80
+  // characters, another region's set (tag 8's REGION_8): named by tag.
+  for (const char* by_tag : {"REGION_2", "REGION_3", "REGION_4", "REGION_5", "REGION_6", "REGION_7", "REGION_8"})
+    EXPECT_NE(text.find(std::string("*ELEMENT, TYPE=C3D4, ELSET=") + by_tag + "\n"), std::string::npos) << by_tag;
+  // Names are per dimension: tag 5 of triangles is Top_2; rock is that of
+  // volumes too.
+  EXPECT_NE(text.find("*ELEMENT, TYPE=SFM3D3, ELSET=Top_2\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("*ELEMENT, TYPE=SFM3D3, ELSET=TRIANGLE_6\n"), std::string::npos) << text;
+  EXPECT_EQ(abaqus_names_lost(mesh),
+            (std::vector<std::string>{"rock", "soft clay", "Rock", "ROCK", long_name, "region_8"}));
+  // Read back, the sets name the regions (tags by order, as the names have
+  // no numbers of their own to give).
+  const TetMesh back = read_text(text);
+  const std::map<int, std::string> names = physical_names_of(*raw_section(back.extras, "$PhysicalNames"), 3);
+  ASSERT_EQ(back.extras.tet_tags.size(), tets);
+  EXPECT_EQ(names.at(back.extras.tet_tags[0]), "granite");
+  EXPECT_EQ(names.at(back.extras.tet_tags[1]), "REGION_2");
+  EXPECT_EQ(physical_names_of(*raw_section(back.extras, "$PhysicalNames"), 2).at(back.extras.blocks[0].tags[0]),
+            "Top_2");
+  // The warning names only the names not written, and no longer says that
+  // Abaqus has no place for them.
+  const std::vector<std::string> notes = output_losses(mesh, "out.inp");
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_EQ(notes[0],
+            "the names of 6 regions (Gmsh physical names: \"rock\", \"soft clay\", \"Rock\", \"ROCK\", \"" + long_name +
+                "\" and 1 more) will not be written: a new abaqus deck names a region's element set by its tag where "
+                "the name is no plain set name (1 to 80 letters, digits and underscores, the first a letter) or is "
+                "another's in any case");
+  mesh.extras.raw_sections.back().second = "2\n3 1 \"granite\"\n3 8 \"Rest_of_it\"\n";
+  EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
+  EXPECT_NE(write_text(mesh).find("*ELEMENT, TYPE=C3D4, ELSET=Rest_of_it\n"), std::string::npos);
 }
 
 TEST(AbaqusIo, ANewDeckListsManyPinsSixteenALineAndRenumbersWhatItCannotKeep) {

@@ -507,11 +507,14 @@ TEST(Flac3dIo, FormatByNameAndWhatOtherFormatsLose) {
             "instead");
   EXPECT_EQ(to_msh[2], "1 B7 zone will not be written: msh41 has no place for it (its nodes were pinned)");
 
-  // A new Abaqus deck names its element sets by tag.
+  // A new Abaqus deck names its element sets after the groups, but for
+  // names that would need quotes: those sets are named by tag.
   const std::vector<std::string> to_inp = output_losses(mesh, "out.inp");
   EXPECT_NE(std::find(to_inp.begin(), to_inp.end(),
-                      "the names of the regions (the grid's zone and face groups) will not be written: abaqus names "
-                      "the element sets of a new deck by region tag"),
+                      "the names of 2 regions (the grid's zone and face groups: \"Soil layer + stage 1=excavated\", "
+                      "\"Soil layer\") will not be written: a new abaqus deck names a region's element set by its tag "
+                      "where the name is no plain set name (1 to 80 letters, digits and underscores, the first a "
+                      "letter) or is another's in any case"),
             to_inp.end());
 
   // Lines, and shapes of other sizes than FLAC3D's (a 20-node brick), are

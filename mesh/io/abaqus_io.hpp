@@ -48,12 +48,16 @@
 // have the deck's node and tet counts. Any other mesh is written as a new deck: *HEADING, *NODE, then
 // *ELEMENT blocks in file order (C3D4 or C3D10; other elements under the
 // type_name_of() types), one block per run of one region tag, with
+// ELSET= the region's name (Gmsh's physical name, for its dimension) where
+// it is a plain Abaqus set name (1 to 80 letters, digits and '_', the first
+// a letter) that no other region's set has in any case, else
 // ELSET=REGION_<tag> (negative tags as REGION_M<|tag|>) and, for other
-// elements, ELSET=<KIND>_<tag>; then *NSET, NSET=TETSMOOTH_PINNED for pinned
-// nodes that no element pins. Node and element ids are the file's where
+// elements, ELSET=<KIND>_<tag> (abaqus_set_names.hpp); then *NSET,
+// NSET=TETSMOOTH_PINNED for pinned nodes that no element pins. Node and element ids are the file's where
 // they are positive and distinct, else 1, 2, ... in order.
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "mesh/tet_mesh.hpp"
 
@@ -70,6 +74,10 @@ void write_abaqus(const TetMesh& mesh, std::ostream& out);
 // numbers 1, 2, ... instead (some missing, not positive or not distinct):
 // "node", "element", "node and element", or "" when it keeps them all.
 std::string abaqus_numbers_lost(const TetMesh& mesh);
+// The names of regions that a new deck for `mesh` names by tag instead
+// (REGION_<tag>: the name is no plain Abaqus set name, or is another's);
+// empty where the mesh's own deck is written back.
+std::vector<std::string> abaqus_names_lost(const TetMesh& mesh);
 void write_abaqus_file(const TetMesh& mesh, const std::string& path);
 
 }  // namespace tetsmooth

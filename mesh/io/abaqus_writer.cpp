@@ -6,14 +6,15 @@
 #include <ostream>
 
 #include "mesh/errors.hpp"
-#include "mesh/second_order.hpp"
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/abaqus_set_names.hpp"
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/number_text.hpp"
 #include "mesh/io/text_lines.hpp"
+#include "mesh/second_order.hpp"
 
 namespace tetsmooth {
 namespace {
@@ -47,13 +48,6 @@ void write_deck(const TetMesh& mesh, std::ostream& out) {
 // The reader takes any positive number, so a new deck keeps any.
 constexpr long long kLargestNumber = std::numeric_limits<long long>::max();
 
-// The ELSET= name of elements of one tag: REGION_4, TRIANGLE_5, REGION_M2
-// for -2 (abaqus_regions reads the number back).
-std::string element_set_name(const std::string& prefix, int tag) {
-  return upper_case(prefix) +
-         (tag < 0 ? "_M" + std::to_string(-static_cast<long long>(tag)) : "_" + std::to_string(tag));
-}
-
 void check_new_deck(const TetMesh& mesh) {
   if (mesh.num_tets() == 0) throw OutputError("the mesh has no tetrahedra to write");
   for (const PassThroughBlock& b : mesh.extras.blocks)
@@ -63,17 +57,18 @@ void check_new_deck(const TetMesh& mesh) {
 }
 
 // Writes `count` elements of `type` whose nodes `nodes(e, out)` gives, one
-// *ELEMENT block per run of one tag (tags: one per element, or empty).
+// *ELEMENT block per run of one tag (tags: one per element, or empty), its
+// set named by `set_names` for `prefix` and `dimension`.
 template <typename Nodes>
-void write_elements(std::ostream& out, const char* type, int nodes_each, std::size_t count, const std::vector<int>& tags,
-                    const std::string& prefix, const long long* ids, const std::vector<long long>& node_ids,
-                    Nodes nodes) {
+void write_elements(std::ostream& out, const char* type, int nodes_each, std::size_t count,
+                    const std::vector<int>& tags, const abaqus::NewSetNames& set_names, const std::string& prefix,
+                    int dimension, const long long* ids, const std::vector<long long>& node_ids, Nodes nodes) {
   const bool tagged = tags.size() == count;
   std::vector<index_t> element(static_cast<std::size_t>(nodes_each));
   for (std::size_t e = 0; e < count; ++e) {
     if (e == 0 || (tagged && tags[e] != tags[e - 1])) {
       out << "*ELEMENT, TYPE=" << type;
-      if (tagged) out << ", ELSET=" << element_set_name(prefix, tags[e]);
+      if (tagged) out << ", ELSET=" << set_names.of(prefix, dimension, tags[e]);
       out << '\n';
     }
     put_integer(out, ids[e]);
@@ -102,8 +97,9 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   out << "*HEADING\nwritten by tetsmooth\n*NODE\n";
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) write_node(out, node_ids[i], &mesh.xyz[3 * i]);
   const bool ten = !mesh.midsides.empty();
-  write_elements(out, ten ? "C3D10" : "C3D4", ten ? 10 : 4, mesh.num_tets(), mesh.extras.tet_tags, "REGION",
-                 ids.data(), node_ids, [&](std::size_t t, index_t* nodes) {
+  const abaqus::NewSetNames set_names(mesh);
+  write_elements(out, ten ? "C3D10" : "C3D4", ten ? 10 : 4, mesh.num_tets(), mesh.extras.tet_tags, set_names, "REGION",
+                 3, ids.data(), node_ids, [&](std::size_t t, index_t* nodes) {
                    if (ten) return file_tet10(mesh, t, abaqus::kMidsidePlaces, nodes);
                    std::copy_n(&mesh.tets[4 * t], 4, nodes);
                  });
@@ -111,7 +107,8 @@ void write_new_deck(const TetMesh& mesh, std::ostream& out) {
   for (const PassThroughBlock& b : mesh.extras.blocks) {
     const auto n = static_cast<std::size_t>(b.nodes_per_element);
     write_elements(out, abaqus::type_name_of(b.kind, b.nodes_per_element), b.nodes_per_element, elements_in(b), b.tags,
-                   b.kind, ids.data() + first, node_ids, [&](std::size_t e, index_t* nodes) {
+                   set_names, b.kind, kind_dimension(b.kind), ids.data() + first, node_ids,
+                   [&](std::size_t e, index_t* nodes) {
                      for (std::size_t k = 0; k < n; ++k)
                        nodes[abaqus::file_place(b.kind, static_cast<int>(k))] = b.connectivity[e * n + k];
                    });
@@ -126,6 +123,10 @@ constexpr DeckWriter kWriter{"abaqus", "Abaqus deck", check_new_deck, write_deck
 
 std::string abaqus_numbers_lost(const TetMesh& mesh) {
   return has_kept_deck(mesh, "abaqus") ? "" : numbers_lost(mesh, kLargestNumber);
+}
+
+std::vector<std::string> abaqus_names_lost(const TetMesh& mesh) {
+  return has_kept_deck(mesh, "abaqus") ? std::vector<std::string>{} : abaqus::NewSetNames(mesh).not_written();
 }
 
 void write_abaqus(const TetMesh& mesh, std::ostream& out) { kWriter.write(mesh, out); }

@@ -219,6 +219,14 @@ bool entities_split_regions(const FileExtras& e) {
                      [&](const PassThroughBlock& b) { return splits(b.entity_tags, b.tags); });
 }
 
+// The first `shown` of `names` in double quotes, and how many more there are.
+std::string quoted_list(const std::vector<std::string>& names, std::size_t shown) {
+  std::string list;
+  for (std::size_t i = 0; i < names.size() && i < shown; ++i) list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
+  if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more";
+  return list;
+}
+
 }  // namespace
 
 std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& path, MeshFormat format) {
@@ -390,23 +398,28 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
   }
   // MSH writes the names of the regions as physical names, FLAC3D as its
   // groups' names, Exodus as its blocks' names, ANSYS as its components',
-  // LS-DYNA as its parts' headings.
+  // LS-DYNA as its parts' headings, Abaqus as its element sets' names (a
+  // deck kept keeps its own; a new one those that are plain set names).
   // (Exodus writes every kind of element the readers give: none is
   // dropped.)
   const bool keeps_names = msh || f == MeshFormat::Flac3d || f == MeshFormat::Exodus || f == MeshFormat::Ansys ||
-                          f == MeshFormat::Lsdyna;
-  // An Abaqus deck kept keeps its set names; a new one names its sets by tag.
-  if ((abaqus || flac3d || exodus || ansys || lsdyna) && !(abaqus && f == MeshFormat::Abaqus) && !keeps_names &&
-      raw_section(e, "$PhysicalNames") != nullptr)
-    notes.push_back(std::string("the names of the regions (the ") +
-                    (abaqus   ? "deck's element sets"
-                     : flac3d ? "grid's zone and face groups"
-                     : ansys  ? "file's element components"
-                     : lsdyna ? "deck's part headings"
-                              : "file's element block names") +
-                    ") will not be written: " +
-                    name + (f == MeshFormat::Abaqus ? " names the element sets of a new deck by region tag"
-                                                    : " has no place for them"));
+                           f == MeshFormat::Lsdyna || f == MeshFormat::Abaqus;
+  const char* names_are = abaqus   ? "the deck's element sets"
+                          : flac3d ? "the grid's zone and face groups"
+                          : ansys  ? "the file's element components"
+                          : lsdyna ? "the deck's part headings"
+                          : exodus ? "the file's element block names"
+                                   : "Gmsh physical names";
+  if ((abaqus || flac3d || exodus || ansys || lsdyna) && !keeps_names && raw_section(e, "$PhysicalNames") != nullptr)
+    notes.push_back(std::string("the names of the regions (") + names_are + ") will not be written: " + name +
+                    " has no place for them");
+  if (const std::vector<std::string> names_lost =
+          f == MeshFormat::Abaqus ? abaqus_names_lost(mesh) : std::vector<std::string>{};
+      !names_lost.empty())
+    notes.push_back("the names of " + count_of(names_lost.size(), "region") + " (" + names_are + ": " +
+                    quoted_list(names_lost, 5) + ") will not be written: a new " + name +
+                    " deck names a region's element set by its tag where the name is no plain set name (1 to 80 "
+                    "letters, digits and underscores, the first a letter) or is another's in any case");
   if (!msh && !abaqus && !flac3d && !exodus && !ansys && !lsdyna) {
     const bool names = !keeps_names && raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);

@@ -176,6 +176,45 @@ class MeshioDecks(GmshScratchCase):
         self.assertEqual(len(set(tags[rock].tolist())), 1)
         self.assertEqual(len(set(tags[soil].tolist())), 1)
         self.assertNotEqual(tags[rock[0]], tags[soil[0]])
+        # The regions keep the sets' names: MSH output has them as physical
+        # names of the right tets.
+        run("convert", self.path("meshio.inp"), self.path("back.msh"))
+        msh = meshio.read(self.path("back.msh"))
+        physical = np.concatenate(msh.cell_data["gmsh:physical"]).ravel()
+        names = {int(tag): name for name, (tag, dim) in msh.field_data.items() if dim == 3}
+        self.assertEqual(names[int(physical[rock[0]])], "Rock")
+        self.assertEqual(names[int(physical[soil[0]])], "Soil")
+
+    def test_a_new_deck_names_its_element_sets_after_the_regions(self):
+        """Physical names that are plain Abaqus set names become the element
+        sets' names, which meshio reads as cell sets and tetsmooth reads back
+        as the regions' names; one that would need quotes stays REGION_<tag>,
+        with a warning that names it alone."""
+        with gmsh_session(self.gmsh):
+            lower, upper = two_layers(self.gmsh)
+            self.gmsh.model.occ.synchronize()
+            self.gmsh.model.addPhysicalGroup(3, [lower], 100)
+            self.gmsh.model.setPhysicalName(3, 100, "granite")
+            self.gmsh.model.addPhysicalGroup(3, [upper], 200)
+            self.gmsh.model.setPhysicalName(3, 200, "soft clay")
+            self.gmsh.option.setNumber("Mesh.MeshSizeMax", 0.5)
+            self.gmsh.model.mesh.generate(3)
+            self.gmsh.write(self.path("named.msh"))
+        proc = run("convert", self.path("named.msh"), self.path("named.inp"))
+        self.assertNotIn("has no place for", proc.stderr)
+        self.assertIn('the names of 1 region (Gmsh physical names: "soft clay") will not be written', proc.stderr)
+        ours = meshio.read(self.path("named.msh"))
+        physical = np.concatenate([d for c, d in zip(ours.cells, ours.cell_data["gmsh:physical"])
+                                   if c.type == "tetra"]).ravel()
+        deck = meshio.read(self.path("named.inp"))
+        sets = {name: sum(len(ids) for ids in blocks) for name, blocks in deck.cell_sets.items()}
+        self.assertEqual(sets, {"granite": int((physical == 100).sum()), "REGION_200": int((physical == 200).sum())})
+        run("convert", self.path("named.inp"), self.path("back.msh"))
+        back = meshio.read(self.path("back.msh"))
+        self.assertEqual(sorted(back.field_data), ["REGION_200", "granite"])
+        tags = np.concatenate(back.cell_data["gmsh:physical"]).ravel()
+        granite = back.field_data["granite"][0]
+        np.testing.assert_array_equal(tags == granite, physical == 100)
 
     def test_a_deck_of_parts_is_refused_and_nothing_written(self):
         with open(self.path("parts.inp"), "w") as f:

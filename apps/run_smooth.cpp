@@ -9,9 +9,9 @@
 #include "apps/output_check.hpp"
 #include "apps/output_fields.hpp"
 #include "apps/progress_line.hpp"
-#include "apps/smoothing_pins.hpp"
 #include "apps/report_json.hpp"
 #include "apps/report_text.hpp"
+#include "apps/smoothing_pins.hpp"
 #include "kernels/smoother.hpp"
 #include "kernels/sweep_log.hpp"
 #include "mesh/errors.hpp"
@@ -82,10 +82,9 @@ std::string stop_phrase(const SmoothResult& r, Method method) {
 // looking, and in-place Form B under CUDA MultiBlock or SingleBlock (the
 // paper's racy variants) judges moves against neighbours that are moving.
 std::string inversion_warning(const SmoothCommand& c, Device device, const InversionChange& change) {
-  const std::string count = with_thousands(change.made) + " tets" +
-                            (change.mended > 0 ? " (and put right " + with_thousands(change.mended) +
-                                                     " that the input had inverted)"
-                                               : "");
+  const std::string count =
+      with_thousands(change.made) + " tets" +
+      (change.mended > 0 ? " (and put right " + with_thousands(change.mended) + " that the input had inverted)" : "");
   if (c.options.method == Method::Ordinary) return "ordinary smoothing inverted " + count + "; --method adaptive with "
                                                    "the coloured strategy or --form A never does";
   if (device == Device::Cuda && c.options.form == Form::B && c.options.strategy != Strategy::Coloured)

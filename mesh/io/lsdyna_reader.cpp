@@ -542,8 +542,9 @@ void DeckReader::keep_notes() {
   // LS-DYNA reads to the end of the file without *END, but the writers put
   // it there: a deck that opens with *KEYWORD and lacks it may be cut short.
   if (deck_keyword_ && !deck_end_)
-    e.read_notes.push_back("the deck has *KEYWORD but ends without *END, as a deck cut short would: check that its "
-                           "last cards are all there");
+    e.read_notes.push_back(
+        "the deck has *KEYWORD but ends without *END, as a deck cut short would: check that its "
+        "last cards are all there");
 }
 
 TetMesh DeckReader::read() {

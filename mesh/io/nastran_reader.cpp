@@ -226,8 +226,9 @@ void DeckReader::keep_notes() {
                            " entries are not read: where they name grid points, their nodes are not pinned (list "
                            "those that must stay on a \"$TETSMOOTH PINNED <id> ...\" comment line)");
   if (cards_.bulk_unended())
-    e.read_notes.push_back("the deck has BEGIN BULK but ends without ENDDATA, as a deck cut short would: check that "
-                           "its last entries are all there");
+    e.read_notes.push_back(
+        "the deck has BEGIN BULK but ends without ENDDATA, as a deck cut short would: check that "
+        "its last entries are all there");
   if (meshio_tets_)
     e.read_notes.push_back("CTETRA_ entries (meshio 5's name for 10-node tets, which Nastran does not know) were "
                            "read as CTETRA");

@@ -492,6 +492,9 @@ TEST(AnsysRead, ErrorsNameFileAndLine) {
       {replaced(good, "FINISH\n", "NUMOFF,NODE,100\nFINISH\n"), "t.cdb:30: NUMOFF after an NBLOCK"},
       {replaced(good, "FINISH\n", "CMBLOCK,C,NODE,2\n(8i20)\n" + ints({1, LLONG_MIN}, 20) + "\n"),
        "t.cdb:32: CMBLOCK 'C' lists -9223372036854775808"},
+      // A record cut off inside its header, as where the file was copied in part.
+      {good.substr(0, good.find(ints({1, 1, 1, 1, 0}, 9)) + 45) + "\n",
+       "t.cdb:17: an EBLOCK record of 5 fields, short of the 11 of its header (is the file cut short?)"},
   };
   for (const Case& c : cases) {
     EXPECT_NE(read_error(c.text).find(c.expected), std::string::npos) << read_error(c.text);

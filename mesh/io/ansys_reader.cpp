@@ -229,6 +229,12 @@ void FileReader::eblock(bool solid, long long nodes_per_record) {
       return static_cast<int>(mat);
     };
     if (solid) {
+      // CDWRITE fills every field of a solid record's header: a shorter
+      // line is a record cut off (a file copied in part), not blank fields.
+      const std::size_t iw = static_cast<std::size_t>(f.int_width);
+      if (data_length(line_) < header * iw)
+        fail("an EBLOCK record of " + std::to_string((data_length(line_) + iw - 1) / iw) + " fields, short of the " +
+             std::to_string(header) + " of its header (is the file cut short?)");
       e.mat = material(lead);
       e.type = int_field(line_, f, 1, "an element type");
       count = int_field(line_, f, 8, "a node count");

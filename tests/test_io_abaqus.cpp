@@ -261,16 +261,29 @@ TEST(AbaqusIo, ANewDeckNamesTheElementSetsAfterTheRegionsWhereAbaqusTakesTheName
             "Top_2");
   // The warning names only the names not written, and no longer says that
   // Abaqus has no place for them.
+  // And that the tags come back as other numbers (sets named without numbers).
   const std::vector<std::string> notes = output_losses(mesh, "out.inp");
-  ASSERT_EQ(notes.size(), 1u);
+  ASSERT_EQ(notes.size(), 2u);
+  EXPECT_EQ(notes[1].substr(0, 41), "the region tags will not be kept: a new a");
+  EXPECT_FALSE(abaqus_tags_read_back(mesh));
   EXPECT_EQ(notes[0],
             "the names of 6 regions (Gmsh physical names: \"rock\", \"soft clay\", \"Rock\", \"ROCK\", \"" + long_name +
                 "\" and 1 more) will not be written: a new abaqus deck names a region's element set by its tag where "
                 "the name is no plain set name (1 to 80 letters, digits and underscores, the first a letter) or is "
                 "another's in any case");
   mesh.extras.raw_sections.back().second = "2\n3 1 \"granite\"\n3 8 \"Rest_of_it\"\n";
-  EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
+  EXPECT_EQ(output_losses(mesh, "out.inp").size(), 1u);  // the tags alone
   EXPECT_NE(write_text(mesh).find("*ELEMENT, TYPE=C3D4, ELSET=Rest_of_it\n"), std::string::npos);
+  // Names that end in their own tags, apart from every other set's number,
+  // give the tags back: nothing is lost.
+  mesh.extras.blocks.clear();
+  mesh.extras.raw_sections.back().second = "2\n3 1 \"Layer_1\"\n3 8 \"Layer_8\"\n";
+  EXPECT_TRUE(abaqus_tags_read_back(mesh));
+  EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
+  EXPECT_EQ(read_text(write_text(mesh)).extras.tet_tags, mesh.extras.tet_tags);
+  // Numbers that are other regions' tags come back swapped: said so.
+  mesh.extras.raw_sections.back().second = "2\n3 1 \"Part8\"\n3 8 \"Part1\"\n";
+  EXPECT_FALSE(abaqus_tags_read_back(mesh));
 }
 
 TEST(AbaqusIo, ANewDeckListsManyPinsSixteenALineAndRenumbersWhatItCannotKeep) {

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -14,6 +15,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/atomic_file.hpp"
@@ -338,6 +340,28 @@ TEST_F(IoDir, AtomicWriteThroughDevFdSharesTheDescriptorsPlace) {
     EXPECT_EQ(contents(path("held.txt")), "head body tail");
     EXPECT_EQ(files(), 1u);  // no temporary
   }
+}
+
+// A pipe this process holds with O_NONBLOCK (a parent may set it on our
+// stdout) is opened afresh, blocking: a copy of the descriptor would share
+// the flag and fail with EAGAIN once the pipe is full.
+TEST(AtomicWrite, ANonBlockingPipeIsWrittenWhole) {
+  int ends[2];
+  ASSERT_EQ(::pipe(ends), 0);
+  ASSERT_EQ(::fcntl(ends[1], F_SETFL, ::fcntl(ends[1], F_GETFL) | O_NONBLOCK), 0);
+  const std::size_t size = 1 << 20;  // far past a pipe's buffer
+  std::size_t got = 0;
+  std::thread reader([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));  // let the pipe fill first
+    char buf[1 << 16];
+    for (ssize_t n; (n = ::read(ends[0], buf, sizeof buf)) > 0;) got += static_cast<std::size_t>(n);
+  });
+  EXPECT_NO_THROW(write_atomically("/proc/self/fd/" + std::to_string(ends[1]),
+                                   [&](std::ostream& out) { out << std::string(size, 'x'); }));
+  ::close(ends[1]);
+  reader.join();
+  ::close(ends[0]);
+  EXPECT_EQ(got, size);
 }
 
 // Killed while the body is still writing: the temporary goes with the

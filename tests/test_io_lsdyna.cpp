@@ -521,6 +521,8 @@ TEST(LsdynaRead, ErrorsNameFileAndLine) {
             "t.k:15: solid element 15 leaves node N4 blank or 0, which names no node (a card cut short?)");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 3}))),
             "t.k:15: solid element 15 leaves node N2 blank or 0, which names no node (a card cut short?)");
+  EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1}) + ints({1, 2, 3, 5, 1, 2, 3, 4, 5}))),
+            "t.k:16: solid element 15 leaves node N10 blank or 0, which names no node (a card cut short?)");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3, 4, 5, 0, 6, 6}))),
             "t.k:15: solid element 15 leaves node N6 blank or 0, which names no node (a card cut short?)");
   EXPECT_EQ(read_error(with("*ELEMENT_SOLID\n" + ints({14, 1, 1, 2, 3, 5, 5, 5, 5, 5}))),

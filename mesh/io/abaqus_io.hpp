@@ -78,6 +78,9 @@ std::string abaqus_numbers_lost(const TetMesh& mesh);
 // (REGION_<tag>: the name is no plain Abaqus set name, or is another's);
 // empty where the mesh's own deck is written back.
 std::vector<std::string> abaqus_names_lost(const TetMesh& mesh);
+// Whether tetsmooth, reading a new deck for `mesh` back, gives its regions
+// their tags again (true where the mesh's own deck is written back).
+bool abaqus_tags_read_back(const TetMesh& mesh);
 void write_abaqus_file(const TetMesh& mesh, const std::string& path);
 
 }  // namespace tetsmooth

@@ -4,6 +4,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "mesh/io/abaqus_regions.hpp"
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/region_sets.hpp"
 #include "mesh/io/text_lines.hpp"
@@ -64,6 +65,27 @@ NewSetNames::NewSetNames(const TetMesh& mesh) {
     else if (!name.empty())
       not_written_.push_back(name);
   }
+}
+
+bool NewSetNames::tags_read_back(const TetMesh& mesh) const {
+  // The sets in the order the deck writes them (tets, then each block), by
+  // first appearance, and the tags the reader gives them back.
+  std::vector<std::string> names;
+  std::vector<int> tags;
+  std::set<std::pair<int, int>> seen;
+  const auto add = [&](const std::string& prefix, int dimension, const std::vector<int>& of_elements) {
+    for (int tag : of_elements)
+      if (seen.insert({dimension, tag}).second) {
+        names.push_back(of(prefix, dimension, tag));
+        tags.push_back(tag);
+      }
+  };
+  if (mesh.extras.tet_tags.size() == mesh.num_tets()) add("REGION", 3, mesh.extras.tet_tags);
+  for (const PassThroughBlock& b : mesh.extras.blocks)
+    if (b.tags.size() == elements_in(b)) add(b.kind, kind_dimension(b.kind), b.tags);
+  std::vector<std::uint32_t> sets(names.size());
+  for (std::size_t i = 0; i < sets.size(); ++i) sets[i] = static_cast<std::uint32_t>(i + 1);
+  return tags_from_element_sets(sets, names) == tags || names.empty();
 }
 
 std::string NewSetNames::of(const std::string& prefix, int dimension, int tag) const {

@@ -27,6 +27,11 @@ class NewSetNames {
   // The regions' names (other than empty ones) that the deck names by tag
   // instead, in the order of dimension and tag.
   const std::vector<std::string>& not_written() const { return not_written_; }
+  // Whether a reader of the deck (tags_from_element_sets) gives the regions
+  // of `mesh` (the mesh these names were made for) their tags back: a name
+  // without a trailing number, or two with one alike, renumber every set 1,
+  // 2, ... in order, and a name's own number may be another region's tag.
+  bool tags_read_back(const TetMesh& mesh) const;
 
  private:
   std::map<std::pair<int, int>, std::string> written_;  // (dimension, tag) -> name

@@ -125,6 +125,10 @@ std::string abaqus_numbers_lost(const TetMesh& mesh) {
   return has_kept_deck(mesh, "abaqus") ? "" : numbers_lost(mesh, kLargestNumber);
 }
 
+bool abaqus_tags_read_back(const TetMesh& mesh) {
+  return has_kept_deck(mesh, "abaqus") || abaqus::NewSetNames(mesh).tags_read_back(mesh);
+}
+
 std::vector<std::string> abaqus_names_lost(const TetMesh& mesh) {
   return has_kept_deck(mesh, "abaqus") ? std::vector<std::string>{} : abaqus::NewSetNames(mesh).not_written();
 }

@@ -71,6 +71,11 @@ bool same_inode(int fd, const struct stat& st) {
   return ::fstat(fd, &held) == 0 && held.st_dev == st.st_dev && held.st_ino == st.st_ino;
 }
 
+bool writable(int fd) {
+  const int flags = ::fcntl(fd, F_GETFL);
+  return flags >= 0 && (flags & O_ACCMODE) != O_RDONLY;
+}
+
 // Where the bytes go: a temporary beside the target, renamed over it by
 // commit() and removed otherwise; or, for a target that is a device, FIFO or
 // socket, or a file this process holds open through /proc, the target itself.
@@ -85,15 +90,18 @@ class TempFile {
     const bool exists = ::stat(target_.c_str(), &st) == 0;  // through every link, /proc's too
     if (exists && ((!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) || held)) {
       direct_ = true;
-      if (end.fd >= 0 && same_inode(end.fd, st)) {
-        // Our own descriptor (stdout sent to a file): a copy shares its
+      if (S_ISREG(st.st_mode) && end.fd >= 0 && same_inode(end.fd, st) && writable(end.fd)) {
+        // Our own descriptor of a regular file (stdout sent to a file), open
+        // for writing: a copy shares its
         // offset, so the body lands where the process writes and whatever
         // it writes there afterwards (a report on stdout) follows the body
         // instead of overwriting it. Bytes still in stdio's buffers go first.
         std::fflush(nullptr);
         fd_ = ::fcntl(end.fd, F_DUPFD_CLOEXEC, 0);
       } else {
-        // Another process's held file is appended to, after what was written there.
+        // A device or pipe is opened afresh (a copy would share the caller's
+        // O_NONBLOCK, and a full pipe would fail the write); another
+        // process's held file, or ours open read-only, is appended to.
         fd_ = ::open(target_.c_str(), O_WRONLY | O_CLOEXEC | (S_ISREG(st.st_mode) ? O_APPEND : O_TRUNC));
       }
       if (fd_ < 0) fail(target_, "", errno);

@@ -17,10 +17,12 @@
 //    holds open, reached through /proc (/dev/stdout or /dev/fd/1 sent to a
 //    file), is written directly, as there is nothing to rename over it, or
 //    renaming would cut it off from its descriptor: such a write is not
-//    atomic. A file this process holds is written through a copy of its own
-//    descriptor, so that the bytes land at that descriptor's place and what
-//    the process writes there next comes after them (stdout's buffers are
-//    flushed first); another process's held file is appended to.
+//    atomic. A regular file this process holds open for writing is written
+//    through a copy of that descriptor, so that the bytes land at its
+//    offset and what the process writes there next comes after them
+//    (stdout's buffers are flushed first; a file opened with <> keeps
+//    whatever lies past the bytes written); another process's held file is
+//    appended to, and a device or pipe opened afresh.
 #include <functional>
 #include <ostream>
 #include <string>

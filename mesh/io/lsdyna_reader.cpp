@@ -310,9 +310,10 @@ void DeckReader::solid_nodes(const long long* n, int count) {
     fail("solid element " + std::to_string(pending_id_) + " leaves node N" + std::to_string(k + 1) +
          " blank or 0, which names no node (a card cut short?)");
   };
-  for (int k = 0; k < 4; ++k)
+  const bool ten = count == 10 && (n[8] != 0 || n[9] != 0);  // a 10-node tet's second card: all ten given
+  for (int k = 0; k < (ten ? 10 : 4); ++k)
     if (n[k] == 0) blank(k);
-  if (!all_equal(n, 4, 8, 0))
+  if (!ten && !all_equal(n, 4, 8, 0))
     for (int k = 4; k < 8; ++k)
       if (n[k] == 0) blank(k);
   solid_ids_.push_back(pending_id_);

@@ -262,8 +262,10 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back(count_of(lost, "node") + " that Gmsh's entities keep in place (between volumes of one " +
                     "physical group, or on points, curves or surfaces inside the mesh) will not be pinned in the " +
                     name + " output, " +
-                    (keeps_entity_tags(f) ? "which does not keep the nodes' entities"
-                                          : "which has no place for Gmsh entities") +
+                    (f == MeshFormat::Msh41 || f == MeshFormat::Msh41Binary
+                         ? "which has no entity of a tag below 1 to put them on"
+                     : keeps_entity_tags(f) ? "which does not keep the nodes' entities"
+                                            : "which has no place for Gmsh entities") +
                     ", so a later run may move " + (lost == 1 ? "it" : "them"));
   const bool any_marker = std::any_of(e.node_markers.begin(), e.node_markers.end(), [](int m) { return m != 0; });
   if (f != MeshFormat::TetGen && f != MeshFormat::Medit && any_marker)
@@ -420,6 +422,11 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
                     quoted_list(names_lost, 5) + ") will not be written: a new " + name +
                     " deck names a region's element set by its tag where the name is no plain set name (1 to 80 "
                     "letters, digits and underscores, the first a letter) or is another's in any case");
+  if (f == MeshFormat::Abaqus && !abaqus_tags_read_back(mesh))
+    notes.push_back(
+        "the region tags will not be kept: a new abaqus deck names its element sets, and a run that reads it "
+        "back takes the tags from the names' trailing numbers where those all differ, else numbers the sets 1, 2, "
+        "... in order (the regions stay apart, under other numbers)");
   if (!msh && !abaqus && !flac3d && !exodus && !ansys && !lsdyna) {
     const bool names = !keeps_names && raw_section(e, "$PhysicalNames") != nullptr;
     const bool entities = !keeps_entity_tags(f) && entities_split_regions(e);

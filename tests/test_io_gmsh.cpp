@@ -1146,9 +1146,10 @@ TEST(GmshIo, Msh41OutputDeclaresTheEntitiesThatOnlyTheNodesNameFromOtherFormats)
   std::vector<std::string> losses;
   for (const std::string& loss : output_losses(mesh, "out.msh"))
     if (loss.find(feature) != std::string::npos) losses.push_back(loss);
-  EXPECT_EQ(losses, (std::vector<std::string>{"1 node" + feature +
-                                              "msh41 output, which has no entity of a tag below 1 to put them on, so a later "
-                                              "run may move it"}));
+  EXPECT_EQ(losses,
+            (std::vector<std::string>{"1 node" + feature +
+                                      "msh41 output, which has no entity of a tag below 1 to put them on, so a later "
+                                      "run may move it"}));
   mesh.extras.node_entity_tags[static_cast<std::size_t>(std::find(tags.begin(), tags.end(), 0) - tags.begin())] = 5;
   for (const std::string& loss : output_losses(mesh, "out.msh"))
     EXPECT_EQ(loss.find(feature), std::string::npos) << loss;

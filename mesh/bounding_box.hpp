@@ -39,7 +39,8 @@ inline BoundingBox bounding_box(const TetMesh& mesh) {
 inline BoundingBox tet_corners_bounding_box(const TetMesh& mesh) {
   if (mesh.tets.empty()) return bounding_box(mesh);
   std::vector<char> used(mesh.num_nodes(), 0);  // marked first: the nodes then read in order, once
-  for (const index_t v : mesh.tets)             // an index out of range is validate_mesh's to name, not this box's
+  // An index out of range is validate_mesh's to name, not this box's.
+  for (const index_t v : mesh.tets)
     if (v >= 0 && static_cast<std::size_t>(v) < used.size()) used[static_cast<std::size_t>(v)] = 1;
   BoundingBox b;
   bool first = true;

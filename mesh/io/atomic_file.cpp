@@ -92,10 +92,10 @@ class TempFile {
       direct_ = true;
       if (S_ISREG(st.st_mode) && end.fd >= 0 && same_inode(end.fd, st) && writable(end.fd)) {
         // Our own descriptor of a regular file (stdout sent to a file), open
-        // for writing: a copy shares its
-        // offset, so the body lands where the process writes and whatever
-        // it writes there afterwards (a report on stdout) follows the body
-        // instead of overwriting it. Bytes still in stdio's buffers go first.
+        // for writing: a copy shares its offset, so the body lands where the
+        // process writes and whatever it writes there afterwards (a report
+        // on stdout) follows the body instead of overwriting it. Bytes still
+        // in stdio's buffers go first.
         std::fflush(nullptr);
         fd_ = ::fcntl(end.fd, F_DUPFD_CLOEXEC, 0);
       } else {

@@ -47,13 +47,6 @@ std::vector<std::pair<long long, long long>> merged(std::vector<std::pair<long l
   return out;
 }
 
-// A list for a note: the first `most` items, then how many more.
-std::string listed(const std::vector<std::string>& items, std::size_t most) {
-  if (items.size() <= most) return joined(items);
-  const std::vector<std::string> first(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(most));
-  return joined(first) + " and " + std::to_string(items.size() - most) + " more";
-}
-
 }  // namespace
 
 void FileReader::resolve_elements(const IdIndex& nodes) {

@@ -65,6 +65,12 @@ std::string joined(const std::vector<std::string>& items) {
   return list;
 }
 
+std::string listed(const std::vector<std::string>& items, std::size_t most) {
+  if (items.size() <= most) return joined(items);
+  const std::vector<std::string> first(items.begin(), items.begin() + static_cast<std::ptrdiff_t>(most));
+  return joined(first) + " and " + std::to_string(items.size() - most) + " more";
+}
+
 bool parse_real(std::string_view token, double& value) {
   token = strip_plus(token);
   const char* end = token.data() + token.size();

@@ -37,6 +37,10 @@ std::string_view trimmed(std::string_view text);
 // "a, b, c": a list for a message or a note.
 std::string joined(const std::vector<std::string>& items);
 
+// joined's list of the first `most` items, then how many more: "a, b and 3
+// more".
+std::string listed(const std::vector<std::string>& items, std::size_t most);
+
 // The length of the UTF-8 byte order mark that starts `text` (Windows
 // editors write one): 3, or 0 without one. It is not content.
 inline std::size_t bom_length(std::string_view text) { return text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0; }

@@ -24,6 +24,7 @@
 #include "mesh/io/medit_detail.hpp"
 #include "mesh/io/medit_io.hpp"
 #include "mesh/io/tetgen_io.hpp"
+#include "mesh/io/text_lines.hpp"
 #include "mesh/io/tsm_cache.hpp"
 #include "mesh/io/vtk_legacy.hpp"
 #include "mesh/io/vtu_io.hpp"
@@ -220,11 +221,9 @@ bool entities_split_regions(const FileExtras& e) {
 }
 
 // The first `shown` of `names` in double quotes, and how many more there are.
-std::string quoted_list(const std::vector<std::string>& names, std::size_t shown) {
-  std::string list;
-  for (std::size_t i = 0; i < names.size() && i < shown; ++i) list += (i == 0 ? "\"" : ", \"") + names[i] + "\"";
-  if (names.size() > shown) list += " and " + std::to_string(names.size() - shown) + " more";
-  return list;
+std::string quoted_list(std::vector<std::string> names, std::size_t shown) {
+  for (std::string& name : names) name = "\"" + name + "\"";
+  return listed(names, shown);
 }
 
 }  // namespace

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # Installs what tetsmooth needs from Debian/Ubuntu packages, skipping what is
 # already there. The CUDA toolkit is optional and not installed here.
+# calculix-ccx is the CalculiX solver that tests/python/test_calculix.py runs
+# on the decks tetsmooth smooths.
 set -euo pipefail
 packages=(cmake g++ make libtet1.5-dev libbenchmark-dev libbenchmark-tools libgtest-dev nlohmann-json3-dev
           zlib1g-dev liblzma-dev libnetcdf-dev libexodusii-dev libomp-dev clang libclang-rt-dev python3 python3-pandas python3-matplotlib
-          python3-meshio python3-gmsh python3-scipy python3-netcdf4 python3-pip git)
+          python3-meshio python3-gmsh python3-scipy python3-netcdf4 python3-pip git calculix-ccx)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -103,33 +103,37 @@ open(sys.argv[1], "wb").write(body + struct.pack("<Q", h))
 PY
 # LS-DYNA: a deck of every card kind the reader reads (standard, free and
 # I10 layouts, one- and two-card solids, shells, beams, sets, loads, parts),
-# and lsdyna-mesh-reader's examples where install_deps.sh has put them.
+# the same deck in the long layout, and lsdyna-mesh-reader's examples where
+# install_deps.sh has put them.
 seed lsdyna "$root"/.deps/python/lsdyna_mesh_reader/examples/*.k
-/usr/bin/python3 - "$seeds/lsdyna/small.k" <<'PY'
+/usr/bin/python3 - "$seeds/lsdyna/small.k" "$seeds/lsdyna/long.k" <<'PY'
 import sys
-ints = lambda values, width=8: "".join(str(v).rjust(width) for v in values)
 nodes = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (1, 1, 0), (0, 0, 1), (1, 0, 1), (0, 1, 1), (1, 1, 1), (0.4, 0.5, 0.6)]
 quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]
-lines = ["*KEYWORD", "*PART", "rock", ints([1, 1, 1], 10), "*NODE"]
-lines += [ints([i + 1]) + "".join(("%.4f" % c).rjust(16) for c in p) + ("       7       0" if i == 0 else "")
-          for i, p in enumerate(nodes[:8])]
-lines += ["9,0.4,0.5,0.6"]
-lines += ["*ELEMENT_SOLID"]
-number = 0
-for q in quads:
-    for tet in ((9, q[0] + 1, q[1] + 1, q[2] + 1), (9, q[0] + 1, q[2] + 1, q[3] + 1)):
-        number += 1
-        if number == 1:
-            lines += [ints([number, 1]), ints(list(tet))]
-        else:
-            lines.append(ints([number, 1 + number % 2] + list(tet) + [tet[3]] * 4))
-lines += ["*ELEMENT_SHELL_THICKNESS", ints([20, 3, 1, 2, 4, 3]), "0.1,0.1,0.1,0.1"]
-lines += ["*ELEMENT_BEAM", ints([30, 4, 5, 6, 8])]
-lines += ["*SET_NODE_LIST_TITLE", "top", ints([1], 10), ints([5, 6, 7, 8], 10)]
-lines += ["*SET_NODE_LIST_GENERATE", ints([2], 10), ints([1, 2], 10)]
-lines += ["*BOUNDARY_SPC_NODE", ints([3, 0, 1, 1, 1], 10)]
-lines += ["*MAT_ELASTIC", "1,7.8e-9,210000.,0.3", "*END"]
-open(sys.argv[1], "w").write("\n".join(lines) + "\n")
+def deck(wide):  # the standard layout, or the long one (every field 20 columns)
+    ints = lambda values, width=8: "".join(str(v).rjust(20 if wide else width) for v in values)
+    lines = ["*KEYWORD LONG=Y" if wide else "*KEYWORD", "*PART", "rock", ints([1, 1, 1], 10), "*NODE"]
+    lines += [ints([i + 1]) + "".join(("%.4f" % c).rjust(20 if wide else 16) for c in p) +
+              (ints([7, 0]) if i == 0 else "") for i, p in enumerate(nodes[:8])]
+    lines += ["9,0.4,0.5,0.6"]
+    lines += ["*ELEMENT_SOLID"]
+    number = 0
+    for q in quads:
+        for tet in ((9, q[0] + 1, q[1] + 1, q[2] + 1), (9, q[0] + 1, q[2] + 1, q[3] + 1)):
+            number += 1
+            if number == 1:
+                lines += [ints([number, 1]), ints(list(tet))]
+            else:
+                lines.append(ints([number, 1 + number % 2] + list(tet) + [tet[3]] * 4))
+    lines += ["*ELEMENT_SHELL_THICKNESS", ints([20, 3, 1, 2, 4, 3]), "0.1,0.1,0.1,0.1"]
+    lines += ["*ELEMENT_BEAM", ints([30, 4, 5, 6, 8])]
+    lines += ["*SET_NODE_LIST_TITLE", "top", ints([1], 10), ints([5, 6, 7, 8], 10)]
+    lines += ["*SET_NODE_LIST_GENERATE", ints([2], 10), ints([1, 2], 10)]
+    lines += ["*BOUNDARY_SPC_NODE", ints([3, 0, 1, 1, 1], 10)]
+    lines += ["*MAT_ELASTIC", "1,7.8e-9,210000.,0.3", "*END"]
+    return "\n".join(lines) + "\n"
+open(sys.argv[1], "w").write(deck(False))
+open(sys.argv[2], "w").write(deck(True))
 PY
 # ANSYS: a deck in the older (3i8,6e20.13) layout with a degenerate
 # SOLID185 tet, SOLID285 tets of two materials, a shell, a non-solid EBLOCK,

@@ -61,6 +61,12 @@ std::string node(long long id, const char* x, const char* y, const char* z, cons
   return std::string(8 - t.size(), ' ') + t + field(x) + field(y) + field(z) + rest + "\n";
 }
 
+// A *NODE card in the long layout: every field 20 columns wide, on one line.
+std::string long_node(long long id, const char* x, const char* y, const char* z, const char* rest = "") {
+  const auto field = [](const char* v) { return std::string(20 - std::string(v).size(), ' ') + v; };
+  return ints({id}, 20).substr(0, 20) + field(x) + field(y) + field(z) + rest + "\n";
+}
+
 // Four tets around node 5, in parts 1 and 2; node 5 is the only one inside.
 const std::string kNodes = "*NODE\n$#   nid               x               y               z      tc      rc\n" +
                            node(1, "0.0", "0.0", "0.0") + node(2, "1.0", "0.0", "0.0") +
@@ -75,6 +81,25 @@ std::string with(const std::string& cards) { return "*KEYWORD\n" + kNodes + kSol
 
 bool node5_pinned(const std::string& cards) {
   const TetMesh mesh = read_text(with(cards));
+  return !mesh.fixed.empty() && mesh.fixed[4] == 1;
+}
+
+// The same four tets in the long layout, which "*KEYWORD LONG=Y" asks for.
+const std::string kLongNodes =
+    "*NODE\n$#               nid                   x                   y                   z                  tc"
+    "                  rc\n" +
+    long_node(1, "0.0", "0.0", "0.0") + long_node(2, "1.0", "0.0", "0.0") + long_node(3, "0.0", "1.0", "0.0") +
+    long_node(4, "0.0", "0.0", "1.0") + long_node(5, "0.3", "0.2", "0.1");
+const std::string kLongSolids = "*ELEMENT_SOLID\n" + ints({11, 1, 5, 2, 3, 4, 4, 4, 4, 4}, 20) +
+                                ints({12, 1, 1, 5, 3, 4, 4, 4, 4, 4}, 20) + ints({13, 2, 1, 2, 5, 4, 4, 4, 4, 4}, 20) +
+                                ints({14, 2, 1, 2, 3, 5, 5, 5, 5, 5}, 20);
+
+std::string with_long(const std::string& cards) {
+  return "*KEYWORD LONG=Y\n" + kLongNodes + kLongSolids + cards + "*END\n";
+}
+
+bool long_node5_pinned(const std::string& cards) {
+  const TetMesh mesh = read_text(with_long(cards));
   return !mesh.fixed.empty() && mesh.fixed[4] == 1;
 }
 
@@ -147,6 +172,30 @@ TEST(LsdynaCards, KeywordsAndFields) {
   EXPECT_EQ(coordinate_field(-1.0 / 3.0), " -0.333333333333");
   EXPECT_EQ(free_coordinate(0.1), "0.1");
   EXPECT_EQ(free_coordinate(-1.0 / 3.0), "-0.333333333333");
+  // In the long layout's 20 columns a double's shortest exact form fits but
+  // for some with three-digit exponents, which keep 12 significant digits.
+  EXPECT_EQ(node_widths(Layout::Long), (std::vector<int>(6, 20)));
+  EXPECT_EQ(element_widths(Layout::Long), (std::vector<int>(10, 20)));
+  EXPECT_EQ(wide_widths(Layout::Long), (std::vector<int>(8, 20)));
+  EXPECT_EQ(wide_widths(Layout::I10), (std::vector<int>(8, 10)));
+  EXPECT_EQ(coordinate_field(-1.0 / 3.0, 20), " -0.3333333333333333");
+  EXPECT_EQ(coordinate_field(1.5e20, 20), "             1.5E+20");
+  EXPECT_EQ(free_coordinate(-1.0 / 3.0, 20), "-0.3333333333333333");
+  for (const double value : {0.1, -9.5456041617964971, 1e-300, 123456789.0, -0.123456789012345, 100.00000000000001,
+                             4.9e-324, -1.7976931348623157e308}) {
+    const std::string f = coordinate_field(value, 20);
+    ASSERT_EQ(f.size(), 20u) << value;
+    EXPECT_EQ(f[0], ' ') << value;
+    double back = 0;
+    ASSERT_TRUE(real_field(f, back)) << f;
+    if (std::abs(value) < 1e300) {
+      EXPECT_EQ(back, value) << f;
+    } else {
+      EXPECT_LE(std::abs(back - value), 5e-12 * std::abs(value)) << f;
+    }
+  }
+  EXPECT_EQ(std::string(layout_mark(Layout::Long)) + layout_mark(Layout::I10) + layout_mark(Layout::Standard), "+%-");
+  EXPECT_STREQ(layout_name(Layout::Long), "long");
 }
 
 TEST(LsdynaRead, NodesTetsPartsAndIds) {
@@ -335,6 +384,152 @@ TEST(LsdynaRead, PartHeadingsNameRegions) {
   EXPECT_EQ(solids, (std::map<int, std::string>{{1, "rock mass"}, {2, "bolt"}}));
 }
 
+// The long layout ("*KEYWORD LONG=Y", or '+' after a keyword): every field
+// narrower than 20 columns is 20 wide, and a card stays on one line.
+TEST(LsdynaLong, ReadsAsTheStandardLayoutDoes) {
+  const TetMesh standard = read_text(with("*PART\nrock\n" + ints({1, 1, 1}, 10)));
+  const TetMesh wide = read_text(with_long("*PART\nrock\n" + ints({1, 1, 1}, 20)));
+  EXPECT_EQ(wide.xyz, standard.xyz);
+  EXPECT_EQ(wide.tets, standard.tets);
+  EXPECT_EQ(wide.extras.tet_tags, standard.extras.tet_tags);
+  EXPECT_EQ(wide.extras.node_tags, standard.extras.node_tags);
+  EXPECT_EQ(wide.extras.tet_element_tags, standard.extras.tet_element_tags);
+  const std::string* names = raw_section(wide.extras, "$PhysicalNames");
+  ASSERT_NE(names, nullptr);
+  EXPECT_EQ(physical_names_of(*names, 3), (std::map<int, std::string>{{1, "rock"}}));
+  EXPECT_TRUE(wide.fixed.empty());
+  // Ids past the standard layout's 8 digits, and the forms of a solid: two
+  // cards (EID PID, then N1..N10), free format, an option's cards.
+  const std::string nodes = "*NODE +\n" + long_node(123456789012, "0", "0", "0") + long_node(2, "1", "0", "0") +
+                            long_node(3, "0", "1", "0") + long_node(4, "0", "0", "1");
+  const std::vector<std::string> forms = {
+      "*ELEMENT_SOLID +\n" + ints({1, 2000000000, 123456789012, 2, 3, 4, 4, 4, 4, 4}, 20),
+      "*ELEMENT_SOLID +\n" + ints({1, 2000000000}, 20) + ints({123456789012, 2, 3, 4}, 20),
+      "*ELEMENT_SOLID+\n1,2000000000,123456789012,2,3,4\n",
+      "*ELEMENT_SOLID_ORTHO +\n" + ints({1, 2000000000, 123456789012, 2, 3, 4, 4, 4, 4, 4}, 20) +
+          "                 1.0                 0.0                 0.0\n"
+          "                 0.0                 1.0                 0.0\n",
+  };
+  for (const std::string& form : forms) {
+    const TetMesh mesh = read_text(nodes + form);
+    ASSERT_EQ(mesh.num_tets(), 1u) << form;
+    EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3})) << form;
+    EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2000000000})) << form;
+    EXPECT_EQ(mesh.extras.node_tags[0], 123456789012) << form;
+  }
+  // 10-node tets on their second card of 200 columns.
+  const TetMesh ten = read_text(
+      nodes + long_node(5, ".5", "0", "0") + long_node(6, ".5", ".5", "0") + long_node(7, "0", ".5", "0") +
+      long_node(8, "0", "0", ".5") + long_node(9, ".5", "0", ".5") + long_node(10, "0", ".5", ".5") +
+      "*ELEMENT_SOLID +\n" + ints({1, 7}, 20) + ints({123456789012, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 20));
+  EXPECT_EQ(ten.midsides, (std::vector<index_t>{4, 5, 6, 7, 8, 9}));
+}
+
+TEST(LsdynaLong, SetsLoadsConstraintsAndElementsPin) {
+  EXPECT_FALSE(long_node5_pinned(""));
+  EXPECT_FALSE(long_node5_pinned("*SET_NODE_LIST\n" + ints({1}, 20) + ints({1, 2, 3}, 20)));
+  // Node 5 in the fifth field, past the standard layout's 80 columns.
+  EXPECT_TRUE(long_node5_pinned("*SET_NODE_LIST_TITLE\nfixed\n" + ints({1}, 20) + ints({1, 2, 0, 4, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*SET_NODE_LIST_GENERATE\n" + ints({1}, 20) + ints({1, 1, 5, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*SET_SEGMENT\n" + ints({1}, 20) + ints({1, 2, 3, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*BOUNDARY_SPC_NODE\n" + ints({5, 0, 1, 1, 1}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*BOUNDARY_PRESCRIBED_MOTION_NODE\n" + ints({5, 1, 2, 3}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*LOAD_NODE_POINT\n" + ints({5, 3, 1}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*INITIAL_VELOCITY_NODE\n" + ints({5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*CONSTRAINED_EXTRA_NODES_NODE\n" + ints({1, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*CONSTRAINED_SPOTWELD\n" + ints({1, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*DATABASE_HISTORY_NODE\n" + ints({1, 2, 3, 4, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*ELEMENT_SHELL\n" + ints({21, 3, 1, 2, 5, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*ELEMENT_BEAM\n" + ints({31, 4, 1, 2, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*ELEMENT_MASS\n" + ints({41, 5}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*ELEMENT_DISCRETE\n" + ints({41, 6, 5, 1}, 20)));
+  EXPECT_TRUE(long_node5_pinned("*ELEMENT_TSHELL\n" + ints({41, 6, 1, 2, 3, 5, 1, 2, 3, 5}, 20)));
+  std::string constrained = with_long("");
+  const std::string free_node = long_node(5, "0.3", "0.2", "0.1");
+  constrained.replace(constrained.find(free_node), free_node.size(),
+                      long_node(5, "0.3", "0.2", "0.1", "                   7                   0"));
+  EXPECT_EQ(read_text(constrained).fixed[4], 1);
+}
+
+TEST(LsdynaLong, MixesWithTheOtherLayouts) {
+  // '+' in a standard deck, '-' and '%' in a long one: each keyword's cards
+  // in its own layout.
+  const TetMesh plain = read_text(kStar);
+  const TetMesh long_nodes = read_text("*KEYWORD\n*NODE +" + kLongNodes.substr(5) + kSolids + "*END\n");
+  EXPECT_EQ(long_nodes.xyz, plain.xyz);
+  EXPECT_EQ(long_nodes.tets, plain.tets);
+  const TetMesh standard_nodes = read_text("*KEYWORD LONG=Y\n*NODE -" + kNodes.substr(5) + kLongSolids +
+                                           "*ELEMENT_SOLID %\n" + ints({15, 3, 1, 2, 3, 5, 5, 5, 5, 5}, 10) +
+                                           "*SET_NODE_LIST\n" + ints({1}, 20) + ints({1, 5}, 20) + "*END\n");
+  EXPECT_EQ(standard_nodes.xyz, plain.xyz);
+  EXPECT_EQ(standard_nodes.num_tets(), 5u);
+  EXPECT_EQ(standard_nodes.extras.tet_tags.back(), 3);
+  ASSERT_EQ(standard_nodes.fixed.size(), 5u);
+  EXPECT_EQ(standard_nodes.fixed[4], 1);
+  // "*KEYWORD I10=Y LONG=Y" reads 20 columns: ids fit them.
+  EXPECT_EQ(read_text("*KEYWORD I10=Y LONG=Y\n" + kLongNodes + kLongSolids).xyz, plain.xyz);
+}
+
+TEST(LsdynaLong, WrittenBackWithOnlyMovedCoordinatesChanged) {
+  const std::string tail = "                   0                   7  after the card\n";
+  const std::string deck = "*KEYWORD LONG=Y\n$ a comment\n*NODE\n" + long_node(1, "0.0", "0.0", "0.0") +
+                           long_node(2, "1.0", "0.0", "0.0", tail.substr(0, tail.size() - 1).c_str()) +
+                           long_node(3, "0.0", "1.0", "0.0") + "$# a comment among the nodes\n" +
+                           long_node(4, "0.0", "0.0", "1.0") + "5,0.3,0.2,0.1,0,0\n" + kLongSolids +
+                           "*MAT_ELASTIC\n1,7.8e-9,210000.,0.3\n*NODE -\n" + node(6, "2", "2", "2") +
+                           "*END\nafter\n";
+  TetMesh mesh = read_text(deck);
+  ASSERT_EQ(mesh.num_nodes(), 6u);
+  EXPECT_EQ(write_text(mesh), deck);
+  // Node 2's z, in 20 columns: its NID, x, y, TC, RC and what follows as read.
+  mesh.xyz[5] = -1.0 / 3.0;
+  std::string expected = deck;
+  const std::string before = long_node(2, "1.0", "0.0", "0.0");
+  const std::size_t at = expected.find(before.substr(0, 80));
+  ASSERT_NE(at, std::string::npos);
+  expected.replace(at + 60, 20, " -0.3333333333333333");
+  EXPECT_EQ(write_text(mesh), expected);
+  EXPECT_EQ(read_text(expected).xyz, mesh.xyz);  // 20 columns hold it exactly
+  // A free-format card, in as many characters as 20 columns hold.
+  mesh = read_text(deck);
+  mesh.xyz[13] = 1.0 / 3.0;
+  expected = deck;
+  expected.replace(expected.find("5,0.3,0.2"), 9, "5,0.3,0.3333333333333333");
+  EXPECT_EQ(write_text(mesh), expected);
+  // The standard node among them keeps its 16 columns.
+  mesh = read_text(deck);
+  mesh.xyz[15] = 1.0 / 3.0;
+  expected = deck;
+  expected.replace(expected.find(node(6, "2", "2", "2")), node(6, "2", "2", "2").size(),
+                   node(6, "0.3333333333333", "2", "2"));
+  EXPECT_EQ(write_text(mesh), expected);
+}
+
+TEST(LsdynaLong, ErrorsNameFileAndLine) {
+  // A card cut short: its solid lacks nodes, its node set ends where the
+  // standard layout's card would.
+  EXPECT_EQ(read_error(with_long("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3}, 20))),
+            "t.k:15: solid element 15 leaves node N4 blank or 0, which names no node (a card cut short?)");
+  EXPECT_EQ(read_error(with_long("*ELEMENT_SOLID\n" + ints({15, 1}, 20) + ints({1, 2, 3, 5, 1, 2, 3, 4, 5}, 20))),
+            "t.k:16: solid element 15 leaves node N10 blank or 0, which names no node (a card cut short?)");
+  EXPECT_EQ(read_error(with_long("*ELEMENT_SOLID\n" + ints({15, 1}, 20))),
+            "t.k:16: *ELEMENT_SOLID: the element before this line lacks some of its cards");
+  // Fields that are no numbers, standard cards under a long keyword among
+  // them.
+  EXPECT_EQ(read_error("*NODE +\n" + long_node(1, "x", "0", "0")),
+            "t.k:2: node 1: expected a finite coordinate, found 'x'");
+  EXPECT_EQ(read_error("*NODE +\n" + long_node(1, "0", "0", "0", "                  &t")),
+            "t.k:2: node 1: expected its constraints TC and RC as whole numbers, found '&t'");
+  EXPECT_EQ(read_error("*NODE +\n" + node(1, "1.5", "0", "0")),
+            "t.k:2: node 1: expected a finite coordinate, found '1.5               0'");
+  EXPECT_EQ(read_error(with_long("*SET_NODE_LIST\n" + ints({1}, 20) + ints({1, 5}, 10))),
+            "t.k:16: expected a node id, a positive whole number, found '1         5'");
+  EXPECT_EQ(read_error(with_long("*ELEMENT_SOLID\n" + ints({15, 1, 1, 2, 3, 5, 5, 5, 5, 5}))),
+            "t.k:15: expected an element id (EID), a positive whole number, found '15       1'");
+  EXPECT_EQ(read_error(with_long("*PART\nbig\n" + ints({3000000000LL}, 20))),
+            "t.k:16: part id 3000000000 is past 2,147,483,647, the largest region tag");
+}
+
 TEST(LsdynaWrite, KeptDeckChangesOnlyMovedNodes) {
   const std::string deck = "*KEYWORD\n$ a comment\n*NODE\n" + node(1, "0.0", "0.0", "0.0") +
                            node(2, "1.0", "0.0", "0.0", "       0       7") + node(3, "0.0", "1.0", "0.0") +
@@ -486,17 +681,26 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE %\nmesh/part.k\n\nmesh/nodes.k\n" << kSolids << "*END\n";
   EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
             "*KEYWORD\n$*KEYWORD_ID\n$my model\n\n" + i10_written + kSolids + "*END\n");
-  // The long layout is refused on an *INCLUDE and on an included *KEYWORD.
+  // "*INCLUDE +" names files in the long layout, whose keywords are written
+  // with its mark; a file of the long layout in a standard deck otherwise
+  // asks for that mark.
+  std::ofstream(dir.file("mesh/nodes.k")) << kLongNodes;
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE +\nmesh/nodes.k\n" << kSolids << "*END\n";
-  EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
-            dir.file("main.k") +
-                ":2: the long layout (*INCLUDE +) is not read: save the deck in the standard "
-                "layout, or in the I10 layout for ids of 9 or 10 digits");
-  std::ofstream(dir.file("mesh/part.k")) << "*KEYWORD +\n";
+  const TetMesh long_included = read_lsdyna_file(dir.file("main.k"));
+  EXPECT_EQ(long_included.xyz, mesh.xyz);
+  EXPECT_EQ(write_text(long_included), "*KEYWORD\n*NODE +" + kLongNodes.substr(5) + kSolids + "*END\n");
+  EXPECT_EQ(read_text(write_text(long_included)).xyz, mesh.xyz);
+  std::ofstream(dir.file("mesh/part.k")) << "*KEYWORD LONG=Y\n";
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/part.k\n" << kNodes << kSolids << "*END\n";
-  EXPECT_NE(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k")
-                .find("part.k:1: the long layout (*KEYWORD +) is not read"),
-            std::string::npos);
+  EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
+            dir.file("mesh/part.k") +
+                ":1: an included file's *KEYWORD sets no layout in LS-DYNA, and this file is read in the standard "
+                "layout: mark its *INCLUDE (\"*INCLUDE +\") for a file in the long layout");
+  // A long deck's standard file.
+  std::ofstream(dir.file("mesh/nodes.k")) << kNodes;
+  std::ofstream(dir.file("main.k")) << "*KEYWORD LONG=Y\n*INCLUDE -\nmesh/nodes.k\n" << kLongSolids << "*END\n";
+  EXPECT_EQ(write_text(read_lsdyna_file(dir.file("main.k"))),
+            "*KEYWORD LONG=Y\n*NODE -" + kNodes.substr(5) + kLongSolids + "*END\n");
   std::ofstream(dir.file("main.k")) << "*KEYWORD\n*INCLUDE\nmesh/nod +\nes.k\n" << kSolids << "*END\n";
   std::ofstream(dir.file("mesh/nodes.k")) << kNodes << node(5, "1", "1", "1");
   EXPECT_EQ(testing::input_error_message([&] { read_lsdyna_file(dir.file("main.k")); }, "main.k"),
@@ -504,10 +708,11 @@ TEST(LsdynaIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
 }
 
 TEST(LsdynaRead, ErrorsNameFileAndLine) {
-  EXPECT_EQ(read_error("*KEYWORD\n*NODE +\n"),
-            "t.k:2: *NODE is in the long layout, which is not read: save the deck in the standard layout, or in the "
-            "I10 layout for ids of 9 or 10 digits");
-  EXPECT_NE(read_error("*KEYWORD LONG=Y\n").find("t.k:1: the long layout"), std::string::npos);
+  for (const char* asked : {"LONG=S", "LONG=K"})
+    EXPECT_EQ(read_error(std::string("*KEYWORD ") + asked + "\n" + kNodes + kSolids),
+              std::string("t.k:1: *KEYWORD ") + asked +
+                  " is not read: tetsmooth reads LONG=Y (every field 20 columns wide), the standard layout and "
+                  "I10=Y; save the deck in one of those");
   EXPECT_NE(read_error(with("*NODE_TRANSFORM\n1,2\n")).find("*NODE_TRANSFORM moves or merges nodes"),
             std::string::npos);
   EXPECT_NE(read_error(with("*INCLUDE_PATH\n/tmp\n")).find("*INCLUDE_PATH is not read"), std::string::npos);

@@ -83,30 +83,40 @@ bool real_field(std::string_view field, double& value) {
   return nastran::parse_real_field(field, value);
 }
 
-std::string coordinate_field(double value) {
+const char* layout_mark(Layout layout) {
+  return layout == Layout::Long ? "+" : layout == Layout::I10 ? "%" : "-";
+}
+
+const char* layout_name(Layout layout) {
+  return layout == Layout::Long ? "long" : layout == Layout::I10 ? "I10" : "standard";
+}
+
+std::string coordinate_field(double value, std::size_t width) {
   // Fortran reads ".5" and "1.5E2", but readers written in C may not
-  // (lsdyna-mesh-reader reads neither): C's style. 15 characters leave a
-  // blank before the field.
-  std::string field = nastran::real_field(value, 15, nastran::RealStyle::C);
-  field.insert(0, 16 - field.size(), ' ');
+  // (lsdyna-mesh-reader reads neither): C's style. One character fewer
+  // than the field leaves a blank before it.
+  std::string field = nastran::real_field(value, width - 1, nastran::RealStyle::C);
+  field.insert(0, width - field.size(), ' ');
   return field;
 }
 
-std::string free_coordinate(double value) { return std::string(trimmed(coordinate_field(value))); }
+std::string free_coordinate(double value, std::size_t width) {
+  return std::string(trimmed(coordinate_field(value, width)));
+}
 
 const std::vector<int>& node_widths(Layout layout) {
-  static const std::vector<int> standard{8, 16, 16, 16, 8, 8}, i10{10, 16, 16, 16, 10, 10};
-  return layout == Layout::I10 ? i10 : standard;
+  static const std::vector<int> standard{8, 16, 16, 16, 8, 8}, i10{10, 16, 16, 16, 10, 10}, wide(6, 20);
+  return layout == Layout::Long ? wide : layout == Layout::I10 ? i10 : standard;
 }
 
 const std::vector<int>& element_widths(Layout layout) {
-  static const std::vector<int> standard(10, 8), i10(10, 10);
-  return layout == Layout::I10 ? i10 : standard;
+  static const std::vector<int> standard(10, 8), i10(10, 10), wide(10, 20);
+  return layout == Layout::Long ? wide : layout == Layout::I10 ? i10 : standard;
 }
 
-const std::vector<int>& wide_widths() {
-  static const std::vector<int> widths(8, 10);
-  return widths;
+const std::vector<int>& wide_widths(Layout layout) {
+  static const std::vector<int> widths(8, 10), wide(8, 20);
+  return layout == Layout::Long ? wide : widths;
 }
 
 }  // namespace tetsmooth::lsdyna

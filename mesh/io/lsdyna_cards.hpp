@@ -10,8 +10,14 @@
 namespace tetsmooth::lsdyna {
 
 // Column layouts: standard (ids in 8 or 10 columns), I10 (ids in 10) and
-// long (every field in 20, which is not read).
+// long (every field narrower than 20 columns widened to 20, a card still on
+// one line: *NODE's six fields take 120 columns, a solid's ten 200; text
+// fields of 80, such as titles and file names, stay as they are).
 enum class Layout { Standard, I10, Long };
+// The mark after a keyword that asks for a layout ("-", "%", "+"), and the
+// layout's name in messages.
+const char* layout_mark(Layout layout);
+const char* layout_name(Layout layout);
 
 // A keyword line: "*NODE %" is {"NODE", I10, true}.
 struct Keyword {
@@ -43,21 +49,24 @@ bool int_field(std::string_view field, long long& value);
 // is 0.
 bool real_field(std::string_view field, double& value);
 
-// `value` in a coordinate's 16 columns, right-aligned after at least one
-// blank so that the fields stay apart to the eye and to readers that split
-// at blanks: nastran::real_field in 15 columns in C's style ("0.25",
-// "1.5E+20"): the shortest form that reads back exactly where it fits, else
-// at least 12 significant digits for sizes from 0.1 to 1e12 (13 but for
-// negative values below 1).
-std::string coordinate_field(double value);
+// `value` in a coordinate's `width` columns (16, or 20 in the long layout),
+// right-aligned after at least one blank so that the fields stay apart to
+// the eye and to readers that split at blanks: nastran::real_field in
+// width - 1 columns in C's style ("0.25", "1.5E+20"): the shortest form
+// that reads back exactly where it fits, else as many significant digits
+// as fit (in 16 columns at least 12 for sizes from 0.1 to 1e12, 13 but for
+// negative values below 1; in 20, 16 or more).
+std::string coordinate_field(double value, std::size_t width = 16);
 // coordinate_field without its blanks, for a free-format card, whose
 // fields may not be wider than in fixed columns.
-std::string free_coordinate(double value);
+std::string free_coordinate(double value, std::size_t width = 16);
 
-// The widths of the fields of *NODE and of the ten-field element cards.
+// The widths of the fields of *NODE (NID X Y Z TC RC) and of the ten-field
+// element cards, in `layout`.
 const std::vector<int>& node_widths(Layout layout);
 const std::vector<int>& element_widths(Layout layout);
-// The widths of the eight-field cards most other keywords use (10 columns).
-const std::vector<int>& wide_widths();
+// The widths of the eight-field cards most other keywords use (10 columns,
+// 20 in the long layout).
+const std::vector<int>& wide_widths(Layout layout);
 
 }  // namespace tetsmooth::lsdyna

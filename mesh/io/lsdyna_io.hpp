@@ -6,22 +6,25 @@
 //
 // Lines (lsdyna_cards.hpp): '*' in column 1 starts a keyword (case ignored),
 // '$' a comment. A data card is read in fixed columns, or split at commas
-// where it holds one (free format). Keywords take the standard layout, or
-// the I10 one (ids 10 columns wide) where "*KEYWORD I10=Y" or a '%' after
-// the keyword ("*NODE %") asks for it; the long layout ('+', LONG=Y or
-// LONG=S) is refused. *INCLUDE reads the file its next card names in place
-// (a relative path from the deck's directory; included_lines.hpp), in the
-// parent's layout or, after "*INCLUDE %" or "*INCLUDE -", in the layout
-// that mark names (an included file's own *KEYWORD sets no layout in
-// LS-DYNA: one that asks for another is refused). Nothing
+// where it holds one (free format). Keywords take the standard layout, the
+// I10 one (ids 10 columns wide) where "*KEYWORD I10=Y" or a '%' after the
+// keyword ("*NODE %") asks for it, or the long one (every field narrower
+// than 20 columns 20 wide, a card on one line; lsdyna_cards.hpp) where
+// "*KEYWORD LONG=Y" or a '+' asks for it; a '-' asks for the standard
+// layout. LONG=S and LONG=K are refused. *INCLUDE reads the file its next
+// card names in place (a relative path from the deck's directory;
+// included_lines.hpp), in the parent's layout or, after "*INCLUDE %",
+// "*INCLUDE +" or "*INCLUDE -", in the layout that mark names (an included
+// file's own *KEYWORD sets no layout in LS-DYNA: one that asks for another
+// is refused). Nothing
 // after *END is read: it is kept in the deck itself, and left out (with the
 // *END) in an included file, which *END ends alone.
 //
 // Reading (node and element ids are the deck's, kept as
 // FileExtras::node_tags and tet_element_tags):
 //  * *NODE: NID X Y Z TC RC, in columns of 8, 16, 16, 16, 8, 8 (10, 16,
-//    16, 16, 10, 10 in I10); a blank coordinate is 0. A node whose TC or RC
-//    is not 0 (a constraint) is pinned.
+//    16, 16, 10, 10 in I10, 20 each in the long layout); a blank coordinate
+//    is 0. A node whose TC or RC is not 0 (a constraint) is pinned.
 //  * *ELEMENT_SOLID (and its options TET4TOTET10, ORTHO and DOF, whose extra
 //    cards are skipped): EID PID N1..N8 on one card, or EID PID alone with
 //    N1..N10 on the next. The PID (part) is the region tag. Tets are N1 N2
@@ -54,22 +57,23 @@
 //  * Refused with the file's line: keywords that move, merge or renumber
 //    nodes (*NODE_TRANSFORM, *NODE_MERGE..., *INCLUDE_TRANSFORM,
 //    *PART_MOVE) or read files in ways not followed (the other *INCLUDE_
-//    keywords), the long layout, ids that are not positive, fields that
+//    keywords), LONG=S and LONG=K, ids that are not positive, fields that
 //    are not numbers (parameters such as &x are not evaluated), nodes and
 //    solids defined twice, part ids past 2,147,483,647, undefined nodes,
 //    4- and 10-node tets mixed, and decks without nodes or tets.
 //  * The deck is kept in FileExtras::raw_sections, in order: "lsdyna:text"
-//    (lines as read, each ended by '\n') and "lsdyna:nodes" or
-//    "lsdyna:nodes-i10" (the lines of a *NODE keyword's data, its layout in
-//    the name); then "lsdyna:deck" (kept_deck.hpp), "lsdyna:keywords" (the
+//    (lines as read, each ended by '\n') and "lsdyna:nodes",
+//    "lsdyna:nodes-i10" or "lsdyna:nodes-long" (the lines of a *NODE
+//    keyword's data, its layout in the name); then "lsdyna:deck" (kept_deck.hpp), "lsdyna:keywords" (the
 //    other keywords, for a note when another format drops them),
 //    "lsdyna:uncarried" (element keywords only LS-DYNA output keeps) and
 //    "lsdyna:includes" (the files *INCLUDE read).
 //
 // Writing: a mesh read from a deck is written as that deck, line for line,
 // but for the *NODE cards of nodes whose coordinates changed: the X, Y and
-// Z that changed in the card's own layout (16 columns each, lsdyna_cards.hpp:
-// coordinate_field; free-format cards in as many characters), their NID, TC,
+// Z that changed in the card's own layout (16 columns each, 20 in the long
+// layout, lsdyna_cards.hpp: coordinate_field; free-format cards in as many
+// characters), their NID, TC,
 // RC, anything after them and the coordinates that did not change as
 // read. Line ends become '\n', and included files are written in place of
 // their *INCLUDE, their *KEYWORD as a comment and their keywords marked

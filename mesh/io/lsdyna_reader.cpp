@@ -20,7 +20,7 @@ namespace lsdyna {
 namespace {
 
 // Keywords whose data cards name nodes in the given fields (10 columns
-// each), one card at a time.
+// each, 20 in the long layout), one card at a time.
 struct NodeFieldKeyword {
   const char* name;
   std::vector<int> fields;
@@ -108,9 +108,11 @@ void DeckReader::fail(const std::string& what) const { throw InputError(lines_.w
 
 void DeckReader::flush_kept() {
   if (kept_.empty()) return;
-  mesh_.extras.raw_sections.emplace_back(
-      !kept_nodes_ ? "lsdyna:text" : kept_layout_ == Layout::I10 ? "lsdyna:nodes-i10" : "lsdyna:nodes",
-      std::move(kept_));
+  const char* key = !kept_nodes_                      ? "lsdyna:text"
+                    : kept_layout_ == Layout::I10  ? "lsdyna:nodes-i10"
+                    : kept_layout_ == Layout::Long ? "lsdyna:nodes-long"
+                                                   : "lsdyna:nodes";
+  mesh_.extras.raw_sections.emplace_back(key, std::move(kept_));
   kept_.clear();
 }
 
@@ -150,20 +152,24 @@ void DeckReader::keyword(const std::string& line) {
   title_pending_ = head_pending_ = false;
   part_pid_card_ = 0;
   const std::string& name = keyword_;
-  const auto refuse_long = [&](const std::string& how) {
-    fail("the long layout (" + how +
-         ") is not read: save the deck in the standard layout, or in the I10 layout for ids of 9 or 10 digits");
-  };
   // An included file's *KEYWORD and its cards are written as comments
   // (written_inline).
   inline_comments_ = false;
   if (name == "KEYWORD" || name == "KEYWORD_ID") {
     const std::string options = upper_case(k.rest);
-    for (const char* key : {"LONG=Y", "LONG=S", "LONG=K"})
-      if (options.find(key) != std::string::npos) refuse_long(key);
+    // LONG=Y reads every keyword in the long layout (its fields, ids among
+    // them, 20 columns wide: I10=Y beside it changes nothing). LONG=S and
+    // LONG=K also set the layout of the files LS-DYNA writes, and no source
+    // at hand said for certain which layout they read the input in: refused,
+    // since a guess could misread the deck.
+    for (const char* key : {"LONG=S", "LONG=K"})
+      if (options.find(key) != std::string::npos)
+        fail(std::string("*KEYWORD ") + key +
+             " is not read: tetsmooth reads LONG=Y (every field 20 columns wide), the standard layout and "
+             "I10=Y; save the deck in one of those");
     Layout asked = options.find("I10=Y") != std::string::npos ? Layout::I10 : deck_layout_;
+    if (options.find("LONG=Y") != std::string::npos) asked = Layout::Long;
     if (k.marked) asked = k.layout;
-    if (asked == Layout::Long) refuse_long("*" + name + " +");
     inline_comments_ = lines_.depth() > 1;
     if (lines_.depth() == 1) {
       deck_keyword_ = true;
@@ -173,9 +179,8 @@ void DeckReader::keyword(const std::string& line) {
       // its *INCLUDE's mark names, whatever the file's *KEYWORD says; read
       // otherwise, the file would mean something else to it.
       fail("an included file's *KEYWORD sets no layout in LS-DYNA, and this file is read in the " +
-           std::string(deck_layout_ == Layout::I10 ? "I10" : "standard") + " layout: mark its *INCLUDE (\"*INCLUDE " +
-           (asked == Layout::I10 ? "%" : "-") + "\") for a file in the " + (asked == Layout::I10 ? "I10" : "standard") +
-           " layout");
+           std::string(layout_name(deck_layout_)) + " layout: mark its *INCLUDE (\"*INCLUDE " + layout_mark(asked) +
+           "\") for a file in the " + layout_name(asked) + " layout");
     }
     return;
   }
@@ -185,9 +190,8 @@ void DeckReader::keyword(const std::string& line) {
     return;
   }
   if (name == "INCLUDE") {
-    if (layout_ == Layout::Long) refuse_long("*INCLUDE +");
     section_ = Section::Include;
-    include_layout_ = layout_;  // "*INCLUDE %": the files named are in the I10 layout
+    include_layout_ = layout_;  // "*INCLUDE %" ("+"): the files named are in the I10 (long) layout
     include_name_.clear();
     return;
   }
@@ -263,9 +267,6 @@ void DeckReader::keyword(const std::string& line) {
     head_pending_ = true;
     title_pending_ = name.size() > 6 && name.compare(name.size() - 6, 6, "_TITLE") == 0;
   }
-  if (section_ != Section::Other && layout_ == Layout::Long)
-    fail("*" + name + " is in the long layout, which is not read: save the deck in the standard layout, or in the "
-                      "I10 layout for ids of 9 or 10 digits");
   if (section_ == Section::PinOnly) add_once(uncarried_, name);
   if (section_ == Section::Other && names_nodes(name)) add_once(unread_, name);
   // The keywords other formats do not write (elements that only pin among
@@ -429,7 +430,7 @@ void DeckReader::part(const std::string& line) {
     return;
   }
   if (part_pid_card_ == 1) {
-    const Card card = card_of(line, wide_widths());
+    const Card card = card_of(line, wide_widths(layout_));
     const int pid = pid_field(card[0]);
     if (!part_heading_.empty()) part_names_.emplace_back(pid, part_heading_);
   }
@@ -462,7 +463,7 @@ std::string DeckReader::written_inline(const std::string& line) const {
   if (k.name == "KEYWORD" || k.name == "KEYWORD_ID") return "$" + line;
   if (k.marked || layout_ == outer_layouts_.front().deck) return line;
   const std::size_t name_end = std::min(line.find_first_of(" \t\r"), line.size());
-  return line.substr(0, name_end) + (layout_ == Layout::I10 ? " %" : " -") + line.substr(name_end);
+  return line.substr(0, name_end) + " " + layout_mark(layout_) + line.substr(name_end);
 }
 
 void DeckReader::include(const std::string& line) {
@@ -517,14 +518,14 @@ void DeckReader::data(const std::string& line) {
       } else if (head_pending_) {
         head_pending_ = false;
       } else if (section_ == Section::Segments) {
-        const Card card = card_of(line, wide_widths());
+        const Card card = card_of(line, wide_widths(layout_));
         node_list(Card{{card[0], card[1], card[2], card[3]}, card.free}, false);
       } else {
-        node_list(card_of(line, wide_widths()), section_ == Section::NodeRanges);
+        node_list(card_of(line, wide_widths(layout_)), section_ == Section::NodeRanges);
       }
       break;
     case Section::NodeFields:
-      if (!blank) pin_fields(card_of(line, wide_widths()), node_fields_);
+      if (!blank) pin_fields(card_of(line, wide_widths(layout_)), node_fields_);
       break;
   }
   keep(inline_comments_ ? "$" + line : line, false);

@@ -22,15 +22,15 @@ using lsdyna::Layout;
 
 // Ids and PIDs of the standard layout have at most 8 digits.
 constexpr long long kLargestId = 99999999;
-constexpr std::size_t kCoordinateWidth = 16;
 constexpr MidsidePlaces kMidsides = {4, 5, 6, 7, 8, 9};
 
 // --- A deck read with the mesh --------------------------------------------
 
 // One *NODE card, its coordinates rewritten where they changed (the text of
-// one that did not change is kept).
+// one that did not change is kept), each in its layout's width.
 std::string node_card(const std::string& line, Layout layout, const double* xyz) {
   const std::vector<int>& widths = lsdyna::node_widths(layout);
+  const auto width = static_cast<std::size_t>(widths[1]);
   const lsdyna::Card card = lsdyna::card_of(line, widths);
   double was[3];
   bool moved = false;
@@ -43,7 +43,7 @@ std::string node_card(const std::string& line, Layout layout, const double* xyz)
     std::vector<std::string> fields(card.fields.begin(), card.fields.end());
     fields.resize(std::max<std::size_t>(fields.size(), 4));
     for (std::size_t c = 0; c < 3; ++c)
-      if (was[c] != xyz[c]) fields[1 + c] = lsdyna::free_coordinate(xyz[c]);
+      if (was[c] != xyz[c]) fields[1 + c] = lsdyna::free_coordinate(xyz[c], width);
     std::string out;
     for (std::size_t k = 0; k < fields.size(); ++k) out += (k == 0 ? "" : ",") + fields[k];
     return out;
@@ -52,13 +52,13 @@ std::string node_card(const std::string& line, Layout layout, const double* xyz)
   std::string out = line.substr(0, std::min(line.size(), id_width));
   out.resize(id_width, ' ');
   for (std::size_t c = 0; c < 3; ++c) {
-    const std::size_t at = id_width + c * kCoordinateWidth;
-    std::string field = was[c] == xyz[c] && at < line.size() ? line.substr(at, kCoordinateWidth)
-                                                             : lsdyna::coordinate_field(xyz[c]);
-    if (field.size() < kCoordinateWidth) field.insert(0, kCoordinateWidth - field.size(), ' ');
+    const std::size_t at = id_width + c * width;
+    std::string field =
+        was[c] == xyz[c] && at < line.size() ? line.substr(at, width) : lsdyna::coordinate_field(xyz[c], width);
+    if (field.size() < width) field.insert(0, width - field.size(), ' ');
     out += field;
   }
-  const std::size_t rest = id_width + 3 * kCoordinateWidth;
+  const std::size_t rest = id_width + 3 * width;
   if (line.size() > rest) out += line.substr(rest);
   return out;
 }
@@ -67,8 +67,10 @@ void write_kept_deck(const TetMesh& mesh, std::ostream& out) {
   std::size_t next = 0;
   for (const auto& [key, body] : mesh.extras.raw_sections) {
     if (key == "lsdyna:text") out << body;
-    if (key != "lsdyna:nodes" && key != "lsdyna:nodes-i10") continue;
-    const Layout layout = key == "lsdyna:nodes-i10" ? Layout::I10 : Layout::Standard;
+    if (key != "lsdyna:nodes" && key != "lsdyna:nodes-i10" && key != "lsdyna:nodes-long") continue;
+    const Layout layout = key == "lsdyna:nodes-i10"    ? Layout::I10
+                          : key == "lsdyna:nodes-long" ? Layout::Long
+                                                       : Layout::Standard;
     std::istringstream lines(body);
     for (std::string line; std::getline(lines, line);) {
       if (line.empty() || line[0] == '$' || trimmed(line).empty()) {

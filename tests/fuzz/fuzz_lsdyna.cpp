@@ -1,8 +1,8 @@
 // libFuzzer target: the LS-DYNA keyword deck reader and writer. What the
 // reader accepts must read back the same from the deck written back as read;
 // the deck with some nodes moved (their *NODE cards rewritten, 13
-// significant digits in fixed columns where the exponent has two digits,
-// 8 or more with three) and a new deck of the mesh must read back with the
+// significant digits in 16 columns where the exponent has two digits, 8 or
+// more with three, and more in the long layout's 20) and a new deck of the mesh must read back with the
 // same tets (up to turning) and pins, and coordinates within that rounding.
 // Reading back what the writer wrote must never fail.
 #include "fuzz_reader.hpp"

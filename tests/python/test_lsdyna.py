@@ -5,8 +5,10 @@ the PyAnsys project; Debian has none, so scripts/install_deps.sh puts it in
 this file's own (Fortran's rules: fixed columns, free format at commas).
 
 lsdyna-mesh-reader reads only the standard layout, with solids on one card:
-it hangs on free-format (comma) *NODE cards and misreads the I10 layout and
-two-card solids, so it is never given those, and it always runs in a child
+it hangs on free-format (comma) *NODE cards and on the long layout
+("*KEYWORD LONG=Y", 20-column fields), and misreads the I10 layout and
+two-card solids, so it is never given those (tests/test_io_lsdyna.cpp reads
+and writes back the long layout), and it always runs in a child
 process with a time limit (ReaderDeck). It also takes a coordinate that
 starts with its point (".5", which Fortran reads) for garbage, and the
 character after an exponent's letter for its sign ("1.35E2" reads as
@@ -60,7 +62,8 @@ What is checked, and why:
   (the rest of each deck as it is) give real decks to smooth: birdball's
   *set_node_list_generate (free format), *INITIAL_VELOCITY_NODE and TC/RC
   pin its nodes.
-- Refusals (the long layout, *NODE_TRANSFORM, *INCLUDE_PATH, undefined and
+- Refusals (standard cards under the long layout, LONG=S, *NODE_TRANSFORM,
+  *INCLUDE_PATH, undefined and
   duplicate nodes, and more) exit 3 with one line naming file:line, write
   nothing and leave an existing output as it was. The help and the message
   for an unknown extension name the format.
@@ -1363,11 +1366,14 @@ class Refusals(DeckCase):
     def cases(self):
         """{name: (lines, 1-based line the message must name, fragments)}."""
         node, solid, end = self.node, self.solid, self.end
+        part = self.lines.index("*PART")
         first_tet = self.lines[solid + 1]
         ten = two_card_solid(99, 1, list(range(1, 11)))
         return {
-            "long-node": (self.edited(node, ["*NODE +"]), node + 1, ["long layout"]),
-            "long-keyword": (self.edited(1, ["*KEYWORD LONG=Y"]), 2, ["long layout"]),
+            # Standard cards read in 20-column fields run into each other.
+            "long-node": (self.edited(node, ["*NODE +"]), node + 2, ["node id"]),
+            "long-keyword": (self.edited(1, ["*KEYWORD LONG=Y"]), part + 3, ["part id"]),
+            "long-s": (self.edited(1, ["*KEYWORD LONG=S"]), 2, ["LONG=S"]),
             "node-transform": (self.before_end(["*NODE_TRANSFORM", ints_card([1, 1])]), end + 1, ["NODE_TRANSFORM"]),
             "node-merge": (self.before_end(["*NODE_MERGE", "       0.1"]), end + 1, ["NODE_MERGE"]),
             "part-move": (self.before_end(["*PART_MOVE", ints_card([1]) + "       1.0"]), end + 1, ["PART_MOVE"]),

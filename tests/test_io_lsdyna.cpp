@@ -418,10 +418,10 @@ TEST(LsdynaLong, ReadsAsTheStandardLayoutDoes) {
     EXPECT_EQ(mesh.extras.node_tags[0], 123456789012) << form;
   }
   // 10-node tets on their second card of 200 columns.
-  const TetMesh ten = read_text(
-      nodes + long_node(5, ".5", "0", "0") + long_node(6, ".5", ".5", "0") + long_node(7, "0", ".5", "0") +
-      long_node(8, "0", "0", ".5") + long_node(9, ".5", "0", ".5") + long_node(10, "0", ".5", ".5") +
-      "*ELEMENT_SOLID +\n" + ints({1, 7}, 20) + ints({123456789012, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 20));
+  const TetMesh ten =
+      read_text(nodes + long_node(5, ".5", "0", "0") + long_node(6, ".5", ".5", "0") + long_node(7, "0", ".5", "0") +
+                long_node(8, "0", "0", ".5") + long_node(9, ".5", "0", ".5") + long_node(10, "0", ".5", ".5") +
+                "*ELEMENT_SOLID +\n" + ints({1, 7}, 20) + ints({123456789012, 2, 3, 4, 5, 6, 7, 8, 9, 10}, 20));
   EXPECT_EQ(ten.midsides, (std::vector<index_t>{4, 5, 6, 7, 8, 9}));
 }
 
@@ -476,8 +476,7 @@ TEST(LsdynaLong, WrittenBackWithOnlyMovedCoordinatesChanged) {
                            long_node(2, "1.0", "0.0", "0.0", tail.substr(0, tail.size() - 1).c_str()) +
                            long_node(3, "0.0", "1.0", "0.0") + "$# a comment among the nodes\n" +
                            long_node(4, "0.0", "0.0", "1.0") + "5,0.3,0.2,0.1,0,0\n" + kLongSolids +
-                           "*MAT_ELASTIC\n1,7.8e-9,210000.,0.3\n*NODE -\n" + node(6, "2", "2", "2") +
-                           "*END\nafter\n";
+                           "*MAT_ELASTIC\n1,7.8e-9,210000.,0.3\n*NODE -\n" + node(6, "2", "2", "2") + "*END\nafter\n";
   TetMesh mesh = read_text(deck);
   ASSERT_EQ(mesh.num_nodes(), 6u);
   EXPECT_EQ(write_text(mesh), deck);

@@ -83,9 +83,7 @@ bool real_field(std::string_view field, double& value) {
   return nastran::parse_real_field(field, value);
 }
 
-const char* layout_mark(Layout layout) {
-  return layout == Layout::Long ? "+" : layout == Layout::I10 ? "%" : "-";
-}
+const char* layout_mark(Layout layout) { return layout == Layout::Long ? "+" : layout == Layout::I10 ? "%" : "-"; }
 
 const char* layout_name(Layout layout) {
   return layout == Layout::Long ? "long" : layout == Layout::I10 ? "I10" : "standard";

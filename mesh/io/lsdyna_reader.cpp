@@ -108,7 +108,7 @@ void DeckReader::fail(const std::string& what) const { throw InputError(lines_.w
 
 void DeckReader::flush_kept() {
   if (kept_.empty()) return;
-  const char* key = !kept_nodes_                      ? "lsdyna:text"
+  const char* key = !kept_nodes_                   ? "lsdyna:text"
                     : kept_layout_ == Layout::I10  ? "lsdyna:nodes-i10"
                     : kept_layout_ == Layout::Long ? "lsdyna:nodes-long"
                                                    : "lsdyna:nodes";

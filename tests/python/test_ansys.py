@@ -56,7 +56,8 @@ import unittest
 import meshio
 import numpy as np
 
-from test_cli import EXIT_INPUT, CliTestCase, kuhn_lattice, quality_json, radius_ratio, run, signed_volume6
+from test_cli import (EXIT_INPUT, CliTestCase, RefusedDecks, kuhn_lattice, quality_json, radius_ratio, run,
+                      signed_volume6)
 from test_independent_readers import GmshScratchCase, boundary_nodes, gmsh_session, two_layers
 
 try:
@@ -760,11 +761,12 @@ class NewDecks(GmshScratchCase):
 
 # --- Refusals ----------------------------------------------------------------------------
 
-class Refusals(AnsysCase):
-    """Decks tetsmooth must refuse: exit 3, one line naming the file and
-    line, no output, an existing output as it was."""
+class Refusals(RefusedDecks, AnsysCase):
+    """Decks tetsmooth must refuse (RefusedDecks runs them): the lattice
+    deck below, each case with one part of it spoilt."""
 
     SCRATCH_PREFIX = "tetsmooth_test_ansys_bad_"
+    SUFFIX = ".cdb"
 
     @classmethod
     def setUpClass(cls):
@@ -778,10 +780,6 @@ class Refusals(AnsysCase):
         cls.first_node = cls.lines.index("(3i9,6e21.13e3)") + 1  # index of the first NBLOCK record
         cls.first_element = cls.lines.index("(19i9)") + 1
         cls.finish = len(cls.lines) - 1
-
-    def edited(self, index, new):
-        """The deck with line `index` replaced by the lines `new`."""
-        return self.lines[:index] + list(new) + self.lines[index + 1:]
 
     def cases(self):
         """{name: (lines, 1-based line the message must name, fragments)}."""
@@ -818,21 +816,6 @@ class Refusals(AnsysCase):
             "eblock-reals": (self.edited(self.first_element - 1, ["(19i9,2e21.13)"]), self.first_element,
                              ["EBLOCK", "integers"]),
         }
-
-    def test_the_deck_itself_is_read(self):
-        src = self.write("good.cdb", self.lines)
-        self.assertEqual(quality_json(src)["input"]["tets"], len(self.tets))
-
-    def test_bad_decks_are_refused_and_leave_the_output_alone(self):
-        for name, (lines, line, fragments) in self.cases().items():
-            with self.subTest(deck=name):
-                src = self.write(name + ".cdb", lines)
-                out = self.path("never.cdb")
-                proc = run("smooth", src, "-o", out, "--device", "cpu", check=False)
-                self.assert_one_error_line(proc, EXIT_INPUT, f"{src}:{line}:", *fragments)
-                self.assertFalse(os.path.exists(out))
-                self.assert_refused_output_kept(("smooth", src, "-o", out, "--device", "cpu"), out, "an older deck\n")
-        self.assertEqual(sorted(f for f in os.listdir(self.tmp) if f.startswith("never")), [])
 
 
 if __name__ == "__main__":

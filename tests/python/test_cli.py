@@ -138,6 +138,37 @@ class CliTestCase(unittest.TestCase):
         return proc
 
 
+class RefusedDecks:
+    """The refusals of a deck format, for a CliTestCase whose class sets
+    `lines` (a good deck, a list of lines), SUFFIX (its extension) and
+    `cases()`: {name: (lines, 1-based line the message must name, fragments
+    it must hold)}. Each bad deck exits EXIT_INPUT with one error line
+    naming the file and line, writes no output and leaves an existing one
+    as it was."""
+
+    SUFFIX = None
+
+    def edited(self, index, new):
+        """The deck with line `index` replaced by the lines `new`."""
+        return self.lines[:index] + list(new) + self.lines[index + 1:]
+
+    def test_the_deck_itself_is_read(self):
+        # So that each refusal below is of the line a case changed.
+        src = self.write("good" + self.SUFFIX, self.lines)
+        self.assertEqual(quality_json(src)["input"]["tets"], len(self.tets))
+
+    def test_bad_decks_are_refused_and_leave_the_output_alone(self):
+        for name, (lines, line, fragments) in self.cases().items():
+            with self.subTest(deck=name):
+                src = self.write(name + self.SUFFIX, lines)
+                out = self.path("never" + self.SUFFIX)
+                proc = run("smooth", src, "-o", out, "--device", "cpu", check=False)
+                self.assert_one_error_line(proc, EXIT_INPUT, f"{src}:{line}:", *fragments)
+                self.assertFalse(os.path.exists(out))
+                self.assert_refused_output_kept(("smooth", src, "-o", out, "--device", "cpu"), out, "an older deck\n")
+        self.assertEqual(sorted(f for f in os.listdir(self.tmp) if f.startswith("never")), [])
+
+
 class GenerateSmoothQuality(CliTestCase):
     @classmethod
     def setUpClass(cls):

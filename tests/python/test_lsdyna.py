@@ -79,7 +79,8 @@ import unittest
 import meshio
 import numpy as np
 
-from test_cli import EXIT_INPUT, EXIT_USAGE, CliTestCase, kuhn_lattice, quality_json, radius_ratio, run, signed_volume6
+from test_cli import (EXIT_INPUT, EXIT_USAGE, CliTestCase, RefusedDecks, kuhn_lattice, quality_json, radius_ratio, run,
+                      signed_volume6)
 from test_independent_readers import GmshScratchCase, boundary_nodes, gmsh_session, two_layers
 
 try:
@@ -1336,11 +1337,12 @@ class ExampleDecks(DeckCase):
 
 # --- Refusals ------------------------------------------------------------------------------
 
-class Refusals(DeckCase):
-    """Decks tetsmooth must refuse: exit 3, one line naming the file and
-    line, no output, an existing output as it was."""
+class Refusals(RefusedDecks, DeckCase):
+    """Decks tetsmooth must refuse (RefusedDecks runs them): the lattice
+    deck below, each case with one part of it spoilt."""
 
     SCRATCH_PREFIX = "tetsmooth_test_lsdyna_bad_"
+    SUFFIX = ".k"
 
     @classmethod
     def setUpClass(cls):
@@ -1355,10 +1357,6 @@ class Refusals(DeckCase):
         cls.node = cls.lines.index("*NODE")  # indices of the keywords
         cls.solid = cls.lines.index("*ELEMENT_SOLID")
         cls.end = len(cls.lines) - 1
-
-    def edited(self, index, new):
-        """The deck with line `index` replaced by the lines `new`."""
-        return self.lines[:index] + list(new) + self.lines[index + 1:]
 
     def before_end(self, new):
         return self.edited(self.end, list(new) + ["*END"])
@@ -1398,21 +1396,6 @@ class Refusals(DeckCase):
             "cut-solid": (self.lines[:-1] + two_card_solid(99, 1, [])[:1], end + 1, ["ends inside"]),
             "short-solid": (self.edited(end, two_card_solid(99, 1, [])[:1] + ["*END"]), end + 2, ["lacks"]),
         }
-
-    def test_the_deck_itself_is_read(self):
-        src = self.write("good.k", self.lines)
-        self.assertEqual(quality_json(src)["input"]["tets"], len(self.tets))
-
-    def test_bad_decks_are_refused_and_leave_the_output_alone(self):
-        for name, (lines, line, fragments) in self.cases().items():
-            with self.subTest(deck=name):
-                src = self.write(name + ".k", lines)
-                out = self.path("never.k")
-                proc = run("smooth", src, "-o", out, "--device", "cpu", check=False)
-                self.assert_one_error_line(proc, EXIT_INPUT, f"{src}:{line}:", *fragments)
-                self.assertFalse(os.path.exists(out))
-                self.assert_refused_output_kept(("smooth", src, "-o", out, "--device", "cpu"), out, "an older deck\n")
-        self.assertEqual(sorted(f for f in os.listdir(self.tmp) if f.startswith("never")), [])
 
 
 class PartNames(DeckChecks, GmshScratchCase):

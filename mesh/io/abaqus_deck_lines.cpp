@@ -19,11 +19,11 @@ struct Known {
 const std::vector<Known>& known_keywords() {
   static const std::vector<Known> known = {
       {"HEADING", {}},       {"NODE", {"NSET", "SYSTEM", "INPUT"}}, {"ELEMENT", {"TYPE", "ELSET", "INPUT"}},
-      {"NSET", {"NSET", "ELSET", "GENERATE", "INPUT"}}, {"ELSET", {"ELSET", "GENERATE", "INPUT"}},
+      {"NSET", {"NSET", "ELSET", "GENERATE", "INSTANCE", "INPUT"}}, {"ELSET", {"ELSET", "GENERATE", "INSTANCE", "INPUT"}},
       {"SOLIDSECTION", {"ELSET", "MATERIAL"}}, {"BOUNDARY", {"INPUT"}}, {"CLOAD", {"INPUT"}}, {"CFLUX", {"INPUT"}},
-      {"CFLOW", {"INPUT"}},  {"EQUATION", {"INPUT"}}, {"MPC", {"INPUT"}}, {"INCLUDE", {"INPUT"}}, {"PART", {}},
-      {"ASSEMBLY", {}},
-      {"INSTANCE", {}},      {"NGEN", {}},       {"NFILL", {}},          {"NCOPY", {}}, {"NMAP", {}},
+      {"CFLOW", {"INPUT"}},  {"EQUATION", {"INPUT"}}, {"MPC", {"INPUT"}}, {"INCLUDE", {"INPUT"}}, {"PART", {"NAME"}},
+      {"ENDPART", {}},       {"ASSEMBLY", {"NAME"}}, {"ENDASSEMBLY", {}}, {"INSTANCE", {"NAME", "PART", "INSTANCE"}},
+      {"ENDINSTANCE", {}},      {"NGEN", {}},       {"NFILL", {}},          {"NCOPY", {}}, {"NMAP", {}},
       {"SYSTEM", {}},        {"ELGEN", {}},      {"ELCOPY", {}},
   };
   return known;

@@ -20,10 +20,6 @@ namespace tetsmooth {
 namespace abaqus {
 namespace {
 
-constexpr const char* kParts =
-    "decks of parts and assemblies are not read (their node and element numbers belong to a part, placed by "
-    "*INSTANCE): write the input file without them (Abaqus/CAE: Model > Edit Attributes > Do not use parts and "
-    "assemblies in input files)";
 constexpr const char* kNodeGeneration = "node generation is not read: give each node its own *NODE line";
 constexpr const char* kElementGeneration = "element generation is not read: give each element its own *ELEMENT line";
 
@@ -32,9 +28,6 @@ struct Refused {
   const char* why;
 };
 constexpr Refused kRefused[] = {
-    {"PART", kParts},
-    {"ASSEMBLY", kParts},
-    {"INSTANCE", kParts},
     {"NGEN", kNodeGeneration},
     {"NFILL", kNodeGeneration},
     {"NCOPY", kNodeGeneration},
@@ -76,6 +69,7 @@ bool finite_real(std::string_view field, double& value) {
 
 void DeckReader::flush_nodes() {
   if (node_run_ == 0) return;
+  node_runs_.emplace_back(mesh_.extras.raw_sections.size() + 1, mesh_.num_nodes() - node_run_);
   mesh_.extras.raw_sections.emplace_back("abaqus:text", std::move(text_));
   mesh_.extras.raw_sections.emplace_back("abaqus:nodes", std::to_string(node_run_));
   text_.clear();
@@ -100,12 +94,13 @@ void DeckReader::note_elset(const std::string& name, const std::string& written)
 
 std::uint32_t DeckReader::elset_index(const std::string* name) {
   if (name == nullptr) return 0;
-  elset_name_ = set_name(*name);
-  note_elset(elset_name_, *name);
+  elset_name_ = set_key(scope_, set_name(*name));
+  const std::string written = set_written(scope_, unquoted(*name));
+  note_elset(elset_name_, written);
   const auto [it, added] = elset_numbers_.try_emplace(elset_name_, static_cast<std::uint32_t>(elset_names_.size()) + 1);
   if (added) {
     elset_names_.push_back(elset_name_);
-    elset_written_.push_back(unquoted(*name));
+    elset_written_.push_back(written);
   }
   return it->second;
 }
@@ -121,6 +116,9 @@ void DeckReader::finish_block() {
                                                              std::to_string(pending_.size() - 1) + " of its " +
                                                              std::to_string(type_.nodes) + " nodes");
       if (elset_ != 0) sets_.add_element_run(elset_name_, block_first_, element_ids_.size() - block_first_);
+      break;
+    case Block::Instance:
+      finish_instance();
       break;
     case Block::Set:
       if (set_of_nodes_)
@@ -152,29 +150,49 @@ void DeckReader::start_set(const Keyword& kw) {
   const char* key = set_of_nodes_ ? "NSET" : "ELSET";
   const std::string* name = kw.param(key);
   if (name == nullptr || name->empty()) lines_.fail("*" + std::string(key) + " without " + key + "=");
-  set_name_ = set_name(*name);
-  if (!set_of_nodes_) note_elset(set_name_, *name);
+  set_name_ = set_key(scope_, set_name(*name));
+  set_scope_ = scope_;
+  // In the assembly, INSTANCE= gives the instance whose part's numbers and
+  // sets the data lines name.
+  if (const std::string* instance = kw.param("INSTANCE"); instance != nullptr) {
+    if (level_ != Level::Assembly) lines_.fail("*" + kw.name + ", INSTANCE= outside *ASSEMBLY");
+    const std::string wanted = set_name(*instance);
+    const auto it = std::find_if(instances_.begin(), instances_.end(), [&](const Instance& i) { return i.name == wanted; });
+    if (it == instances_.end())
+      lines_.fail("*" + kw.name + ", INSTANCE=" + text_excerpt(unquoted(*instance)) + ": no *INSTANCE above has that name");
+    set_scope_ = it->part + 1;
+  }
+  if (!set_of_nodes_) note_elset(set_name_, set_written(scope_, unquoted(*name)));
   generate_ = kw.param("GENERATE") != nullptr;
   part_.where = lines_.where();
   // *NSET, ELSET: the data lines name element sets, whose nodes the set
   // holds (ELSET=name, as some writers put it, names one more).
   const std::string* elset = set_of_nodes_ ? kw.param("ELSET") : nullptr;
   lists_elsets_ = elset != nullptr;
-  if (elset != nullptr && !elset->empty()) part_.elsets.push_back(set_name(*elset));
+  if (elset != nullptr && !elset->empty()) part_.elsets.push_back(set_in_data(*elset));
   block_ = Block::Set;
+}
+
+std::string DeckReader::set_in_data(std::string_view field) const {
+  if (set_scope_ != 0) return set_key(set_scope_, set_name(field));
+  const Ref ref = reference(field, 0, lines_.where());
+  if (ref.is_node) lines_.fail("expected a set name, found " + quoted_token(field));
+  return ref.set;
 }
 
 void DeckReader::keyword() {
   finish_block();
   const Keyword& kw = lines_.keyword();
+  structure_keyword(kw);
   for (const Refused& r : kRefused)
     if (kw.name == r.keyword) lines_.fail("*" + kw.name + ": " + r.why);
+  if (kw.name == "NODE" || kw.name == "ELEMENT") check_mesh_level(kw);
   if (kw.name == "NODE") {
     if (const std::string* system = kw.param("SYSTEM"); system != nullptr && normalized(*system) != "R")
       lines_.fail("*NODE, SYSTEM=" + text_excerpt(*system) +
                   ": nodes in cylindrical or spherical coordinates are not read: give them in rectangular ones");
     const std::string* nset = kw.param("NSET");
-    node_set_ = nset == nullptr ? "" : set_name(*nset);
+    node_set_ = nset == nullptr ? "" : set_key(scope_, set_name(*nset));
     block_first_ = mesh_.num_nodes();
     block_ = Block::Node;
   } else if (kw.name == "ELEMENT") {
@@ -184,7 +202,7 @@ void DeckReader::keyword() {
   } else if (kw.name == "SOLIDSECTION") {
     const std::string* elset = kw.param("ELSET");
     if (elset == nullptr || elset->empty()) lines_.fail("*SOLID SECTION without ELSET=");
-    sections_.push_back(Section{set_name(*elset), lines_.where(), unquoted(*elset)});
+    sections_.push_back(Section{set_key(scope_, set_name(*elset)), lines_.where(), set_written(scope_, unquoted(*elset))});
   }
   for (const PinKeyword& p : kPinKeywords)
     if (kw.name == p.keyword) {
@@ -214,6 +232,7 @@ void DeckReader::node_line() {
     lines_.fail("node " + std::to_string(id) + " has " + std::to_string(fields.size()) +
                 " fields: a node line is 'number, x, y, z' (directions after the coordinates are not read)");
   mesh_.extras.node_tags.push_back(id);
+  node_keys_.push_back(key(scope_, id));
   node_marks_.push_back(lines_.mark());
   for (std::size_t c = 1; c <= 3; ++c) {
     double v = 0;  // an omitted coordinate is 0
@@ -227,6 +246,8 @@ void DeckReader::node_line() {
 void DeckReader::add_element() {
   const long long id = pending_.front();
   element_ids_.push_back(id);
+  element_keys_.push_back(key(scope_, id));
+  for (std::size_t k = 1; k < pending_.size(); ++k) pending_[k] = key(scope_, pending_[k]);
   element_marks_.push_back(pending_mark_);
   if (type_.kind == "tetra" || type_.kind == "tetra10") {
     if (tet_nodes_each_ != 0 && tet_nodes_each_ != type_.nodes)
@@ -280,21 +301,37 @@ void DeckReader::set_line() {
       if (!positive_integer(fields[i], range[i]))
         lines_.fail("expected a positive number in a GENERATE line, found " + quoted_token(fields[i]));
     if (range[1] < range[0]) lines_.fail("a GENERATE range that ends before it starts");
+    range[0] = number_key(range[0]);
+    range[1] = number_key(range[1]);
     part_.ranges.push_back(range);
     return;
   }
   for (std::string_view field : fields) {
     if (field.empty()) continue;
     long long id = 0;
-    if (lists_elsets_)
-      part_.elsets.push_back(set_name(field));
-    else if (!parse_integer(field, id))
-      part_.names.push_back(set_name(field));
-    else if (id <= 0)
+    if (lists_elsets_) {
+      part_.elsets.push_back(set_in_data(field));
+    } else if (!parse_integer(field, id)) {
+      // "Instance.number" names an instance's item from the assembly.
+      const Ref ref = set_scope_ == 0 ? reference(field, 0, lines_.where()) : Ref{false, 0, ""};
+      if (ref.is_node)
+        part_.ids.push_back(ref.key);
+      else
+        part_.names.push_back(set_in_data(field));
+    } else if (id <= 0) {
       lines_.fail("expected a positive number or a set name, found " + quoted_token(field));
-    else
-      part_.ids.push_back(id);
+    } else {
+      part_.ids.push_back(number_key(id));
+    }
   }
+}
+
+long long DeckReader::number_key(long long number) const {
+  if (set_scope_ == 0 && has_parts())
+    lines_.fail("number " + std::to_string(number) +
+                " in a set outside parts: give the set's INSTANCE=, or name the item as Instance." +
+                std::to_string(number));
+  return key(set_scope_, number);
 }
 
 void DeckReader::pin_line() {
@@ -302,7 +339,7 @@ void DeckReader::pin_line() {
   const auto add = [&](std::string_view field) {
     long long zero = 0;  // *MPC's 0 stands for no node
     if (!field.empty() && !(parse_integer(field, zero) && zero == 0))
-      pin_refs_.push_back(PinRef{std::string(field), lines_.mark()});
+      pin_refs_.push_back(PinRef{std::string(field), lines_.mark(), scope_});
   };
   switch (pin_names_) {
     case Names::First:
@@ -333,6 +370,10 @@ void DeckReader::data() {
     case Block::Pins:
       pin_line();
       break;
+    case Block::Instance:
+      instance_lines_.emplace_back();
+      for (std::string_view field : split_fields(lines_.text())) instance_lines_.back().emplace_back(field);
+      break;
     case Block::Other:
       break;
   }
@@ -354,6 +395,7 @@ TetMesh DeckReader::read(const std::string& source) {
     }
   }
   finish_block();
+  finish_structure(source);
   flush_nodes();
   if (!text_.empty()) mesh_.extras.raw_sections.emplace_back("abaqus:text", std::move(text_));
   if (mesh_.num_nodes() == 0) throw InputError(source, "no *NODE lines: not an Abaqus mesh");

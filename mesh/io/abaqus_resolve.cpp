@@ -3,6 +3,8 @@
 // and the mesh gets its tets, pass-through blocks, regions and pins, by the
 // rules of abaqus_io.hpp.
 #include <algorithm>
+#include <array>
+#include <sstream>
 #include <unordered_set>
 
 #include "mesh/errors.hpp"
@@ -11,6 +13,7 @@
 #include "mesh/io/abaqus_regions.hpp"
 #include "mesh/io/region_sets.hpp"
 #include "mesh/io/kept_deck.hpp"
+#include "mesh/io/number_text.hpp"
 #include "mesh/io/text_lines.hpp"
 
 namespace tetsmooth::abaqus {
@@ -100,14 +103,15 @@ void DeckReader::resolve_pins(const IdIndex& node_ids, const IdIndex& element_id
     for (std::size_t k = 0; k < n; ++k) flags[static_cast<std::size_t>(block.connectivity[i * n + k])] = 1;
   };
   std::unordered_set<std::string> sets_done;  // a set named on many lines is resolved once
-  for (const PinRef& ref : pin_refs_) {
-    long long id = 0;
-    if (parse_integer(ref.name, id)) {
-      const long long node = node_ids.find(id);
-      if (node < 0) throw InputError(lines_.where_of(ref.mark), "node " + std::to_string(id) + " is not defined");
+  for (const PinRef& pin : pin_refs_) {
+    const std::string where = lines_.where_of(pin.mark);
+    const Ref ref = reference(pin.name, pin.scope, where);
+    if (ref.is_node) {
+      const long long node = node_ids.find(ref.key);
+      if (node < 0) throw InputError(where, "node " + text_excerpt(pin.name) + " is not defined");
       pinned[static_cast<std::size_t>(node)] = 1;
-    } else if (const std::string name = set_name(ref.name); sets_done.insert(name).second) {
-      sets_.mark_nodes(name, lines_.where_of(ref.mark), node_ids, element_ids, mark_element, pinned);
+    } else if (sets_done.insert(ref.set).second) {
+      sets_.mark_nodes(ref.set, where, node_ids, element_ids, mark_element, pinned);
     }
   }
   if (sets_.has_nset(kPinnedSet)) sets_.mark_nodes(kPinnedSet, "", node_ids, element_ids, mark_element, pinned);
@@ -116,7 +120,8 @@ void DeckReader::resolve_pins(const IdIndex& node_ids, const IdIndex& element_id
 
 void DeckReader::resolve() {
   FileExtras& e = mesh_.extras;
-  const IdIndex node_ids(e.node_tags), element_ids(element_ids_);
+  place_instances();
+  const IdIndex node_ids(node_keys_), element_ids(element_keys_);
   if (const auto twice = node_ids.repeated())
     throw InputError(lines_.where_of(node_marks_[*twice]),
                      "node " + std::to_string(e.node_tags[*twice]) + " is defined a second time");
@@ -143,7 +148,7 @@ void DeckReader::resolve() {
       const long long n = node_ids.find(id);
       if (n < 0)
         throw InputError(lines_.where_of(element_marks_[g]), "element " + std::to_string(element_ids_[g]) +
-                                                                 " names node " + std::to_string(id) +
+                                                                 " names node " + std::to_string(shown(id)) +
                                                                  ", which no *NODE line defines");
       return static_cast<index_t>(n);
     };
@@ -159,6 +164,34 @@ void DeckReader::resolve() {
   }
   e.tet_element_tags = tet_ids_;
   resolve_pins(node_ids, element_ids);
+}
+
+void DeckReader::place_instances() {
+  FileExtras& e = mesh_.extras;
+  for (const auto& [section, first] : node_runs_) {
+    const auto part = std::find_if(parts_.begin(), parts_.end(),
+                                   [&](const Part& p) { return p.node_first <= first && first < p.node_end; });
+    if (part == parts_.end()) continue;
+    const Placement& placement = instances_[part->instance - 1].placement;
+    if (!placement.moves()) continue;
+    // The part's coordinates as read stay with the deck: the writer writes
+    // a node that did not move as it was (abaqus_io.hpp).
+    auto& [name, body] = e.raw_sections[section];
+    const std::size_t count = std::stoull(body);
+    std::ostringstream kept;
+    kept << count << '\n' << placement.to_text() << '\n';
+    for (std::size_t i = first; i < first + count; ++i) {
+      double* xyz = &mesh_.xyz[3 * i];
+      for (int c = 0; c < 3; ++c) {
+        put_real(kept, xyz[c]);
+        kept << (c < 2 ? ' ' : '\n');
+      }
+      const std::array<double, 3> placed = placement.place(xyz);
+      std::copy(placed.begin(), placed.end(), xyz);
+    }
+    name = "abaqus:placed";
+    body = kept.str();
+  }
 }
 
 void DeckReader::keep_deck_notes() {

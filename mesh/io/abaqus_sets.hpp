@@ -18,9 +18,9 @@ namespace tetsmooth::abaqus {
 
 // What one *NSET or *ELSET keyword (and its data lines) adds to a set.
 struct SetPart {
-  std::vector<long long> ids;
+  std::vector<long long> ids;                    // keys (abaqus_scopes.hpp)
   std::vector<std::string> names;                // other sets of the same kind, as set_name() gives them
-  std::vector<std::array<long long, 3>> ranges;  // GENERATE: first, last, step
+  std::vector<std::array<long long, 3>> ranges;  // GENERATE: first, last (keys), step
   std::vector<std::string> elsets;               // *NSET, ELSET=: the nodes of these element sets
   std::string where;                             // "file:line" of the keyword
 };
@@ -39,6 +39,8 @@ class DeckSets {
     elsets_[name].runs.emplace_back(first, count);
   }
   bool has_nset(const std::string& name) const { return nsets_.count(name) != 0; }
+  // Messages give the numbers of keys within parts (abaqus_scopes.hpp).
+  void number_within_parts() { parts_ = true; }
 
   // The items of an element set, by read index over every kind of element
   // (an item may come more than once). Throws InputError at `where` (the
@@ -66,6 +68,7 @@ class DeckSets {
                std::vector<const SetPart*>& parts_with_elsets) const;
 
   std::map<std::string, Set> nsets_, elsets_;
+  bool parts_ = false;
 };
 
 }  // namespace tetsmooth::abaqus

@@ -2,13 +2,16 @@
 // comes back as it was read with the new coordinates; any other mesh gets a
 // new deck of its nodes, elements and pins.
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <ostream>
+#include <sstream>
 
 #include "mesh/errors.hpp"
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/abaqus_placement.hpp"
 #include "mesh/io/abaqus_set_names.hpp"
 #include "mesh/io/file_numbers.hpp"
 #include "mesh/io/kept_deck.hpp"
@@ -33,10 +36,37 @@ void write_node(std::ostream& out, long long id, const double* xyz) {
 
 // --- A deck read with the mesh --------------------------------------------
 
+// The nodes of a run in a placed part ("abaqus:placed": the count, the
+// placement, the part coordinates as read, a line each): in part
+// coordinates, as read where the node is still where they place it.
+std::size_t write_placed_nodes(const TetMesh& mesh, const std::string& body, std::size_t next, std::ostream& out) {
+  std::istringstream in(body);
+  std::size_t count = 0;
+  std::string placement_text;
+  in >> count;
+  in.ignore(1);
+  std::getline(in, placement_text);
+  const abaqus::Placement placement = abaqus::Placement::from_text(placement_text);
+  for (const std::size_t end = next + count; next < end; ++next) {
+    std::array<double, 3> part{};
+    for (double& v : part) {
+      std::string token;
+      in >> token;
+      parse_real(token, v);
+    }
+    const double* xyz = &mesh.xyz[3 * next];
+    const std::array<double, 3> was = placement.place(part.data());
+    if (!std::equal(was.begin(), was.end(), xyz)) part = placement.part_of(xyz);
+    write_node(out, mesh.extras.node_tags[next], part.data());
+  }
+  return next;
+}
+
 void write_deck(const TetMesh& mesh, std::ostream& out) {
   std::size_t next = 0;
   for (const auto& [name, body] : mesh.extras.raw_sections) {
     if (name == "abaqus:text") out << body;
+    if (name == "abaqus:placed") next = write_placed_nodes(mesh, body, next, out);
     if (name != "abaqus:nodes") continue;
     const std::size_t end = next + std::stoull(body);
     for (; next < end; ++next) write_node(out, mesh.extras.node_tags[next], &mesh.xyz[3 * next]);

@@ -6,9 +6,14 @@
 namespace tetsmooth::cli {
 namespace {
 
-// The file's numbers, or empty where they are missing or just positions.
+// The file's numbers, or empty where they are missing, just positions, or
+// name no item alone (the parts of an Abaqus deck each number theirs 1, 2,
+// ...; the indices then say which item is meant).
 std::vector<long long> own_numbers(const std::vector<long long>& numbers, std::size_t count) {
-  return numbers.size() == count && !numbered_by_position(numbers) ? numbers : std::vector<long long>{};
+  if (numbers.size() != count || numbered_by_position(numbers)) return {};
+  std::vector<long long> sorted = numbers;
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() ? numbers : std::vector<long long>{};
 }
 
 }  // namespace

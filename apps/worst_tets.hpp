@@ -13,7 +13,7 @@ struct RankedTet {
   double quality = 0;              // radius ratio
   std::array<index_t, 4> nodes{};  // 0-based node indices
   // The file's own numbers (Gmsh tags, Abaqus element and node numbers),
-  // where it has numbers other than the positions 1, 2, ...; 0 where not
+  // where it has distinct numbers other than the positions 1, 2, ...; 0 where not
   // (the formats that keep numbers have them positive).
   long long element = 0;
   std::array<long long, 4> node_numbers{};

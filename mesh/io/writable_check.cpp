@@ -1,6 +1,7 @@
 #include "mesh/io/writable_check.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <ostream>
 #include <streambuf>
 #include <unordered_map>
@@ -324,6 +325,13 @@ std::vector<std::string> output_losses(const TetMesh& mesh, const std::string& p
     notes.push_back(std::string(flac3d ? "the FLAC3D zone and face ids" : "the element numbers of the file") +
                     " cannot all be kept (MSH element tags must be positive and distinct across all elements, at most " +
                     std::to_string(gmsh::kLargestIntTag) + "): " + name + " numbers the elements 1, 2, ... instead");
+  // Node tags may be as large as MSH 4.1 reads them, but must be distinct
+  // (the parts of an Abaqus deck each number their nodes 1, 2, ...).
+  if (const std::string msh_lost =
+          msh ? numbers_lost(mesh, f == MeshFormat::Msh22 ? gmsh::kLargestIntTag : INT64_MAX) : "";
+      msh_lost.find("node") != std::string::npos)
+    notes.push_back("the node numbers of the file cannot all be kept (MSH node tags must be positive and distinct): " +
+                    name + " numbers the nodes 1, 2, ... instead");
   if (!lost.empty())
     notes.push_back("the " + lost + " numbers of the file cannot all be kept (each must be positive and distinct" +
                     (f == MeshFormat::Nastran || f == MeshFormat::Ansys || f == MeshFormat::Lsdyna ? ", at most 99,999,999"

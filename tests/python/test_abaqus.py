@@ -216,14 +216,156 @@ class MeshioDecks(GmshScratchCase):
         granite = back.field_data["granite"][0]
         np.testing.assert_array_equal(tags == granite, physical == 100)
 
-    def test_a_deck_of_parts_is_refused_and_nothing_written(self):
+    def test_a_part_twice_instanced_is_refused_and_nothing_written(self):
         with open(self.path("parts.inp"), "w") as f:
-            f.write("*Heading\n*Part, name=Block\n*Node\n1, 0, 0, 0\n*End Part\n")
+            f.write("*Heading\n*Part, name=Block\n*Node\n1, 0, 0, 0\n*End Part\n*Assembly, name=A\n"
+                    "*Instance, name=B-1, part=Block\n*End Instance\n*Instance, name=B-2, part=Block\n")
         proc = run("smooth", self.path("parts.inp"), "-o", self.path("out.inp"), check=False)
         self.assertEqual(proc.returncode, EXIT_INPUT)
-        self.assertIn("parts.inp:2: *PART: decks of parts and assemblies are not read", proc.stderr)
+        self.assertIn("parts.inp:9: part Block is instanced a second time", proc.stderr)
         self.assertFalse(os.path.exists(self.path("out.inp")))
 
+
+def real_text(v):
+    """A coordinate as tetsmooth writes it (the shortest text that reads back
+    to the same double), so that a node that does not move keeps its line."""
+    text = repr(float(v))
+    return text[:-2] if text.endswith(".0") else text
+
+
+def rotation(a, b, degrees):
+    """Rodrigues' rotation about the axis from a to b, right-handed."""
+    u = (np.asarray(b) - np.asarray(a)) / np.linalg.norm(np.asarray(b) - np.asarray(a))
+    t = np.radians(degrees)
+    k = np.array([[0, -u[2], u[1]], [u[2], 0, -u[0]], [-u[1], u[0], 0]])
+    return np.eye(3) + np.sin(t) * k + (1 - np.cos(t)) * k @ k
+
+
+def parse_parts_deck(path):
+    """{part: ({node: xyz}, [tet node ids])} and {instance: (part, placement
+    function)} of a deck with parts, parsed here independently of tetsmooth:
+    an instance translates its part, then turns it about the axis a-b."""
+    parts, instances = {}, {}
+    block, part, instance = None, None, None
+    for line in deck_lines(path):
+        if line.startswith("**"):
+            continue
+        fields = [f.strip() for f in line.split(",")]
+        if line.startswith("*"):
+            block = fields[0].upper()
+            params = dict(f.upper().split("=", 1) for f in fields[1:] if "=" in f)
+            if block == "*PART":
+                part = params["NAME"]
+                parts[part] = ({}, [])
+            elif block == "*INSTANCE":
+                instance = params["NAME"]
+                instances[instance] = [params["PART"], []]
+            continue
+        values = [float(v) for v in fields if v] if block in ("*NODE", "*INSTANCE") else fields
+        if block == "*NODE":
+            parts[part][0][int(values[0])] = np.array(values[1:4])
+        elif block == "*ELEMENT":
+            parts[part][1].append([int(v) for v in values[1:]])
+        elif block == "*INSTANCE":
+            instances[instance][1].append(values)
+    placed = {}
+    for name, (part_name, lines) in instances.items():
+        shift = np.array(lines[0]) if lines else np.zeros(3)
+        if len(lines) > 1:
+            a, b, angle = lines[1][:3], lines[1][3:6], lines[1][6]
+            turn = rotation(a, b, angle)
+            placed[name] = (part_name, lambda p, s=shift, r=turn, a=np.array(a): (p + s - a) @ r.T + a)
+        else:
+            placed[name] = (part_name, lambda p, s=shift: p + s)
+    return parts, placed
+
+
+class PartDecks(GmshScratchCase):
+    """A deck as Abaqus/CAE writes it: two parts, each numbered 1, 2, ...,
+    placed by instances (one turned and moved), pins named through the
+    instances. meshio 5 reads such a deck as if flat (a part's nodes
+    overwrite those of another with the same numbers, and instances are
+    not placed), so it is not compared here."""
+    SCRATCH_PREFIX = "tetsmooth_test_abaqus_parts_"
+
+    def write_deck(self):
+        from test_cli import kuhn_lattice
+        soil, pile = kuhn_lattice(3, seed=3), kuhn_lattice(3, seed=4)
+        interior = [i + 1 for i, p in enumerate(soil[0]) if np.all((p > 0) & (p < 3))]
+        self.pinned = {("SOIL", interior[0]), ("PILE", interior[1]), ("PILE", interior[2])}
+        lines = ["*Heading", " a pile in soil"]
+        for name, (xyz, tets), extra in (("Soil", soil, []),
+                                         ("Pile", pile, ["*Nset, nset=Head", str(interior[1])])):
+            lines += [f"*Part, name={name}", "*Node"]
+            lines += [f"{i + 1}, " + ", ".join(real_text(v) for v in p) for i, p in enumerate(xyz)]
+            lines += [f"*Element, type=C3D4, elset={name}Body"]
+            lines += [f"{t + 1}, " + ", ".join(str(n + 1) for n in tet) for t, tet in enumerate(tets)]
+            lines += extra + [f"*Solid Section, elset={name}Body, material=Rock", ",", "*End Part"]
+        lines += ["*Assembly, name=Assembly", "*Instance, name=Soil-1, part=Soil", "*End Instance",
+                  "*Instance, name=Pile-1, part=Pile", " 4., 0., 0.", " 4., 0., 0., 4., 0., 1., 90.",
+                  "*End Instance", "*Nset, nset=Anchor, instance=Pile-1", str(interior[2]), "*End Assembly",
+                  "*Material, name=Rock", "*Elastic", "1e9, 0.3", "*Step", "*Static", "*Boundary",
+                  f"Soil-1.{interior[0]}, 1, 3", "Pile-1.Head, ENCASTRE", "Anchor, 1", "*End Step"]
+        with open(self.path("parts.inp"), "w") as f:
+            f.write("\n".join(lines) + "\n")
+
+    def test_smoothed_deck_changes_moved_nodes_only_in_part_coordinates(self):
+        self.write_deck()
+        src, out = self.path("parts.inp"), self.path("smooth-parts.inp")
+        run("smooth", src, "-o", out, "--device", "cpu")
+        before, after = deck_lines(src), deck_lines(out)
+        self.assertEqual(len(before), len(after))
+        parts_in, instances = parse_parts_deck(src)
+        parts_out, _ = parse_parts_deck(out)
+        changed, part = set(), None  # (part, node number) of each changed line
+        for a, b in zip(before, after):
+            if a.upper().startswith("*PART"):
+                part = a.split("=")[1].upper()
+            if a != b:
+                self.assertTrue(NODE_LINE.match(a) and NODE_LINE.match(b), f"{a!r} became {b!r}")
+                self.assertEqual(a.split(",")[0], b.split(",")[0])
+                changed.add((part, int(a.split(",")[0])))
+        self.assertTrue(changed)
+        self.assertFalse(changed & self.pinned, "a pinned node moved")
+        worst_before, worst_after = [], []
+        for name, (part_name, place) in instances.items():
+            nodes_in, tets = parts_in[part_name]
+            nodes_out, _ = parts_out[part_name]
+            ids = sorted(nodes_in)
+            index = {n: i for i, n in enumerate(ids)}
+            tets = np.vectorize(index.get)(np.array(tets))
+            xyz_in = place(np.array([nodes_in[n] for n in ids]))
+            xyz_out = place(np.array([nodes_out[n] for n in ids]))
+            worst_before.append(radius_ratio(xyz_in, tets).min())
+            worst_after.append(radius_ratio(xyz_out, tets).min())
+            # The body's boundary (where another body may be tied) stays.
+            for n in boundary_nodes(tets):
+                np.testing.assert_array_equal(nodes_out[ids[n]], nodes_in[ids[n]])
+        self.assertGreaterEqual(min(worst_after), min(worst_before))
+        for w_in, w_out in zip(worst_before, worst_after):
+            self.assertGreaterEqual(w_out, w_in)
+
+    def test_other_formats_take_the_bodies_in_assembly_coordinates(self):
+        self.write_deck()
+        proc = run("convert", self.path("parts.inp"), self.path("parts.vtu"))
+        parts, instances = parse_parts_deck(self.path("parts.inp"))
+        mesh = meshio.read(self.path("parts.vtu"))
+        expected = np.concatenate([place(np.array([parts[p][0][n] for n in sorted(parts[p][0])]))
+                                   for p, place in instances.values()])
+        np.testing.assert_allclose(mesh.points, expected, atol=1e-12)
+        self.assertEqual(len(mesh.cells_dict["tetra"]), sum(len(parts[p][1]) for p in parts))
+        # Both parts number their nodes 1, 2, ...: MSH, which keeps numbers,
+        # numbers them anew, and says so.
+        proc = run("convert", self.path("parts.inp"), self.path("parts.msh"))
+        self.assertIn("the node numbers of the file cannot all be kept", proc.stderr)
+        self.assertIn("the element numbers of the file cannot all be kept", proc.stderr)
+        msh = meshio.read(self.path("parts.msh"))
+        np.testing.assert_allclose(msh.points, expected, atol=1e-12)
+        names = {name for name, (tag, dim) in msh.field_data.items() if dim == 3}
+        self.assertEqual(names, {"Soil.SoilBody", "Pile.PileBody"})
+        # The worst tets are not given numbers that name two.
+        report = run("quality", self.path("parts.inp"), "--worst", "3").stdout
+        self.assertNotIn("in the file", report)
 
 if __name__ == "__main__":
     unittest.main()

@@ -5,6 +5,7 @@
 // structures that are refused, with file:line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -205,6 +206,23 @@ TEST(AbaqusParts, PinsThroughEveryFormOfReference) {
       EXPECT_EQ(pinned.xyz[3 * i + static_cast<std::size_t>(c)], pinned_before.xyz[3 * i + static_cast<std::size_t>(c)]);
 }
 
+TEST(AbaqusParts, ReferencePointsOfTheAssemblyStayAndPin) {
+  // Abaqus/CAE writes a reference point as a node of the assembly, in a
+  // set that constraints and boundary conditions name, with its number.
+  const std::string deck = parts_deck("", "*Node\n1, 9., 9., 9.\n*Nset, nset=RP-1\n 1,\n",
+                                      "*Boundary\nRP-1, ENCASTRE\n1, 1\n");
+  TetMesh mesh = read_text(deck);
+  ASSERT_EQ(mesh.num_nodes(), kSoil.num_nodes() + kPile.num_nodes() + 1);
+  EXPECT_EQ(mesh.xyz.back(), 9.0);
+  ASSERT_FALSE(mesh.fixed.empty());
+  EXPECT_EQ(mesh.fixed.back(), 1);
+  smooth(mesh, serial(), Device::Cpu);
+  const std::vector<std::string> in = lines_of(deck), out = lines_of(write_text(mesh));
+  ASSERT_EQ(in.size(), out.size());
+  const auto rp = std::find(in.begin(), in.end(), "1, 9., 9., 9.") - in.begin();
+  EXPECT_EQ(out[static_cast<std::size_t>(rp)], "1, 9, 9, 9");  // written anew, as every node line
+}
+
 TEST(AbaqusParts, PartsWithTheSameNumbersConvertRenumbered) {
   const TetMesh mesh = read_text(parts_deck());
   // Both parts number their nodes and elements 1, 2, ...: kept as the
@@ -240,7 +258,8 @@ TEST(AbaqusParts, RefusedStructuresNameTheLine) {
       {"*Instance, name=Pile-1, part=Pile\n", "*Instance, name=Pile-1, part=Rock\n",
        pile + "*INSTANCE of part Rock, which no *PART above defines"},
       {"*Instance, name=Pile-1, part=Pile\n", "*Instance, name=Pile-1\n", pile + "*INSTANCE without PART="},
-      {"*End Assembly\n", "*Node\n1, 0, 0, 0\n*End Assembly\n", end_assembly + "*NODE inside *ASSEMBLY"},
+      {"*End Assembly\n", "*Element, type=C3D4\n1, 1, 2, 3, 4\n*End Assembly\n",
+       end_assembly + "*ELEMENT inside *ASSEMBLY (elements of the assembly itself) is not read"},
       {"*End Assembly\n", "*Part, name=Extra\n*End Assembly\n", end_assembly + "*PART inside *ASSEMBLY is not read"},
       {"*End Assembly\n", "*Assembly\n", end_assembly + "a second *ASSEMBLY (or one inside another) is not read"},
       {" 4., 0., 0.\n", " 4., 0., 0.\n*Node\n1, 0, 0, 0\n",
@@ -252,11 +271,13 @@ TEST(AbaqusParts, RefusedStructuresNameTheLine) {
       {"*Instance, name=Soil-1, part=Soil\n*End Instance\n", "",
        "t.inp:3: part Soil has no *INSTANCE: its mesh is not part of the model"},
       {"*End Assembly\n", "", assembly + "*ASSEMBLY without *END ASSEMBLY"},
-      {"*End Assembly\n", "*Nset, nset=X\n7\n*End Assembly\n",
-       line_of("*End Assembly", 1) + "number 7 in a set outside parts: give the set's INSTANCE="},
+      {"*End Assembly\n", "*Nset, nset=X\n7\n*End Assembly\n*Boundary\nX, 1\n",
+       end_assembly + "node set X lists node 7, which the deck does not define"},
       {"*End Assembly\n", "*Nset, nset=X, instance=Nope\n7\n*End Assembly\n",
        end_assembly + "*NSET, INSTANCE=Nope: no *INSTANCE above has that name"},
-      {"*Material", "*Boundary\n7, 1\n*Material", "node 7 outside a part: name a part's node through its instance"},
+      {"*Material", "*Boundary\n7, 1\n*Material",
+       "node 7 is not defined (outside parts, a number names a node of the assembly; a part's node is named through "
+       "its instance: Instance.number)"},
       {"*Material", "*Boundary\nPile-1.Top, 1\n*Material", "no node set PILE/TOP is defined"},
       {"*Material", "*Boundary\nPile-1.100000, 1\n*Material", "node Pile-1.100000 is not defined"},
   };

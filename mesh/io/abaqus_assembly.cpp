@@ -111,16 +111,17 @@ void DeckReader::finish_instance() {
 }
 
 void DeckReader::check_mesh_level(const Keyword& kw) const {
-  if (level_ == Level::Assembly)
-    lines_.fail("*" + kw.name +
-                " inside *ASSEMBLY (nodes or elements of the assembly itself, such as reference points) is not "
-                "read" + std::string(kFlatten));
+  // Nodes of the assembly itself are reference points (Abaqus/CAE writes
+  // them so), numbered apart from the parts' and named by number outside
+  // parts; no element holds them, so they stay where they are.
+  if (level_ == Level::Assembly && kw.name == "ELEMENT")
+    lines_.fail("*ELEMENT inside *ASSEMBLY (elements of the assembly itself) is not read" + std::string(kFlatten));
   if (level_ == Level::Model && has_parts())
     lines_.fail("*" + kw.name + " outside *PART in a deck with parts is not read: the model's nodes and elements "
                 "belong to its parts");
 }
 
-void DeckReader::finish_structure(const std::string& source) {
+void DeckReader::finish_structure() {
   if (level_ == Level::Part) throw InputError(parts_.back().where, "*PART without *END PART");
   if (level_ == Level::Assembly) throw InputError(assembly_where_, "*ASSEMBLY without *END ASSEMBLY");
   if (level_ == Level::Instance)
@@ -136,9 +137,9 @@ void DeckReader::finish_structure(const std::string& source) {
 }
 
 long long DeckReader::key(std::size_t scope, long long number) const {
-  if (scope != 0 && number > kLargestPartNumber)
-    lines_.fail("number " + std::to_string(number) + " in part " + parts_[scope - 1].written +
-                ": numbers in a part are read up to " + std::to_string(kLargestPartNumber));
+  if (has_parts() && number > kLargestPartNumber)
+    lines_.fail("number " + std::to_string(number) + " in a deck with parts: numbers are read up to " +
+                std::to_string(kLargestPartNumber));
   return scoped_key(scope, number);
 }
 
@@ -152,13 +153,8 @@ std::string DeckReader::set_written(std::size_t scope, const std::string& writte
 
 DeckReader::Ref DeckReader::reference(std::string_view field, std::size_t scope, const std::string& where) const {
   long long number = 0;
-  if (parse_integer(field, number)) {
-    if (scope == 0 && has_parts())
-      throw InputError(where, "node " + std::to_string(number) +
-                                  " outside a part: name a part's node through its instance (Instance." +
-                                  std::to_string(number) + ")");
-    return Ref{true, scoped_key(scope, number), ""};
-  }
+  // Outside parts, a number is a node of the assembly itself.
+  if (parse_integer(field, number)) return Ref{true, scoped_key(scope, number), ""};
   const std::string name = set_name(field);
   if (scope != 0 || !has_parts()) return Ref{false, 0, set_key(scope, name)};
   // Instance names hold no '.', so the first one ends it.

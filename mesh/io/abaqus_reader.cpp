@@ -326,13 +326,7 @@ void DeckReader::set_line() {
   }
 }
 
-long long DeckReader::number_key(long long number) const {
-  if (set_scope_ == 0 && has_parts())
-    lines_.fail("number " + std::to_string(number) +
-                " in a set outside parts: give the set's INSTANCE=, or name the item as Instance." +
-                std::to_string(number));
-  return key(set_scope_, number);
-}
+long long DeckReader::number_key(long long number) const { return key(set_scope_, number); }
 
 void DeckReader::pin_line() {
   const std::vector<std::string_view> fields = split_fields(lines_.text());
@@ -395,7 +389,7 @@ TetMesh DeckReader::read(const std::string& source) {
     }
   }
   finish_block();
-  finish_structure(source);
+  finish_structure();
   flush_nodes();
   if (!text_.empty()) mesh_.extras.raw_sections.emplace_back("abaqus:text", std::move(text_));
   if (mesh_.num_nodes() == 0) throw InputError(source, "no *NODE lines: not an Abaqus mesh");

@@ -90,7 +90,7 @@ class DeckReader {
   bool structure_keyword(const Keyword& kw);  // false for keywords of no structure
   void check_mesh_level(const Keyword& kw) const;  // *NODE and *ELEMENT
   void finish_instance();
-  void finish_structure(const std::string& source);
+  void finish_structure();
   bool has_parts() const { return !parts_.empty(); }
   long long key(std::size_t scope, long long number) const;  // fails at the current line if too large
   // A set's key: its name (set_name) within a part, "PART/NAME".

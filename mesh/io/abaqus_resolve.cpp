@@ -108,7 +108,12 @@ void DeckReader::resolve_pins(const IdIndex& node_ids, const IdIndex& element_id
     const Ref ref = reference(pin.name, pin.scope, where);
     if (ref.is_node) {
       const long long node = node_ids.find(ref.key);
-      if (node < 0) throw InputError(where, "node " + text_excerpt(pin.name) + " is not defined");
+      if (node < 0)
+        throw InputError(where, "node " + text_excerpt(pin.name) + " is not defined" +
+                                    (has_parts() && pin.scope == 0
+                                         ? " (outside parts, a number names a node of the assembly; a part's node is "
+                                           "named through its instance: Instance.number)"
+                                         : ""));
       pinned[static_cast<std::size_t>(node)] = 1;
     } else if (sets_done.insert(ref.set).second) {
       sets_.mark_nodes(ref.set, where, node_ids, element_ids, mark_element, pinned);

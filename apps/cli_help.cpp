@@ -31,8 +31,9 @@ const char* const kFormats = R"(Formats (chosen from the file name; --format/--o
               msh41-binary  Gmsh 4.1 binary
               msh22         Gmsh 2.2 ASCII
   .mesh       medit         Medit ASCII
-  .inp        abaqus        Abaqus/CalculiX input deck (a deck read is written back
-                            whole, with the new coordinates)
+  .inp        abaqus        Abaqus/CalculiX input deck, flat or with parts and an
+                            assembly (a deck read is written back whole, with the
+                            new coordinates; parts' nodes in part coordinates)
   .bdf/.nas   nastran       Nastran bulk data, small, large or free field (a deck
                             read is written back whole, moved GRIDs in large field)
   .f3grid     flac3d        FLAC3D grid, text or binary (.flac3d too; a grid read is
@@ -150,7 +151,8 @@ tets with q < 0.1, inverted and degenerate tets, the smallest dihedral angle,
 the mean of the mean-ratio metric, and the K worst tets with their nodes.
 Tet and node indices are 0-based, in file order, whatever the file numbers;
 where the file numbers its elements or nodes itself (Gmsh tags, Abaqus
-numbers, Nastran ids, FLAC3D ids), its numbers follow them.
+numbers, Nastran ids, FLAC3D ids), each number naming one, its numbers
+follow them (not for Abaqus parts that number theirs alike).
 Second-order (10-node) tets are measured by their corner tets.
 
 Options:

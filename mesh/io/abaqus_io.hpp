@@ -1,6 +1,6 @@
 #pragma once
-// Abaqus and CalculiX input decks (.inp): the mesh of a flat deck (one
-// without *PART/*ASSEMBLY), read with the rest of the deck kept so that a
+// Abaqus and CalculiX input decks (.inp): the mesh of a flat deck or of one
+// with parts and an assembly, read with the rest of the deck kept so that a
 // smoothed deck is the input with only its node coordinates changed.
 //
 // Reading:
@@ -25,13 +25,31 @@
 //    *CFLOW, *EQUATION and *MPC; and the node set TETSMOOTH_PINNED that the
 //    writer leaves for pins nothing else keeps. Node sets that only output
 //    or monitoring name (*NODE PRINT, *MONITOR) pin nothing.
-//  * *INCLUDE files are read in place (abaqus_deck_lines.hpp). Parts and
-//    assemblies, node and element generation (*NGEN, *ELGEN, ...), and nodes
-//    in other coordinate systems (*SYSTEM, SYSTEM=C|S) are refused with a
-//    message.
+//  * Parts and an assembly (abaqus_assembly.cpp): *PART, NAME= ... *END
+//    PART holds nodes, elements, sets and sections numbered and named within
+//    the part; *ASSEMBLY ... *END ASSEMBLY places each part by one *INSTANCE,
+//    NAME=, PART= ... *END INSTANCE, whose optional data lines translate and
+//    then rotate it (abaqus_placement.hpp). The mesh is the instances' union
+//    in assembly coordinates, in read order, each instance's nodes its own
+//    (bodies are never merged); node_tags and tet_element_tags are the
+//    parts' numbers, so they repeat across parts. Regions: each (part,
+//    section), named "Part.Set". Outside parts, "Instance.number" and
+//    "Instance.Set" name a part's node and set, *NSET/*ELSET, INSTANCE= list
+//    a part's numbers and sets, a plain number names a node of the assembly
+//    itself (*NODE inside *ASSEMBLY: reference points, which no element
+//    holds). Refused with the line: a part instanced twice or never,
+//    keywords inside *INSTANCE, *ELEMENT inside *ASSEMBLY, nested or
+//    unclosed structure, *INSTANCE of an unknown part or without PART=,
+//    nodes or elements outside parts in a deck with parts.
+//  * *INCLUDE files are read in place (abaqus_deck_lines.hpp). Node and
+//    element generation (*NGEN, *ELGEN, ...), and nodes in other coordinate
+//    systems (*SYSTEM, SYSTEM=C|S) are refused with a message.
 //  * The deck is kept in FileExtras::raw_sections, in order: "abaqus:text"
 //    bodies as read (lines end in '\n'; included files inline) and
-//    "abaqus:nodes" counts of the *NODE lines between them, then
+//    "abaqus:nodes" counts of the *NODE lines between them, or for a run in
+//    a part that its instance moves, "abaqus:placed": the count, the
+//    placement (Placement::to_text) and the part coordinates as read, a line
+//    each; then
 //    "abaqus:deck" ("<nodes> <tets>", what the deck describes) and
 //    "abaqus:keywords" (the deck's keywords other than *HEADING, *NODE and
 //    *ELEMENT, as written, for a note when another format drops them) and
@@ -41,7 +59,11 @@
 //    written), which MSH output keeps.
 //
 // Writing: a mesh read from a deck is written as that deck, each *NODE line
-// "id, x, y, z" with the new coordinates in shortest round-trip form and
+// "id, x, y, z" with the new coordinates in shortest round-trip form (in a
+// placed part: the part coordinates as read where the placed position is
+// still the node's, to the bit; else the inverse placement of its position,
+// rounded in doubles, so a rotated part's moved node reads back within a few
+// ulps) and
 // every other line as read, but for the line ends (each line ends in '\n',
 // the last too: CRLF becomes LF), a UTF-8 byte order mark (dropped) and
 // *INCLUDE lines (the included lines in their place); the mesh must still

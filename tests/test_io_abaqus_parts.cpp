@@ -122,7 +122,8 @@ TEST(AbaqusParts, InstancesArePlacedAndSmoothAsTheFlatDeck) {
 
   // The same bodies as a flat deck, at the assembly's coordinates.
   std::string flat = "*Heading\n*Node\n";
-  for (std::size_t i = 0; i < parts.num_nodes(); ++i) flat += node_line(static_cast<long long>(i) + 1, &parts.xyz[3 * i]);
+  for (std::size_t i = 0; i < parts.num_nodes(); ++i)
+    flat += node_line(static_cast<long long>(i) + 1, &parts.xyz[3 * i]);
   flat += "*Element, type=C3D4, elset=Soil\n";
   for (std::size_t t = 0; t < parts.num_tets(); ++t) {
     if (t == kSoil.num_tets()) flat += "*Element, type=C3D4, elset=Pile\n";
@@ -168,7 +169,8 @@ TEST(AbaqusParts, WrittenBackWithOnlyMovedNodesInPartCoordinates) {
     fields >> id >> comma >> part[0] >> comma >> part[1] >> comma >> part[2];
     EXPECT_EQ(id, static_cast<long long>(soil ? i : i - kSoil.num_nodes()) + 1);
     const std::array<double, 3> at = soil ? part : pile_in_assembly(part.data());
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(at[c], smoothed.xyz[3 * i + static_cast<std::size_t>(c)], 1e-12) << out[line];
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(at[c], smoothed.xyz[3 * i + static_cast<std::size_t>(c)], 1e-12) << out[line];
   }
   EXPECT_EQ(changed, expected);
   // Read again, the deck gives the smoothed positions.
@@ -203,14 +205,15 @@ TEST(AbaqusParts, PinsThroughEveryFormOfReference) {
   smooth(pinned, serial(), Device::Cpu);
   for (std::size_t i : {soil[0] - 1, soil[1] - 1, off + pile[0] - 1, off + pile[1] - 1, off + pile[2] - 1})
     for (int c = 0; c < 3; ++c)
-      EXPECT_EQ(pinned.xyz[3 * i + static_cast<std::size_t>(c)], pinned_before.xyz[3 * i + static_cast<std::size_t>(c)]);
+      EXPECT_EQ(pinned.xyz[3 * i + static_cast<std::size_t>(c)],
+                pinned_before.xyz[3 * i + static_cast<std::size_t>(c)]);
 }
 
 TEST(AbaqusParts, ReferencePointsOfTheAssemblyStayAndPin) {
   // Abaqus/CAE writes a reference point as a node of the assembly, in a
   // set that constraints and boundary conditions name, with its number.
-  const std::string deck = parts_deck("", "*Node\n1, 9., 9., 9.\n*Nset, nset=RP-1\n 1,\n",
-                                      "*Boundary\nRP-1, ENCASTRE\n1, 1\n");
+  const std::string deck =
+      parts_deck("", "*Node\n1, 9., 9., 9.\n*Nset, nset=RP-1\n 1,\n", "*Boundary\nRP-1, ENCASTRE\n1, 1\n");
   TetMesh mesh = read_text(deck);
   ASSERT_EQ(mesh.num_nodes(), kSoil.num_nodes() + kPile.num_nodes() + 1);
   EXPECT_EQ(mesh.xyz.back(), 9.0);

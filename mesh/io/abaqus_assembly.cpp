@@ -117,15 +117,15 @@ void DeckReader::check_mesh_level(const Keyword& kw) const {
   if (level_ == Level::Assembly && kw.name == "ELEMENT")
     lines_.fail("*ELEMENT inside *ASSEMBLY (elements of the assembly itself) is not read" + std::string(kFlatten));
   if (level_ == Level::Model && has_parts())
-    lines_.fail("*" + kw.name + " outside *PART in a deck with parts is not read: the model's nodes and elements "
+    lines_.fail("*" + kw.name +
+                " outside *PART in a deck with parts is not read: the model's nodes and elements "
                 "belong to its parts");
 }
 
 void DeckReader::finish_structure() {
   if (level_ == Level::Part) throw InputError(parts_.back().where, "*PART without *END PART");
   if (level_ == Level::Assembly) throw InputError(assembly_where_, "*ASSEMBLY without *END ASSEMBLY");
-  if (level_ == Level::Instance)
-    throw InputError(instances_.back().where, "*INSTANCE without *END INSTANCE");
+  if (level_ == Level::Instance) throw InputError(instances_.back().where, "*INSTANCE without *END INSTANCE");
   // Abaqus analyses only the parts that an instance places; the lines of
   // another would have to be kept as text, which is not done.
   for (const Part& p : parts_)

@@ -23,7 +23,7 @@ class Placement {
   static Placement from_lines(const std::vector<std::vector<std::string_view>>& lines);
 
   bool moves() const { return moves_; }
-  std::array<double, 3> place(const double* part) const;      // part -> assembly
+  std::array<double, 3> place(const double* part) const;        // part -> assembly
   std::array<double, 3> part_of(const double* assembly) const;  // assembly -> part (R's transpose)
 
   // Exact text form, for the kept deck (shortest round-trip doubles), and

@@ -157,9 +157,11 @@ void DeckReader::start_set(const Keyword& kw) {
   if (const std::string* instance = kw.param("INSTANCE"); instance != nullptr) {
     if (level_ != Level::Assembly) lines_.fail("*" + kw.name + ", INSTANCE= outside *ASSEMBLY");
     const std::string wanted = set_name(*instance);
-    const auto it = std::find_if(instances_.begin(), instances_.end(), [&](const Instance& i) { return i.name == wanted; });
+    const auto it =
+        std::find_if(instances_.begin(), instances_.end(), [&](const Instance& i) { return i.name == wanted; });
     if (it == instances_.end())
-      lines_.fail("*" + kw.name + ", INSTANCE=" + text_excerpt(unquoted(*instance)) + ": no *INSTANCE above has that name");
+      lines_.fail("*" + kw.name + ", INSTANCE=" + text_excerpt(unquoted(*instance)) +
+                  ": no *INSTANCE above has that name");
     set_scope_ = it->part + 1;
   }
   if (!set_of_nodes_) note_elset(set_name_, set_written(scope_, unquoted(*name)));
@@ -202,7 +204,8 @@ void DeckReader::keyword() {
   } else if (kw.name == "SOLIDSECTION") {
     const std::string* elset = kw.param("ELSET");
     if (elset == nullptr || elset->empty()) lines_.fail("*SOLID SECTION without ELSET=");
-    sections_.push_back(Section{set_key(scope_, set_name(*elset)), lines_.where(), set_written(scope_, unquoted(*elset))});
+    sections_.push_back(
+        Section{set_key(scope_, set_name(*elset)), lines_.where(), set_written(scope_, unquoted(*elset))});
   }
   for (const PinKeyword& p : kPinKeywords)
     if (kw.name == p.keyword) {

@@ -12,14 +12,14 @@
 #include <utility>
 #include <vector>
 
-#include "mesh/tet_mesh.hpp"
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_placement.hpp"
 #include "mesh/io/abaqus_regions.hpp"
 #include "mesh/io/abaqus_scopes.hpp"
-#include "mesh/io/region_sets.hpp"
 #include "mesh/io/abaqus_sets.hpp"
+#include "mesh/io/region_sets.hpp"
+#include "mesh/tet_mesh.hpp"
 
 namespace tetsmooth::abaqus {
 
@@ -80,14 +80,14 @@ class DeckReader {
   void add_element();
   void set_line();
   std::string set_in_data(std::string_view field) const;  // a set that a set's line names, as set_key
-  long long number_key(long long number) const;            // an item that a set's line numbers
+  long long number_key(long long number) const;           // an item that a set's line numbers
   void pin_line();
   std::uint32_t elset_index(const std::string* name);
   void note_elset(const std::string& name, const std::string& written);
   std::string element_text() const;
 
   // abaqus_assembly.cpp: parts, the assembly, instances.
-  bool structure_keyword(const Keyword& kw);  // false for keywords of no structure
+  bool structure_keyword(const Keyword& kw);       // false for keywords of no structure
   void check_mesh_level(const Keyword& kw) const;  // *NODE and *ELEMENT
   void finish_instance();
   void finish_structure();
@@ -110,12 +110,12 @@ class DeckReader {
 
   DeckLines& lines_;
   TetMesh mesh_;
-  std::vector<long long> node_keys_;  // per node (abaqus_scopes.hpp)
+  std::vector<long long> node_keys_;                            // per node (abaqus_scopes.hpp)
   std::vector<std::pair<std::size_t, std::size_t>> node_runs_;  // (raw section, first node) of each run
 
   Level level_ = Level::Model;
-  std::size_t scope_ = 0;       // the part being read (index + 1), 0 outside parts
-  std::size_t set_scope_ = 0;   // the part whose numbers a set's lines give
+  std::size_t scope_ = 0;      // the part being read (index + 1), 0 outside parts
+  std::size_t set_scope_ = 0;  // the part whose numbers a set's lines give
   bool assembly_seen_ = false;
   std::string assembly_where_;
   std::vector<Part> parts_;
@@ -144,7 +144,7 @@ class DeckReader {
   std::vector<std::uint32_t> element_marks_;  // per element, its first line
   std::vector<std::int64_t> element_at_;      // per element: tet index, or -1 - its place in others_at_
   std::vector<std::pair<std::size_t, std::size_t>> others_at_;  // (block, element) of each other element
-  std::vector<long long> tet_ids_, tet_nodes_;  // nodes by key
+  std::vector<long long> tet_ids_, tet_nodes_;                  // nodes by key
   int tet_nodes_each_ = 0;
   std::vector<std::uint32_t> tet_elsets_;
   std::vector<Others> others_;

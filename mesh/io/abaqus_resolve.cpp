@@ -8,13 +8,13 @@
 #include <unordered_set>
 
 #include "mesh/errors.hpp"
-#include "mesh/second_order.hpp"
 #include "mesh/io/abaqus_reader.hpp"
 #include "mesh/io/abaqus_regions.hpp"
-#include "mesh/io/region_sets.hpp"
 #include "mesh/io/kept_deck.hpp"
 #include "mesh/io/number_text.hpp"
+#include "mesh/io/region_sets.hpp"
 #include "mesh/io/text_lines.hpp"
+#include "mesh/second_order.hpp"
 
 namespace tetsmooth::abaqus {
 namespace {

@@ -30,7 +30,8 @@ void DeckSets::collect(const std::map<std::string, Set>& sets, const std::string
     for (long long id : part.ids) {
       const long long item = ids.find(id);
       if (item < 0)
-        throw InputError(part.where, std::string(kind) + " set " + name + " lists " + kind + " " + std::to_string(number_of_key(id, parts_)) +
+        throw InputError(part.where, std::string(kind) + " set " + name + " lists " + kind + " " +
+                                         std::to_string(number_of_key(id, parts_)) +
                                          ", which the deck does not define");
       items.push_back(static_cast<std::size_t>(item));
     }

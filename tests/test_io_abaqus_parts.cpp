@@ -87,9 +87,10 @@ std::string part_text(const std::string& name, const TetMesh& mesh, const std::s
 }
 
 // `pins`: lines after the assembly's instances and after it.
+// `between`: lines between the two parts.
 std::string parts_deck(const std::string& part_sets = "", const std::string& assembly = "",
-                       const std::string& model = "") {
-  return "*Heading\n two bodies\n" + part_text("Soil", kSoil, "") + part_text("Pile", kPile, part_sets) +
+                       const std::string& model = "", const std::string& between = "") {
+  return "*Heading\n two bodies\n" + part_text("Soil", kSoil, "") + between + part_text("Pile", kPile, part_sets) +
          "*Assembly, name=Assembly\n*Instance, name=Soil-1, part=Soil\n*End Instance\n"
          "*Instance, name=Pile-1, part=Pile\n 4., 0., 0.\n 4., 0., 0., 4., 0., 1., 90.\n*End Instance\n" +
          assembly + "*End Assembly\n*Material, name=Rock\n*Elastic\n1e9, 0.3\n" + model;
@@ -209,6 +210,27 @@ TEST(AbaqusParts, PinsThroughEveryFormOfReference) {
                 pinned_before.xyz[3 * i + static_cast<std::size_t>(c)]);
 }
 
+TEST(AbaqusParts, APartWithoutInstanceIsNoBodyAndKeepsItsLines) {
+  // Between the two parts, one that no instance places, with the only
+  // surface elements of the deck, sets and a section of its own.
+  const std::string spare =
+      part_text("Spare", testing::cube_grid(1), "*Element, type=S3, elset=Skin\n7, 1, 2, 3\n*Nset, nset=Corner\n1\n");
+  const std::string deck = parts_deck("", "", "", spare);
+  const TetMesh with = read_text(deck), without = read_text(parts_deck());
+  EXPECT_EQ(with.xyz, without.xyz);  // Pile still placed, after the part that left
+  EXPECT_EQ(with.tets, without.tets);
+  EXPECT_EQ(with.extras.tet_tags, without.extras.tet_tags);
+  EXPECT_EQ(with.extras.node_tags, without.extras.node_tags);
+  EXPECT_EQ(with.extras.tet_element_tags, without.extras.tet_element_tags);
+  EXPECT_TRUE(with.extras.blocks.empty());
+  EXPECT_EQ(write_text(with), deck);  // every line, the part's among them
+  TetMesh smoothed = with;
+  smooth(smoothed, serial(), Device::Cpu);
+  const std::string out = write_text(smoothed);
+  EXPECT_NE(out.find(spare), std::string::npos);
+  EXPECT_NE(out, deck);
+}
+
 TEST(AbaqusParts, ReferencePointsOfTheAssemblyStayAndPin) {
   // Abaqus/CAE writes a reference point as a node of the assembly, in a
   // set that constraints and boundary conditions name, with its number.
@@ -271,8 +293,6 @@ TEST(AbaqusParts, RefusedStructuresNameTheLine) {
        pile + "instance Pile-1: the rotation axis needs two different points"},
       {" 4., 0., 0., 4., 0., 1., 90.\n", " 4., 0., 0., 4., 0., 1.\n",
        pile + "instance Pile-1: a rotation line is 'ax, ay, az, bx, by, bz, angle' (7 fields, not 6)"},
-      {"*Instance, name=Soil-1, part=Soil\n*End Instance\n", "",
-       "t.inp:3: part Soil has no *INSTANCE: its mesh is not part of the model"},
       {"*End Assembly\n", "", assembly + "*ASSEMBLY without *END ASSEMBLY"},
       {"*End Assembly\n", "*Nset, nset=X\n7\n*End Assembly\n*Boundary\nX, 1\n",
        end_assembly + "node set X lists node 7, which the deck does not define"},
@@ -290,6 +310,8 @@ TEST(AbaqusParts, RefusedStructuresNameTheLine) {
   }
   // A part without *END PART, and *NODE outside parts once there are some.
   EXPECT_NE(read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n").find("t.inp:1: *PART without *END PART"),
+            std::string::npos);
+  EXPECT_NE(read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n*End Part\n").find("t.inp:1: no part has an *INSTANCE"),
             std::string::npos);
   EXPECT_NE(read_error(deck + "*Node\n1, 0, 0, 0\n").find("*NODE outside *PART in a deck with parts"),
             std::string::npos);

@@ -5,9 +5,13 @@
 // "Instance.set" name a part's node and set through its instance (Abaqus
 // Analysis User's Guide, "Assembly definition"; Keywords Reference, *PART,
 // *ASSEMBLY, *INSTANCE).
+#include <algorithm>
+#include <cstddef>
+#include <sstream>
 #include <stdexcept>
 
 #include "mesh/errors.hpp"
+#include "mesh/io/abaqus_node_line.hpp"
 #include "mesh/io/abaqus_reader.hpp"
 #include "mesh/io/number_text.hpp"
 #include "mesh/io/text_lines.hpp"
@@ -126,14 +130,119 @@ void DeckReader::finish_structure() {
   if (level_ == Level::Part) throw InputError(parts_.back().where, "*PART without *END PART");
   if (level_ == Level::Assembly) throw InputError(assembly_where_, "*ASSEMBLY without *END ASSEMBLY");
   if (level_ == Level::Instance) throw InputError(instances_.back().where, "*INSTANCE without *END INSTANCE");
-  // Abaqus analyses only the parts that an instance places; the lines of
-  // another would have to be kept as text, which is not done.
-  for (const Part& p : parts_)
-    if (p.instance == 0)
-      throw InputError(p.where, "part " + p.written +
-                                    " has no *INSTANCE: its mesh is not part of the model; instance it in the "
-                                    "*ASSEMBLY, or delete the part");
+  // A part that no instance places is no body of the assembly (Abaqus
+  // builds the model from the instances): its lines stay, as text.
+  if (has_parts() && instances_.empty())
+    throw InputError(parts_.front().where, "no part has an *INSTANCE, so the model has no body: place the parts in "
+                                           "the *ASSEMBLY by *INSTANCE, NAME=..., PART=...");
+  for (std::size_t p = parts_.size(); p-- > 0;)
+    if (parts_[p].instance == 0) drop_part(p);
   if (has_parts()) sets_.number_within_parts();
+}
+
+void DeckReader::drop_part(std::size_t p) {
+  FileExtras& e = mesh_.extras;
+  const Part& part = parts_[p];
+  const std::size_t nf = part.node_first, nn = part.node_end - nf;
+  // Its node lines become text, as the writer writes every node line.
+  for (auto run = node_runs_.begin(); run != node_runs_.end();) {
+    auto& [section, first] = *run;
+    if (first < nf || first >= nf + nn) {
+      if (first >= nf + nn) first -= nn;
+      ++run;
+      continue;
+    }
+    auto& [name, body] = e.raw_sections[section];
+    std::ostringstream text;
+    for (std::size_t i = first, end = first + std::stoull(body); i < end; ++i)
+      write_node_line(text, e.node_tags[i], &mesh_.xyz[3 * i]);
+    name = "abaqus:text";
+    body = text.str();
+    run = node_runs_.erase(run);
+  }
+  const auto erase = [](auto& items, std::size_t first, std::size_t count) {
+    items.erase(items.begin() + static_cast<std::ptrdiff_t>(first),
+                items.begin() + static_cast<std::ptrdiff_t>(first + count));
+  };
+  erase(mesh_.xyz, 3 * nf, 3 * nn);
+  erase(e.node_tags, nf, nn);
+  erase(node_keys_, nf, nn);
+  erase(node_marks_, nf, nn);
+  sets_.drop_nodes(nf, nn);
+
+  // Its elements: tets and others of each kind come in read order, so the
+  // part's are one run of each.
+  const std::size_t ef = part.element_first, en = part.element_end - ef;
+  std::size_t tf = tet_ids_.size(), tn = 0, of = others_at_.size(), on = 0;
+  for (std::size_t g = ef; g < ef + en; ++g) {
+    const std::int64_t at = element_at_[g];
+    if (at >= 0) {
+      tf = std::min(tf, static_cast<std::size_t>(at));
+      ++tn;
+    } else {
+      of = std::min(of, static_cast<std::size_t>(-1 - at));
+      ++on;
+    }
+  }
+  if (tn != 0) {
+    const auto each = static_cast<std::size_t>(tet_nodes_each_);
+    erase(tet_ids_, tf, tn);
+    erase(tet_nodes_, each * tf, each * tn);
+    erase(tet_elsets_, tf, tn);
+  }
+  // Per kind, the part's elements: how many, from which.
+  std::vector<std::size_t> gone(others_.size(), 0), from(others_.size(), 0);
+  for (std::size_t k = of + on; k-- > of;) {
+    ++gone[others_at_[k].first];
+    from[others_at_[k].first] = others_at_[k].second;
+  }
+  for (std::size_t b = 0; b < others_.size(); ++b) {
+    if (gone[b] == 0) continue;
+    Others& o = others_[b];
+    const auto n = static_cast<std::size_t>(o.type.nodes);
+    erase(o.ids, from[b], gone[b]);
+    erase(o.nodes, n * from[b], n * gone[b]);
+    erase(o.elsets, from[b], gone[b]);
+  }
+  erase(others_at_, of, on);
+  for (std::size_t k = of; k < others_at_.size(); ++k) others_at_[k].second -= gone[others_at_[k].first];
+  // A kind that only the part had is gone.
+  for (std::size_t b = others_.size(); b-- > 0;) {
+    if (!others_[b].ids.empty()) continue;
+    erase(others_, b, 1);
+    for (auto& [block, i] : others_at_)
+      if (block > b) --block;
+  }
+  for (std::size_t g = ef + en; g < element_at_.size(); ++g) {
+    std::int64_t& at = element_at_[g];
+    at = at >= 0 ? at - static_cast<std::int64_t>(tn) : at + static_cast<std::int64_t>(on);
+  }
+  erase(element_ids_, ef, en);
+  erase(element_keys_, ef, en);
+  erase(element_marks_, ef, en);
+  erase(element_at_, ef, en);
+  sets_.drop_elements(ef, en);
+
+  // What the part defines names nothing now; later parts' items move down.
+  const std::string prefix = part.name + "/";
+  const auto in_part = [&](const std::string& name) { return name.compare(0, prefix.size(), prefix) == 0; };
+  sections_.erase(std::remove_if(sections_.begin(), sections_.end(), [&](const Section& s) { return in_part(s.elset); }),
+                  sections_.end());
+  for (std::size_t i = elset_order_.size(); i-- > 0;)
+    if (in_part(elset_order_[i])) {
+      erase(elset_order_, i, 1);
+      erase(elset_order_written_, i, 1);
+    }
+  pin_refs_.erase(std::remove_if(pin_refs_.begin(), pin_refs_.end(), [&](const PinRef& r) { return r.scope == p + 1; }),
+                  pin_refs_.end());
+  parts_[p].node_end = nf;  // holds nothing now
+  parts_[p].element_end = ef;
+  for (std::size_t q = p + 1; q < parts_.size(); ++q) {
+    parts_[q].node_first -= nn;
+    parts_[q].node_end -= nn;
+    parts_[q].element_first -= en;
+    parts_[q].element_end -= en;
+  }
 }
 
 long long DeckReader::key(std::size_t scope, long long number) const {

@@ -37,7 +37,8 @@
 //    "Instance.Set" name a part's node and set, *NSET/*ELSET, INSTANCE= list
 //    a part's numbers and sets, a plain number names a node of the assembly
 //    itself (*NODE inside *ASSEMBLY: reference points, which no element
-//    holds). Refused with the line: a part instanced twice or never,
+//    holds). A part that no instance places is left out of the mesh, its
+//    lines kept as text. Refused with the line: a part instanced twice,
 //    keywords inside *INSTANCE, *ELEMENT inside *ASSEMBLY, nested or
 //    unclosed structure, *INSTANCE of an unknown part or without PART=,
 //    nodes or elements outside parts in a deck with parts.

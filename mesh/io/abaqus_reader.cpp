@@ -392,9 +392,9 @@ TetMesh DeckReader::read(const std::string& source) {
     }
   }
   finish_block();
-  finish_structure();
   flush_nodes();
   if (!text_.empty()) mesh_.extras.raw_sections.emplace_back("abaqus:text", std::move(text_));
+  finish_structure();
   if (mesh_.num_nodes() == 0) throw InputError(source, "no *NODE lines: not an Abaqus mesh");
   if (tet_ids_.empty()) throw InputError(source, "no tets (C3D4 or C3D10 elements): a volume mesh is needed");
   resolve();

@@ -91,6 +91,7 @@ class DeckReader {
   void check_mesh_level(const Keyword& kw) const;  // *NODE and *ELEMENT
   void finish_instance();
   void finish_structure();
+  void drop_part(std::size_t part);  // a part without an instance leaves the mesh
   bool has_parts() const { return !parts_.empty(); }
   long long key(std::size_t scope, long long number) const;  // fails at the current line if too large
   // A set's key: its name (set_name) within a part, "PART/NAME".

@@ -44,6 +44,18 @@ void DeckSets::collect(const std::map<std::string, Set>& sets, const std::string
   done.push_back(name);
 }
 
+void DeckSets::drop(std::map<std::string, Set>& sets, std::size_t first, std::size_t count) {
+  // A run lies in one part, so it is either gone or after the part.
+  for (auto& [name, set] : sets) {
+    auto& runs = set.runs;
+    runs.erase(std::remove_if(runs.begin(), runs.end(),
+                              [&](const auto& run) { return run.first >= first && run.first < first + count; }),
+               runs.end());
+    for (auto& run : runs)
+      if (run.first >= first + count) run.first -= count;
+  }
+}
+
 std::vector<std::size_t> DeckSets::elements(const std::string& name, const std::string& where,
                                             const IdIndex& element_ids) const {
   std::vector<std::size_t> items;

@@ -39,6 +39,10 @@ class DeckSets {
     elsets_[name].runs.emplace_back(first, count);
   }
   bool has_nset(const std::string& name) const { return nsets_.count(name) != 0; }
+  // Forgets `count` nodes (elements) from read index `first` that leave
+  // the mesh, and the runs that held them; later indices move down.
+  void drop_nodes(std::size_t first, std::size_t count) { drop(nsets_, first, count); }
+  void drop_elements(std::size_t first, std::size_t count) { drop(elsets_, first, count); }
   // Messages give the numbers of keys within parts (abaqus_scopes.hpp).
   void number_within_parts() { parts_ = true; }
 
@@ -66,6 +70,8 @@ class DeckSets {
                const IdIndex& ids, const char* kind, std::vector<std::size_t>& items,
                std::vector<std::string>& path, std::vector<std::string>& done,
                std::vector<const SetPart*>& parts_with_elsets) const;
+
+  static void drop(std::map<std::string, Set>& sets, std::size_t first, std::size_t count);
 
   std::map<std::string, Set> nsets_, elsets_;
   bool parts_ = false;

@@ -11,6 +11,7 @@
 #include "mesh/io/abaqus_deck_lines.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
 #include "mesh/io/abaqus_io.hpp"
+#include "mesh/io/abaqus_node_line.hpp"
 #include "mesh/io/abaqus_placement.hpp"
 #include "mesh/io/abaqus_set_names.hpp"
 #include "mesh/io/file_numbers.hpp"
@@ -25,14 +26,7 @@ namespace {
 // Abaqus reads at most 16 entries from a data line of a set.
 constexpr std::size_t kSetEntriesPerLine = 16;
 
-void write_node(std::ostream& out, long long id, const double* xyz) {
-  put_integer(out, id);
-  for (int c = 0; c < 3; ++c) {
-    out << ", ";
-    put_real(out, xyz[c]);
-  }
-  out << '\n';
-}
+void write_node(std::ostream& out, long long id, const double* xyz) { abaqus::write_node_line(out, id, xyz); }
 
 // --- A deck read with the mesh --------------------------------------------
 

@@ -133,8 +133,9 @@ void DeckReader::finish_structure() {
   // A part that no instance places is no body of the assembly (Abaqus
   // builds the model from the instances): its lines stay, as text.
   if (has_parts() && instances_.empty())
-    throw InputError(parts_.front().where, "no part has an *INSTANCE, so the model has no body: place the parts in "
-                                           "the *ASSEMBLY by *INSTANCE, NAME=..., PART=...");
+    throw InputError(parts_.front().where,
+                     "no part has an *INSTANCE, so the model has no body: place the parts in "
+                     "the *ASSEMBLY by *INSTANCE, NAME=..., PART=...");
   for (std::size_t p = parts_.size(); p-- > 0;)
     if (parts_[p].instance == 0) drop_part(p);
   if (has_parts()) sets_.number_within_parts();
@@ -226,8 +227,9 @@ void DeckReader::drop_part(std::size_t p) {
   // What the part defines names nothing now; later parts' items move down.
   const std::string prefix = part.name + "/";
   const auto in_part = [&](const std::string& name) { return name.compare(0, prefix.size(), prefix) == 0; };
-  sections_.erase(std::remove_if(sections_.begin(), sections_.end(), [&](const Section& s) { return in_part(s.elset); }),
-                  sections_.end());
+  sections_.erase(
+      std::remove_if(sections_.begin(), sections_.end(), [&](const Section& s) { return in_part(s.elset); }),
+      sections_.end());
   for (std::size_t i = elset_order_.size(); i-- > 0;)
     if (in_part(elset_order_[i])) {
       erase(elset_order_, i, 1);

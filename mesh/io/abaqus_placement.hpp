@@ -2,10 +2,11 @@
 // Where an *INSTANCE puts its part in the assembly (not a public API): the
 // optional data lines of *INSTANCE, PART=..., a translation "x, y, z" and a
 // rotation "ax, ay, az, bx, by, bz, angle" about the axis from point a to
-// point b, in degrees, right-handed, the translation applied first (Abaqus
-// Keywords Reference, *INSTANCE; Abaqus/CAE writes the axis through the
-// translated part). A node at part coordinates p sits at
-// R (p + t - a) + a in the assembly.
+// point b, in degrees, right-handed (Abaqus Keywords Reference, *INSTANCE),
+// the translation applied first: the Reference lists the lines without
+// saying their order, and we read it from the decks Abaqus/CAE writes, whose
+// rotation axis passes through the translated part. A node at part
+// coordinates p sits at R (p + t - a) + a in the assembly.
 #include <array>
 #include <string>
 #include <string_view>

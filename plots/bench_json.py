@@ -29,11 +29,12 @@ What it does with the file (google/benchmark 1.7.x JSON, --benchmark_out):
   * entries that report an error (error_occurred / skipped) are left out and
     listed in `errors`; unknown fields are ignored; custom context values
     (written as strings by AddCustomContext) are parsed as numbers on request.
-  * an empty file (bench_smooth writes one when no benchmark was selected) and
-    a file with an empty "benchmarks" list raise BenchInputError, so every
-    script exits 2 with a message instead of a traceback or empty tables; so
-    does a file whose every benchmark reported an error, for the scripts that
-    render it (load_result's need_runs).
+  * an empty file (bench_smooth writes one when no benchmark was selected),
+    a file with an empty "benchmarks" list and a file cut off by a run that
+    stopped early raise BenchInputError, so every script exits 2 with a
+    message instead of a traceback or empty tables; so does a file whose
+    every benchmark reported an error, for the scripts that render it
+    (load_result's need_runs).
 """
 
 import json
@@ -63,6 +64,7 @@ TIME_UNIT_TO_MS = {"ns": 1e-6, "us": 1e-3, "ms": 1.0, "s": 1e3}
 # the context is the GPU families' precision.
 CPU_PRECISION = "double"
 NO_BENCHMARK_HINT = "no benchmark ran? check --benchmark_filter/--models"
+CUT_SHORT_HINT = "the run that wrote it stopped early (killed, or bench_smooth failed); run it again"
 
 _SUFFIX_SEGMENT = re.compile(
     r"^(manual_time|real_time|process_time|repeats:\d+|iterations:\d+|"
@@ -407,6 +409,8 @@ def load_result(path, need_runs=False):
     reads one as a regression instead. The copy-bandwidth run alone is
     nothing to render either.
     """
+    if os.path.isdir(path):
+        raise BenchInputError(f"{path}: a folder, not a result file")
     if not os.path.isfile(path):
         raise BenchInputError(f"{path}: no such file")
     try:
@@ -416,6 +420,13 @@ def load_result(path, need_runs=False):
             raise BenchInputError(f"{path}: empty file: {NO_BENCHMARK_HINT}")
         document = json.loads(text)
     except json.JSONDecodeError as error:
+        # Google Benchmark writes each result as it finishes, one field a
+        # line, so a run that was killed or threw leaves the file cut off:
+        # the parser stops at its end or inside its last line.
+        body = text.rstrip()
+        if error.pos >= len(body) or ("\n" in body and "\n" not in body[error.pos:]):
+            raise BenchInputError(f"{path}: the JSON ends before it is complete (line {error.lineno}): "
+                                  f"{CUT_SHORT_HINT}") from error
         raise BenchInputError(f"{path}: bad JSON at line {error.lineno}, column {error.colno}: {error.msg}") from error
     except (OSError, UnicodeDecodeError) as error:
         raise BenchInputError(f"{path}: cannot read: {error}") from error

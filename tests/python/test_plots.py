@@ -256,6 +256,28 @@ class LoaderTests(unittest.TestCase):
                     bj.load_result(path)
                 self.assertIn(path, str(caught.exception))
 
+    def test_a_file_cut_off_by_a_stopped_run_says_so(self):
+        # Google Benchmark writes one field a line as each result finishes: a
+        # killed run ends after a result, or inside one.
+        with open(FIXTURE, encoding="utf-8") as handle:
+            text = handle.read()
+        after_result = text.index("\n    },", text.index("\"benchmarks\"")) + len("\n    }")
+        inside_name = text.index("\"name\": \"FormB/") + len("\"name\": \"For")
+        with tempfile.TemporaryDirectory() as folder:
+            for stem, cut in (("after_result", after_result), ("inside_name", inside_name)):
+                path = os.path.join(folder, stem + ".json")
+                with open(path, "w", encoding="utf-8") as handle:
+                    handle.write(text[:cut] + "\n")
+                message = str(self.load_error(path))
+                self.assertIn(f"{path}: the JSON ends before it is complete", message)
+                self.assertIn("stopped early", message)
+            # A mistake inside the file is still bad JSON, where it is.
+            broken = os.path.join(folder, "broken.json")
+            with open(broken, "w", encoding="utf-8") as handle:
+                handle.write(text.replace("\"benchmarks\"", "benchmarks", 1))
+            self.assertIn("bad JSON at line", str(self.load_error(broken)))
+            self.assertIn(f"{folder}: a folder, not a result file", str(self.load_error(folder)))
+
     def test_empty_file_and_no_benchmarks(self):
         # bench_smooth writes a 0-byte file when nothing was selected.
         with tempfile.TemporaryDirectory() as folder:

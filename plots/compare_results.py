@@ -63,7 +63,8 @@ Exit status: 0 = within thresholds (warnings allowed), 1 = a regression: a
 benchmark or the geomean beyond a threshold, a benchmark that errored in NEW,
 or one missing from NEW or without the metric there (without --allow-missing),
 2 = bad input (missing,
-empty or bad JSON, no benchmark in common, different precisions, bad option).
+empty or bad JSON, no benchmark in common, different precisions, a --csv file
+that cannot be written, bad option).
 
 Examples:
     compare_results.py results/h100-80gb-hbm3/bench_smooth.json new.json               # 10 % on each and on the geomean
@@ -173,6 +174,9 @@ def parse_args(argv):
             args.filter = re.compile(args.filter)
         except re.error as error:
             raise UsageError(f"bad --filter regex {args.filter!r}: {error}") from error
+    # Said before the comparison is printed, not after, with the verdict lost.
+    if args.csv is not None and not os.path.isdir(os.path.dirname(os.path.abspath(args.csv))):
+        raise UsageError(f"--csv {args.csv}: no folder {os.path.dirname(os.path.abspath(args.csv))} to write it in")
     return args
 
 
@@ -384,7 +388,10 @@ def run(args):
     print()
     print_table(comparison, args)
     if args.csv:
-        write_csv(comparison, args.csv)
+        try:
+            write_csv(comparison, args.csv)
+        except OSError as error:
+            raise bj.BenchInputError(f"--csv {args.csv}: cannot write: {error.strerror}") from error
     failures = verdict(comparison, args)
     print()
     for warning in missing_warnings(comparison, args):

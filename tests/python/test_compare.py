@@ -392,6 +392,18 @@ class OutputTests(unittest.TestCase):
             self.assertAlmostEqual(float(by_name[name]["ratio_new_over_old"]), factor, places=6)
         self.assertIn("geomean", by_name)
 
+    def test_csv_that_cannot_be_written_is_bad_input(self):
+        with tempfile.TemporaryDirectory() as folder:
+            nowhere = os.path.join(folder, "no-such-folder", "cmp.csv")
+            completed = compare(CLEAN_BASE, CLEAN_BASE, "--csv", nowhere)
+            self.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+            self.assertIn(f"--csv {nowhere}: no folder", completed.stderr)
+            self.assertEqual(completed.stdout, "", "the comparison is printed only when its CSV can be written")
+            completed = compare(CLEAN_BASE, CLEAN_BASE, "--csv", folder)  # a folder, not a file
+            self.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+            self.assertIn(f"--csv {folder}: cannot write", completed.stderr)
+            self.assertNotIn("Traceback", completed.stderr)
+
     def test_gbench_delegation(self):
         completed = compare(BASE, SLOWER, "--gbench")
         self.assertEqual(completed.returncode, 1)  # the verdict stays ours

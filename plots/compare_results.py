@@ -63,8 +63,8 @@ Exit status: 0 = within thresholds (warnings allowed), 1 = a regression: a
 benchmark or the geomean beyond a threshold, a benchmark that errored in NEW,
 or one missing from NEW or without the metric there (without --allow-missing),
 2 = bad input (missing,
-empty or bad JSON, no benchmark in common, different precisions, a --csv file
-that cannot be written, bad option).
+empty or bad JSON, no benchmark in common, a metric neither file has, different
+precisions, a --csv file that cannot be written, bad option).
 
 Examples:
     compare_results.py results/h100-80gb-hbm3/bench_smooth.json new.json               # 10 % on each and on the geomean
@@ -178,6 +178,20 @@ def parse_args(argv):
     if args.csv is not None and not os.path.isdir(os.path.dirname(os.path.abspath(args.csv))):
         raise UsageError(f"--csv {args.csv}: no folder {os.path.dirname(os.path.abspath(args.csv))} to write it in")
     return args
+
+
+def check_metric(old, new, metric):
+    """A metric that no benchmark of either file has is a misspelling, not a regression."""
+    if metric in ("real_time", "cpu_time"):
+        return
+    runs = list(old.runs.values()) + list(new.runs.values())
+    if any(metric in run.counters for run in runs):
+        return
+    # Numbered families (hist_before_0..9, colour_ms_0..) are named once.
+    counters = sorted({re.sub(r"_\d+$", "_N", key) for run in runs for key in run.counters})
+    shown = ", ".join(counters)
+    raise bj.BenchInputError(f"--metric {metric}: no benchmark of {old.path} or {new.path} has it; "
+                             f"real_time, cpu_time or a counter: {shown or 'none in these files'}")
 
 
 def compare(old, new, metric, name_filter=None):
@@ -371,6 +385,7 @@ def gbench_report(old_path, new_path):
 
 def run(args):
     old, new = bj.load_result(args.old), bj.load_result(args.new)
+    check_metric(old, new, args.metric)
     comparison = compare(old, new, args.metric, args.filter)
     if not comparison.rows and not comparison.errored_new and not comparison.lost:
         # Nothing measured in common and nothing broken in NEW: the wrong file, filter or metric.

@@ -404,6 +404,17 @@ class OutputTests(unittest.TestCase):
             self.assertIn(f"--csv {folder}: cannot write", completed.stderr)
             self.assertNotIn("Traceback", completed.stderr)
 
+    def test_a_metric_neither_file_has_is_bad_input(self):
+        # A misspelt counter is not "no usable value" for every benchmark, and
+        # an error in NEW must not turn it into a regression (exit 1).
+        for new in (CLEAN_SLOWER, SLOWER):
+            completed = compare(CLEAN_BASE, new, "--metric", "ms_per_swep")
+            self.assertEqual(completed.returncode, 2, completed.stdout + completed.stderr)
+            self.assertIn("--metric ms_per_swep: no benchmark of", completed.stderr)
+            self.assertIn("ms_per_sweep", completed.stderr)
+            self.assertIn("hist_before_N", completed.stderr)
+            self.assertNotIn("hist_before_0", completed.stderr)
+
     def test_gbench_delegation(self):
         completed = compare(BASE, SLOWER, "--gbench")
         self.assertEqual(completed.returncode, 1)  # the verdict stays ours

@@ -47,6 +47,20 @@ if [ -n "$logs" ]; then
   [ $found -eq 1 ] || fail "--logs $logs holds none of ${log_files[*]}"
 fi
 cd "$(dirname "$0")/.."
+# Each result is read before anything is staged: a message then names the
+# caller's file, not the staged copy, and a FLOAT.json that report.py never
+# renders is not filed when it is cut off or not benchmark JSON.
+for f in "$json" ${float:+"$float"}; do
+  /usr/bin/python3 -c '
+import sys
+sys.path.insert(0, "plots")
+import bench_json
+try:
+    bench_json.load_result(sys.argv[1], need_runs=True)
+except bench_json.BenchInputError as error:
+    sys.exit(f"publish_results: {error}")
+' "$f" || exit 2
+done
 if [ -z "$dest" ]; then
   device=$(/usr/bin/python3 -c '
 import json, re, sys

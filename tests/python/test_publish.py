@@ -103,6 +103,24 @@ class PublishResults(unittest.TestCase):
                 open(SMALL, encoding="utf-8") as original:
             self.assertEqual(json.load(kept), json.load(original))
 
+    def test_a_result_cut_off_or_not_benchmark_json_is_named_and_not_filed(self):
+        # FLOAT.json is filed, not rendered: it is read all the same. A bad
+        # BENCH.json is named as the caller gave it, not as its staged copy.
+        self.assertEqual(publish("--dest", self.dest, SMALL).returncode, 0)
+        before = sorted(os.listdir(self.dest))
+        with open(SMALL, encoding="utf-8") as handle:
+            text = handle.read()
+        cut = self.write("cut.json", text[:text.index("\n    },", text.index("\"benchmarks\"")) + 6] + "\n")
+        other = self.write("other.json", json.dumps({"context": {}}))
+        for args, named, why in (([SMALL, cut], cut, "the JSON ends before it is complete"),
+                                 ([SMALL, other], other, "not Google Benchmark JSON"),
+                                 ([cut], cut, "the JSON ends before it is complete")):
+            done = publish("--dest", self.dest, *args)
+            self.assertEqual(done.returncode, 2, args)
+            self.assertIn(f"publish_results: {named}: {why}", done.stderr)
+            self.assertNotIn("/tmp/tmp.", done.stderr, "names the staging folder instead of the caller's file")
+            self.assertEqual(sorted(os.listdir(self.dest)), before, args)
+
     def test_bad_arguments_change_nothing(self):
         logs = os.path.join(self.tmp, "out")
         os.mkdir(logs)
@@ -148,7 +166,7 @@ class PublishResults(unittest.TestCase):
         done = subprocess.run(["bash", os.path.join(repo, "scripts", "publish_results.sh"), self.write("bad.json", "{x")],
                               capture_output=True, text=True, timeout=300)
         self.assertEqual(done.returncode, 2, done.stderr)
-        self.assertIn("not benchmark JSON", done.stderr)
+        self.assertIn("bad.json: bad JSON", done.stderr)
 
 
 if __name__ == "__main__":

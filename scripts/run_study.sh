@@ -22,8 +22,12 @@ export TETSMOOTH_MESH_CACHE=${TETSMOOTH_MESH_CACHE:-$PWD/meshes}
 TETSMOOTH_GIT_SHA=$(scripts/git_version.sh)
 export TETSMOOTH_GIT_SHA
 tmp=$(mktemp -d)
-# A failed run keeps what bench_smooth wrote, and says where.
-trap 'status=$?; if [ $status -eq 0 ]; then rm -rf "$tmp"; else echo "run_study: failed; raw results kept in $tmp" >&2; fi' EXIT
+# A failed run keeps what bench_smooth wrote, and says where; a run that
+# wrote nothing (a bad flag, no benchmark selected) leaves no folder behind.
+trap 'status=$?
+if [ $status -eq 0 ]; then rm -rf "$tmp"
+elif [ -s "$tmp/bench_smooth.json" ]; then echo "run_study: failed; raw results kept in $tmp/bench_smooth.json" >&2
+else rm -rf "$tmp"; echo "run_study: failed before bench_smooth wrote any result" >&2; fi' EXIT
 "$build"/bench/bench_smooth --scaling=lattice-215 --benchmark_repetitions="${REPS:-3}" --benchmark_min_time=0.01 \
   --benchmark_out="$tmp/bench_smooth.json" --benchmark_out_format=json "$@"
 scripts/publish_results.sh "$tmp/bench_smooth.json"

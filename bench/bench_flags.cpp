@@ -107,7 +107,7 @@ const char* own_flags_help() {
          "  --no-gpu               skip the GPU families\n"
          "Environment: TETSMOOTH_MESH_CACHE (generated meshes, default ./meshes),\n"
          "TETSMOOTH_GIT_SHA (the commit written into the JSON's context).\n"
-         "Exit status: 0 done, 1 a run failed, 2 a bad flag.\n"
+         "Exit status: 0 done, 1 a run failed, 2 a bad flag or no benchmark selected.\n"
          "\n"
          "Google Benchmark's flags follow.\n\n";
 }

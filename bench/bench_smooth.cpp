@@ -30,7 +30,10 @@ int main(int argc, char** argv) {
     if (gethostname(host, sizeof host - 1) == 0) benchmark::AddCustomContext("host_name", host);
     for (const auto& [key, value] : tetsmooth::bench::register_benchmarks(config))
       benchmark::AddCustomContext(key, value);
-    benchmark::RunSpecifiedBenchmarks();
+    // A filter that matches nothing, or is no regex, is a bad flag, not a
+    // run: Google Benchmark says which above and writes an empty --benchmark_out.
+    if (benchmark::RunSpecifiedBenchmarks() == 0)
+      throw tetsmooth::UsageError("--benchmark_filter: no benchmark selected (--benchmark_list_tests=true lists them)");
     benchmark::Shutdown();
   } catch (const tetsmooth::UsageError& e) {
     std::fprintf(stderr, "bench_smooth: error: %s (see --help)\n", e.what());

@@ -33,6 +33,10 @@ std::string checked_lattice(const std::string& name) {
   const auto [end, ec] = std::from_chars(first, last, n);
   if (name.rfind(prefix, 0) != 0 || ec != std::errc() || end != last || n < 1)
     throw UsageError("--scaling: '" + name + "' is not a lattice-N mesh (N cubes a side, N >= 1)");
+  // Checked here, not when a GPU family first builds the mesh mid-run.
+  if (n > kMaxLatticeN)
+    throw UsageError("--scaling: '" + name + "' is too large: the largest lattice is lattice-" +
+                     std::to_string(kMaxLatticeN));
   return name;
 }
 

@@ -24,10 +24,7 @@ constexpr int kKuhnTets[6][4] = {
     {0, 4, 7, 6},  // z, y, x
 };
 
-// The node-to-tet table holds 4 entries a tet under 32-bit offsets
-// (validate_mesh), and 24 n^3 reaches that limit long before (n+1)^3 nodes
-// reach theirs.
-constexpr int kMaxLatticeN = 447;
+// kMaxLatticeN (models.hpp) is the largest n whose node-to-tet table fits.
 constexpr std::int64_t kMaxIndex = std::numeric_limits<index_t>::max();
 static_assert(24 * std::int64_t{kMaxLatticeN} * kMaxLatticeN * kMaxLatticeN <= kMaxIndex &&
               24 * std::int64_t{kMaxLatticeN + 1} * (kMaxLatticeN + 1) * (kMaxLatticeN + 1) > kMaxIndex);

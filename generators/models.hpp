@@ -85,4 +85,9 @@ inline constexpr double kLatticeDefaultJitter = 0.25;
 // OpenMP-parallel; the mesh does not depend on the number of threads.
 TetMesh generate_lattice(int n, double jitter, std::uint64_t seed);
 
+// The largest n generate_lattice (and "lattice-N") takes: the node-to-tet
+// table holds 4 entries a tet under 32-bit offsets (validate_mesh), and
+// 24 n^3 reaches that limit long before (n+1)^3 nodes reach theirs.
+inline constexpr int kMaxLatticeN = 447;
+
 }  // namespace tetsmooth

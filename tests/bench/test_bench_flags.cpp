@@ -67,6 +67,11 @@ TEST(BenchFlags, ScalingNoneDropsTheLatticeAndRepeatsCountOnce) {
   EXPECT_EQ(c.scaling, (std::vector<std::string>{"lattice-20"}));
 }
 
+TEST(BenchFlags, TheLargestLatticeIsAccepted) {
+  Args a({"--scaling=lattice-447"});
+  EXPECT_EQ(a.take().scaling, (std::vector<std::string>{"lattice-447"}));
+}
+
 TEST(BenchFlags, BadValuesNameTheFlag) {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"--models=5k,12k", "--models: unknown model '12k'"},
@@ -76,6 +81,8 @@ TEST(BenchFlags, BadValuesNameTheFlag) {
       {"--scaling=lattice-0", "--scaling: 'lattice-0'"},
       {"--scaling=109k", "--scaling: '109k'"},
       {"--scaling=lattice-9x", "--scaling: 'lattice-9x'"},
+      {"--scaling=lattice-448", "--scaling: 'lattice-448' is too large: the largest lattice is lattice-447"},
+      {"--scaling=lattice-99999999999", "--scaling: 'lattice-99999999999'"},
       {"--precision=half", "--precision: 'half'"},
       {"--coloured-lanes=abc", "--coloured-lanes: 'abc'"},
       {"--coloured-lanes=12", "--coloured-lanes: '12'"},

@@ -84,6 +84,13 @@ BenchConfig take_own_flags(int& argc, char** argv) {
       c.precision = p == "float" ? Precision::Float : Precision::Double;
     } else if (a.rfind("--coloured-lanes=", 0) == 0) {
       c.coloured_lanes = checked_lanes(value("--coloured-lanes="));
+    } else if (a == "--models" || a == "--scaling" || a == "--precision" || a == "--coloured-lanes") {
+      // Google Benchmark would call "--models 5k" two unrecognized flags.
+      const char* example = a == "--models"      ? "--models=5k,10k"
+                            : a == "--scaling"   ? "--scaling=lattice-215"
+                            : a == "--precision" ? "--precision=float"
+                                                 : "--coloured-lanes=8";
+      throw UsageError(a + ": the value follows '=', as in " + example);
     } else if (a == "--no-cpu") {
       c.cpu = false;
     } else if (a == "--no-gpu") {

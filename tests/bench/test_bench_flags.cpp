@@ -87,6 +87,10 @@ TEST(BenchFlags, BadValuesNameTheFlag) {
       {"--coloured-lanes=abc", "--coloured-lanes: 'abc'"},
       {"--coloured-lanes=12", "--coloured-lanes: '12'"},
       {"--coloured-lanes=8x", "--coloured-lanes: '8x'"},
+      {"--models", "--models: the value follows '=', as in --models=5k,10k"},
+      {"--scaling", "--scaling: the value follows '='"},
+      {"--precision", "--precision: the value follows '='"},
+      {"--coloured-lanes", "--coloured-lanes: the value follows '='"},
   };
   for (const auto& [flag, message] : cases) {
     Args a({flag});

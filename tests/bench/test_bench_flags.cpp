@@ -74,7 +74,7 @@ TEST(BenchFlags, TheLargestLatticeIsAccepted) {
 
 TEST(BenchFlags, BadValuesNameTheFlag) {
   const std::vector<std::pair<std::string, std::string>> cases{
-      {"--models=5k,12k", "--models: unknown model '12k'"},
+      {"--models=5k,12k", "--models: unknown model '12k'; expected some of 5k, 10k, 59k, 77k (or slope-77k), 109k;"},
       {"--models=lattice-20", "--models: unknown model 'lattice-20'"},
       {"--models=", "--models: empty list"},
       {"--scaling=lattice-", "--scaling: 'lattice-'"},

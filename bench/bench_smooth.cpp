@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "bench/bench_flags.hpp"
+#include "bench/git_sha.hpp"
 #include "bench/command_line.hpp"
 #include "bench/bench_registry.hpp"
 #include "mesh/errors.hpp"

@@ -465,6 +465,21 @@ def load_for_rendering(path, program):
         return None
 
 
+def make_outdir(path, program):
+    """Create a rendering script's output folder; False once the reason is
+    printed on stderr as "program: reason" (the script then exits with
+    status 2 instead of a traceback)."""
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as error:
+        print(f"{program}: cannot write into {path}: {error.strerror}", file=sys.stderr)
+        return False
+    if not os.access(path, os.W_OK):
+        print(f"{program}: cannot write into {path}: permission denied", file=sys.stderr)
+        return False
+    return True
+
+
 def ratio(numerator, denominator):
     """numerator / denominator, or None when either is missing or the denominator is not positive."""
     if numerator is None or denominator is None or denominator <= 0:

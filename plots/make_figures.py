@@ -20,7 +20,8 @@ span more than a decade, so the panels of a row always share one scale; the
 axis label says "log scale" then.  Titles name the GPU precision of the run
 ("float" or "double"; CPU runs are always double).  Models that were not run
 leave gaps; a panel with nothing measured says so.
-Exit status: 0 on success, 2 when the result file is missing, empty or not benchmark JSON.
+Exit status: 0 on success, 2 when the result file is missing, empty or not benchmark JSON,
+or OUTDIR cannot be made.
 """
 
 import argparse
@@ -420,7 +421,7 @@ def parse_args(argv):
 def main(argv=None):
     args = parse_args(argv)
     result = bj.load_for_rendering(args.result, "make_figures")
-    if result is None:
+    if result is None or not bj.make_outdir(args.outdir, "make_figures"):
         return 2
     for path in write_figures(result, args.outdir, args.metric, args.quality_model):
         print(path)

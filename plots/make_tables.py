@@ -21,7 +21,8 @@ in Markdown.  Times are the chosen metric (default real_time, which is the
 CUDA-event time for GPU families) in ms: the median aggregate when the run has
 repetitions, else the mean of the iterations.  Speedup = our serial CPU time
 over the variant's time, as the paper defines it.  Exit status: 0 on success,
-2 when the result file is missing, empty or not benchmark JSON.
+2 when the result file is missing, empty or not benchmark JSON, or OUTDIR
+cannot be made.
 """
 
 import argparse
@@ -477,7 +478,7 @@ def parse_args(argv):
 def main(argv=None):
     args = parse_args(argv)
     result = bj.load_for_rendering(args.result, "make_tables")
-    if result is None:
+    if result is None or not bj.make_outdir(args.outdir, "make_tables"):
         return 2
     for path in write_tables(result, args.outdir, args.metric):
         print(path)

@@ -15,7 +15,7 @@ bench_smooth, e.g.
     /usr/bin/python3 plots/report.py results/h100-80gb-hbm3/bench_smooth.json results/h100-80gb-hbm3
 
 Exit status: 0 on success, 2 when the result file is missing, empty or not
-benchmark JSON (nothing is written then).
+benchmark JSON, or OUTDIR cannot be made (nothing is written then).
 """
 
 import argparse
@@ -35,7 +35,7 @@ def parse_args(argv):
 def main(argv=None):
     args = parse_args(argv)
     result = bj.load_for_rendering(args.result, "report")
-    if result is None:
+    if result is None or not bj.make_outdir(args.outdir, "report"):
         return 2
     print(f"report: {args.result}: precision: {result.precision_text()}")
     written = make_tables.write_tables(result, args.outdir, args.metric)

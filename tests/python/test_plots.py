@@ -800,6 +800,17 @@ class OptionAndEdgeTests(unittest.TestCase):
                     self.assertNotIn("Traceback", completed.stderr)
             self.assertFalse(os.path.exists(os.path.join(out, "x")))
 
+    def test_an_output_folder_that_cannot_be_made_exits_2(self):
+        with tempfile.TemporaryDirectory() as out:
+            blocker = os.path.join(out, "a file")
+            open(blocker, "w", encoding="utf-8").close()
+            inside = os.path.join(blocker, "results")
+            for script in ("report.py", "make_tables.py", "make_figures.py"):
+                completed = run_script(script, FIXTURE, inside)
+                self.assertEqual(completed.returncode, 2, script)
+                self.assertIn(f"{script[:-3]}: cannot write into {inside}", completed.stderr)
+                self.assertNotIn("Traceback", completed.stderr)
+
     def test_slope_77k_run_fills_the_tables(self):
         document = raw_fixture()
         for item in document["benchmarks"]:

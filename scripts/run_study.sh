@@ -14,6 +14,12 @@
 # see scripts/gpu_bundle.sh and scripts/device_run.sh (README: Results).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Checked before the install and the build, which take minutes.
+reps=${REPS:-3}
+if ! [[ $reps =~ ^[1-9][0-9]*$ ]]; then
+  echo "run_study: REPS must be a positive whole number of repetitions, got '$reps'" >&2
+  exit 2
+fi
 scripts/install_deps.sh
 build=${BUILD_DIR:-build}
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -28,6 +34,6 @@ trap 'status=$?
 if [ $status -eq 0 ]; then rm -rf "$tmp"
 elif [ -s "$tmp/bench_smooth.json" ]; then echo "run_study: failed; raw results kept in $tmp/bench_smooth.json" >&2
 else rm -rf "$tmp"; echo "run_study: failed before bench_smooth wrote any result" >&2; fi' EXIT
-"$build"/bench/bench_smooth --scaling=lattice-215 --benchmark_repetitions="${REPS:-3}" --benchmark_min_time=0.01 \
+"$build"/bench/bench_smooth --scaling=lattice-215 --benchmark_repetitions="$reps" --benchmark_min_time=0.01 \
   --benchmark_out="$tmp/bench_smooth.json" --benchmark_out_format=json "$@"
 scripts/publish_results.sh "$tmp/bench_smooth.json"

@@ -418,6 +418,11 @@ def load_result(path, need_runs=False):
             text = handle.read()
         if not text.strip():
             raise BenchInputError(f"{path}: empty file: {NO_BENCHMARK_HINT}")
+        if not text.lstrip().startswith(("{", "[")):
+            # The console report (bench_smooth > file) or --benchmark_out_format=csv.
+            raise BenchInputError(f"{path}: not JSON (it starts {text.lstrip().splitlines()[0][:40]!r}): a console "
+                                  "or CSV report? bench_smooth writes JSON with --benchmark_out=FILE "
+                                  "--benchmark_out_format=json")
         document = json.loads(text)
     except json.JSONDecodeError as error:
         # Google Benchmark writes each result as it finishes, one field a

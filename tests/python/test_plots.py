@@ -278,6 +278,16 @@ class LoaderTests(unittest.TestCase):
             self.assertIn("bad JSON at line", str(self.load_error(broken)))
             self.assertIn(f"{folder}: a folder, not a result file", str(self.load_error(folder)))
 
+    def test_a_console_or_csv_report_is_not_taken_for_json(self):
+        # bench_smooth > new.json keeps the console report, which starts with the date.
+        with tempfile.TemporaryDirectory() as folder:
+            path = os.path.join(folder, "console.json")
+            with open(path, "w", encoding="utf-8") as handle:
+                handle.write("2026-11-28T04:40:26+00:00\nRunning build/bench/bench_smooth\n")
+            message = str(self.load_error(path))
+            self.assertIn(f"{path}: not JSON (it starts '2026-11-28T04:40:26+00:00')", message)
+            self.assertIn("--benchmark_out=FILE --benchmark_out_format=json", message)
+
     def test_empty_file_and_no_benchmarks(self):
         # bench_smooth writes a 0-byte file when nothing was selected.
         with tempfile.TemporaryDirectory() as folder:

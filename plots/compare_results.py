@@ -46,7 +46,8 @@ Besides the timings it checks what the files are:
   * GPU families run in float and in double are not comparable: when both
     contexts name a gpu_precision and they differ, the check stops with exit
     2 unless --allow-precision-mismatch (CPU families always run in double,
-    so a --filter that keeps only CPU and copy benchmarks is not stopped).
+    so a --filter that keeps only CPU and copy benchmarks is not stopped,
+    nor is a file without GPU runs, whose GPU benchmarks are missing).
   * a different GPU (gpu_name), host (host_name) or CPU count (num_cpus) is a
     warning: the ratios then compare machines, not code.
 
@@ -328,6 +329,11 @@ def check_precision(old, new, comparison, args):
     """Stop (bad input) when the GPU precisions differ; returns warning lines otherwise."""
     before, after = old.gpu_precision(), new.gpu_precision()
     if before == after or not precision_matters(comparison):
+        return []
+    # A run without GPU families (no GPU on its host) still records the
+    # --precision it was given; its GPU benchmarks are missing, not of
+    # another precision, and the check reports them as such.
+    if not (old.has_gpu_runs() and new.has_gpu_runs()):
         return []
     if before is None or after is None:
         return [f"GPU precision not recorded in {old.path if before is None else new.path} "

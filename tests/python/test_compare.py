@@ -329,6 +329,18 @@ class ContextTests(unittest.TestCase):
         # The GPU run does: with it the check stops.
         self.assertEqual(compare(old, new).returncode, 2)
 
+    def test_a_run_without_gpu_families_is_missing_them_not_of_another_precision(self):
+        # bench_smooth on a host without a GPU still records --precision
+        # (double by default): against a float GPU run, its GPU benchmarks are
+        # missing (exit 1, named), not a precision mismatch (exit 2).
+        old = write_result(self.folder.name, "float", self.benchmarks, gpu_precision="float")
+        new = write_result(self.folder.name, "cpu", [bench("Serial/FormB/5k", 10.0)], gpu_name=None)
+        completed = compare(old, new)
+        self.assertEqual(completed.returncode, 1, completed.stdout + completed.stderr)
+        self.assertIn("1 benchmark(s) of OLD missing from NEW", completed.stdout)
+        self.assertIn("FormB/AoS/MultiBlock/5k", completed.stdout)
+        self.assertNotIn("precision", completed.stderr)
+
     def test_unrecorded_precision_is_a_warning(self):
         completed = compare(self.old, self.new(gpu_precision=None))
         self.assertEqual(completed.returncode, 0, completed.stdout + completed.stderr)

@@ -36,4 +36,6 @@ elif [ -s "$tmp/bench_smooth.json" ]; then echo "run_study: failed; raw results 
 else rm -rf "$tmp"; echo "run_study: failed before bench_smooth wrote any result" >&2; fi' EXIT
 "$build"/bench/bench_smooth --scaling=lattice-215 --benchmark_repetitions="$reps" --benchmark_min_time=0.01 \
   --benchmark_out="$tmp/bench_smooth.json" --benchmark_out_format=json "$@"
+# --help and --benchmark_list_tests=true succeed without a result: nothing to publish.
+[ -s "$tmp/bench_smooth.json" ] || exit 0
 scripts/publish_results.sh "$tmp/bench_smooth.json"

@@ -404,8 +404,10 @@ def run(args):
     print(f"NEW: {describe(new)}")
     for note in notes:
         print(f"warning: {note}")
-    print(f"metric: {args.metric} ({direction}); limits: per benchmark {limit_text(args.per_benchmark_threshold)}, "
-          f"geomean {limit_text(args.geomean_threshold)}")
+    # The loader turns every time_unit into ms; counters keep their own units.
+    unit = ", in ms" if args.metric in ("real_time", "cpu_time") else ""
+    print(f"metric: {args.metric} ({direction}{unit}); limits: per benchmark "
+          f"{limit_text(args.per_benchmark_threshold)}, geomean {limit_text(args.geomean_threshold)}")
     print()
     print_table(comparison, args)
     if args.csv:

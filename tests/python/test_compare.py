@@ -404,6 +404,12 @@ class OutputTests(unittest.TestCase):
             self.assertAlmostEqual(float(by_name[name]["ratio_new_over_old"]), factor, places=6)
         self.assertIn("geomean", by_name)
 
+    def test_times_are_said_to_be_in_ms(self):
+        # The fixture's "us" entries are shown in ms like the rest.
+        self.assertIn("metric: real_time (lower is better, in ms)", compare(CLEAN_BASE, CLEAN_BASE).stdout)
+        self.assertIn("metric: bytes_per_s (higher is better);",
+                      compare(CLEAN_BASE, CLEAN_BASE, "--metric", "bytes_per_s").stdout)
+
     def test_csv_that_cannot_be_written_is_bad_input(self):
         with tempfile.TemporaryDirectory() as folder:
             nowhere = os.path.join(folder, "no-such-folder", "cmp.csv")

@@ -430,7 +430,13 @@ def run(args):
 def main(argv=None):
     try:
         args = parse_args(argv)
-        return run(args)
+        try:
+            return run(args)
+        except BrokenPipeError:
+            # The reader stopped early (| head): finish the check unheard, so
+            # that the exit status is still its verdict, not a traceback's 1.
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            return run(args)
     except (bj.BenchInputError, UsageError) as error:
         print(f"compare_results: {error}", file=sys.stderr)
         return 2

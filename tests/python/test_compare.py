@@ -404,6 +404,20 @@ class OutputTests(unittest.TestCase):
             self.assertAlmostEqual(float(by_name[name]["ratio_new_over_old"]), factor, places=6)
         self.assertIn("geomean", by_name)
 
+    def test_a_reader_that_stops_early_keeps_the_verdict(self):
+        # "compare_results.py ... | head": with the pipe's read end closed
+        # before the first line, every print fails; the status must still
+        # say regression (1) or not (0), without a traceback.
+        for new, verdict in ((CLEAN_SLOWER, 1), (CLEAN_BASE, 0)):
+            process = subprocess.Popen([sys.executable, os.path.join(PLOTS, "compare_results.py"), CLEAN_BASE, new],
+                                       stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+            process.stdout.close()
+            stderr = process.stderr.read()
+            process.stderr.close()
+            self.assertEqual(process.wait(timeout=120), verdict, stderr)
+            self.assertNotIn("Traceback", stderr)
+            self.assertNotIn("BrokenPipeError", stderr)
+
     def test_times_are_said_to_be_in_ms(self):
         # The fixture's "us" entries are shown in ms like the rest.
         self.assertIn("metric: real_time (lower is better, in ms)", compare(CLEAN_BASE, CLEAN_BASE).stdout)

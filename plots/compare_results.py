@@ -395,7 +395,11 @@ def run(args):
     comparison = compare(old, new, args.metric, args.filter)
     if not comparison.rows and not comparison.errored_new and not comparison.lost:
         # Nothing measured in common and nothing broken in NEW: the wrong file, filter or metric.
-        raise bj.BenchInputError(f"no benchmark with a positive {args.metric} in both {args.old} and {args.new}")
+        # Say when it is the filter that left nothing: on a host without a GPU, the noise filter of the
+        # docstring keeps no benchmark at all.
+        kept = "" if args.filter is None else (
+            f" that --filter {args.filter.pattern!r} keeps ({len(compare(old, new, args.metric).rows)} without it)")
+        raise bj.BenchInputError(f"no benchmark with a positive {args.metric} in both {args.old} and {args.new}{kept}")
     notes = check_precision(old, new, comparison, args) + machine_warnings(old, new)
     if args.gbench:
         gbench_report(args.old, args.new)

@@ -385,7 +385,9 @@ class BadInputTests(unittest.TestCase):
                     self.assertNotIn("Traceback", completed.stderr)
 
     def test_nothing_in_common_and_bad_options(self):
-        self.assertEqual(compare(BASE, SLOWER, "--filter", "^NoSuchFamily").returncode, 2)
+        completed = compare(CLEAN_BASE, CLEAN_SLOWER, "--filter", "^NoSuchFamily")
+        self.assertEqual(completed.returncode, 2)
+        self.assertRegex(completed.stderr, r"that --filter '\^NoSuchFamily' keeps \(\d+ without it\)")
         self.assertEqual(compare(BASE, SLOWER, "--filter", "(").returncode, 2)
         self.assertEqual(compare(BASE, SLOWER, "--threshold", "-1").returncode, 2)
         self.assertEqual(compare(BASE).returncode, 2)

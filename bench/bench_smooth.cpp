@@ -2,17 +2,17 @@
 // Our own flags (bench/bench_flags.hpp, listed by --help) come out of argv
 // first; Google Benchmark parses the rest.
 #include <benchmark/benchmark.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
-#include <unistd.h>
 
 #include "bench/bench_flags.hpp"
-#include "bench/git_sha.hpp"
-#include "bench/command_line.hpp"
 #include "bench/bench_registry.hpp"
+#include "bench/command_line.hpp"
+#include "bench/git_sha.hpp"
 #include "mesh/errors.hpp"
 
 int main(int argc, char** argv) {

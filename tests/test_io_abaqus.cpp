@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "abaqus_text.hpp"
 #include "input_error.hpp"
 #include "mesh/errors.hpp"
 #include "mesh/io/abaqus_element_types.hpp"
@@ -23,20 +24,9 @@
 namespace tetsmooth {
 namespace {
 
-TetMesh read_text(const std::string& text, const std::string& source = "t.inp") {
-  std::istringstream in(text);
-  return read_abaqus(in, source);
-}
-
-std::string write_text(const TetMesh& mesh) {
-  std::ostringstream out;
-  write_abaqus(mesh, out);
-  return out.str();
-}
-
-std::string read_error(const std::string& text) {
-  return testing::input_error_message([&] { read_text(text); }, "read_abaqus:\n" + text);
-}
+using testing::abaqus_read_error;
+using testing::read_abaqus_text;
+using testing::write_abaqus_text;
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const std::size_t at = text.find(from);
@@ -80,7 +70,7 @@ const std::string kDeck =
     "*End Step\n";
 
 TEST(AbaqusIo, ReadsNodesElementsSectionsAndPins) {
-  const TetMesh mesh = read_text(kDeck);
+  const TetMesh mesh = read_abaqus_text(kDeck);
   EXPECT_EQ(mesh.xyz, (std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1, 0.3, 0.3, 0}));
   EXPECT_EQ(mesh.tets, (std::vector<index_t>{0, 1, 2, 3, 1, 2, 3, 4}));
   EXPECT_TRUE(mesh.midsides.empty());
@@ -124,36 +114,36 @@ TEST(AbaqusIo, ReadsADeckGmshWrote) {
 }
 
 TEST(AbaqusIo, WritesTheDeckBackWithOnlyItsCoordinatesChanged) {
-  TetMesh mesh = read_text(kDeck);
+  TetMesh mesh = read_abaqus_text(kDeck);
   mesh.xyz[3 * 3 + 2] = 0.875;  // node 4
   std::string expected = replaced(kDeck, "4, 0, 0, 1\n", "4, 0, 0, 0.875\n");
   expected = replaced(expected, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n");
   expected = replaced(expected, "6, 0.3, 0.3\n", "6, 0.3, 0.3, 0\n");
-  EXPECT_EQ(write_text(mesh), expected);
+  EXPECT_EQ(write_abaqus_text(mesh), expected);
 }
 
 TEST(AbaqusIo, CommentsAmongNodeLinesStayInPlace) {
   const std::string deck = replaced(kDeck, "3, 0, 1, 0\n", "3, 0, 1, 0\n** the top\n\n");
-  EXPECT_EQ(write_text(read_text(deck)), replaced(replaced(deck, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n"),
+  EXPECT_EQ(write_abaqus_text(read_abaqus_text(deck)), replaced(replaced(deck, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n"),
                                                   "6, 0.3, 0.3\n", "6, 0.3, 0.3, 0\n"));
 }
 
 TEST(AbaqusIo, ADeckIsWrittenOnlyForTheMeshItWasReadWith) {
-  TetMesh mesh = read_text(kDeck);
+  TetMesh mesh = read_abaqus_text(kDeck);
   mesh.tets.resize(4);
   mesh.extras.tet_tags.resize(1);
   mesh.extras.tet_element_tags.resize(1);
   try {
-    write_text(mesh);
+    write_abaqus_text(mesh);
     FAIL() << "a deck of two tets written for one";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("lists (nodes, tets) 6 2, and the mesh has 6 1"), std::string::npos)
         << e.what();
   }
-  TetMesh unnumbered = read_text(kDeck);
+  TetMesh unnumbered = read_abaqus_text(kDeck);
   unnumbered.extras.node_tags.clear();
   try {
-    write_text(unnumbered);
+    write_abaqus_text(unnumbered);
     FAIL() << "a deck written without its node numbers";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find("and the mesh has 6 2 without their numbers"), std::string::npos) << e.what();
@@ -165,12 +155,12 @@ TEST(AbaqusIo, RegionsWithoutSectionsComeFromTheElementLinesSets) {
       "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n"
       "*ELEMENT, TYPE=C3D4, ELSET=Volume7\n1, 1, 2, 3, 4\n"
       "*ELEMENT, TYPE=C3D4, ELSET=Volume3\n2, 2, 3, 4, 5\n";
-  EXPECT_EQ(read_text(two_sets).extras.tet_tags, (std::vector<int>{7, 3}));
+  EXPECT_EQ(read_abaqus_text(two_sets).extras.tet_tags, (std::vector<int>{7, 3}));
   // Names without distinct trailing numbers are numbered in the order met.
-  EXPECT_EQ(read_text(replaced(two_sets, "Volume3", "Set-7")).extras.tet_tags, (std::vector<int>{1, 2}));
-  EXPECT_EQ(read_text(replaced(two_sets, "Volume3", "Soil")).extras.tet_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(read_abaqus_text(replaced(two_sets, "Volume3", "Set-7")).extras.tet_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(read_abaqus_text(replaced(two_sets, "Volume3", "Soil")).extras.tet_tags, (std::vector<int>{1, 2}));
   // No set at all: no regions.
-  EXPECT_TRUE(read_text(replaced(replaced(two_sets, ", ELSET=Volume7", ""), ", ELSET=Volume3", ""))
+  EXPECT_TRUE(read_abaqus_text(replaced(replaced(two_sets, ", ELSET=Volume7", ""), ", ELSET=Volume3", ""))
                   .extras.tet_tags.empty());
 }
 
@@ -183,15 +173,15 @@ TEST(AbaqusIo, NodeSetsAndElementSetsPinThroughBoundaryAndLoads) {
       "*NSET, NSET=FromElements, ELSET=Second\n"
       "*ELSET, ELSET=Second\n2\n"
       "*STEP\n*STATIC\n*CLOAD\nLoaded, 1, 10.\n*END STEP\n";
-  EXPECT_EQ(read_text(deck).fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
-  EXPECT_EQ(read_text(replaced(deck, "Loaded, 1", "FromElements, 1")).fixed,
+  EXPECT_EQ(read_abaqus_text(deck).fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
+  EXPECT_EQ(read_abaqus_text(replaced(deck, "Loaded, 1", "FromElements, 1")).fixed,
             (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0, 0}));
-  EXPECT_EQ(read_text(replaced(deck, "Loaded, 1", "corner, 1")).fixed,
+  EXPECT_EQ(read_abaqus_text(replaced(deck, "Loaded, 1", "corner, 1")).fixed,
             (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0, 0}));
   // The set the writer leaves for pins.
-  EXPECT_EQ(read_text(replaced(deck, "NSET=Inner", "NSET=tetsmooth_pinned") + "*NSET, NSET=Inner\n7\n").fixed,
+  EXPECT_EQ(read_abaqus_text(replaced(deck, "NSET=Inner", "NSET=tetsmooth_pinned") + "*NSET, NSET=Inner\n7\n").fixed,
             (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
-  EXPECT_TRUE(read_text(replaced(deck, "*CLOAD\nLoaded, 1, 10.\n", "")).fixed.empty());
+  EXPECT_TRUE(read_abaqus_text(replaced(deck, "*CLOAD\nLoaded, 1, 10.\n", "")).fixed.empty());
 }
 
 TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
@@ -204,7 +194,7 @@ TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
   mesh.fixed.assign(mesh.num_nodes(), 0);
   mesh.fixed[21] = 1;  // an interior node that no element pins
   for (index_t n : lines.connectivity) mesh.fixed[static_cast<std::size_t>(n)] = 1;
-  const std::string text = write_text(mesh);
+  const std::string text = write_abaqus_text(mesh);
   EXPECT_NE(text.find("*ELEMENT, TYPE=C3D4, ELSET=REGION_M2\n1, "), std::string::npos) << text;
   EXPECT_NE(text.find("*ELEMENT, TYPE=C3D4, ELSET=REGION_4\n"), std::string::npos);
   // A 3-node line is written end, middle, end.
@@ -212,7 +202,7 @@ TEST(AbaqusIo, ANewDeckReadsBackAsWritten) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("*NSET, NSET=TETSMOOTH_PINNED\n142\n"), std::string::npos) << text;
-  const TetMesh back = read_text(text);
+  const TetMesh back = read_abaqus_text(text);
   EXPECT_EQ(back.xyz, mesh.xyz);
   EXPECT_EQ(back.tets, mesh.tets);
   EXPECT_EQ(back.extras.node_tags, mesh.extras.node_tags);
@@ -238,7 +228,7 @@ TEST(AbaqusIo, ANewDeckNamesTheElementSetsAfterTheRegionsWhereAbaqusTakesTheName
                                         "9\n3 1 \"granite\"\n3 2 \"soft clay\"\n3 3 \"Rock\"\n3 4 \"ROCK\"\n3 5 \"\"\n"
                                         "3 6 \"" +
                                             long_name + "\"\n3 7 \"region_8\"\n2 5 \"Top_2\"\n2 6 \"rock\"\n");
-  const std::string text = write_text(mesh);
+  const std::string text = write_abaqus_text(mesh);
   EXPECT_NE(text.find("*ELEMENT, TYPE=C3D4, ELSET=granite\n1, "), std::string::npos) << text;
   // Quotes would be needed, the same in another case, no name, over 80
   // characters, another region's set (tag 8's REGION_8): named by tag.
@@ -252,7 +242,7 @@ TEST(AbaqusIo, ANewDeckNamesTheElementSetsAfterTheRegionsWhereAbaqusTakesTheName
             (std::vector<std::string>{"rock", "soft clay", "Rock", "ROCK", long_name, "region_8"}));
   // Read back, the sets name the regions (tags by order, as the names have
   // no numbers of their own to give).
-  const TetMesh back = read_text(text);
+  const TetMesh back = read_abaqus_text(text);
   const std::map<int, std::string> names = physical_names_of(*raw_section(back.extras, "$PhysicalNames"), 3);
   ASSERT_EQ(back.extras.tet_tags.size(), tets);
   EXPECT_EQ(names.at(back.extras.tet_tags[0]), "granite");
@@ -273,14 +263,14 @@ TEST(AbaqusIo, ANewDeckNamesTheElementSetsAfterTheRegionsWhereAbaqusTakesTheName
                 "another's in any case");
   mesh.extras.raw_sections.back().second = "2\n3 1 \"granite\"\n3 8 \"Rest_of_it\"\n";
   EXPECT_EQ(output_losses(mesh, "out.inp").size(), 1u);  // the tags alone
-  EXPECT_NE(write_text(mesh).find("*ELEMENT, TYPE=C3D4, ELSET=Rest_of_it\n"), std::string::npos);
+  EXPECT_NE(write_abaqus_text(mesh).find("*ELEMENT, TYPE=C3D4, ELSET=Rest_of_it\n"), std::string::npos);
   // Names that end in their own tags, apart from every other set's number,
   // give the tags back: nothing is lost.
   mesh.extras.blocks.clear();
   mesh.extras.raw_sections.back().second = "2\n3 1 \"Layer_1\"\n3 8 \"Layer_8\"\n";
   EXPECT_TRUE(abaqus_tags_read_back(mesh));
   EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
-  EXPECT_EQ(read_text(write_text(mesh)).extras.tet_tags, mesh.extras.tet_tags);
+  EXPECT_EQ(read_abaqus_text(write_abaqus_text(mesh)).extras.tet_tags, mesh.extras.tet_tags);
   // Numbers that are other regions' tags come back swapped: said so.
   mesh.extras.raw_sections.back().second = "2\n3 1 \"Part8\"\n3 8 \"Part1\"\n";
   EXPECT_FALSE(abaqus_tags_read_back(mesh));
@@ -295,15 +285,15 @@ TEST(AbaqusIo, ANewDeckListsManyPinsSixteenALineAndRenumbersWhatItCannotKeep) {
       mesh.fixed[i] = 1;
       pinned.push_back(std::to_string(i + 1));
     }
-  const std::string text = write_text(mesh);
+  const std::string text = write_abaqus_text(mesh);
   std::string lines = "*NSET, NSET=TETSMOOTH_PINNED\n";
   for (std::size_t k = 0; k < pinned.size(); ++k) lines += pinned[k] + (k + 1 == pinned.size() ? "\n" : k % 16 == 15 ? "\n" : ", ");
   EXPECT_NE(text.find(lines), std::string::npos) << text.substr(text.find("*NSET"));
-  EXPECT_EQ(read_text(text).fixed, mesh.fixed);
+  EXPECT_EQ(read_abaqus_text(text).fixed, mesh.fixed);
   EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
   // A node number 0 cannot be kept: every node is numbered by position.
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags.push_back(static_cast<long long>(i) * 5);
-  EXPECT_EQ(read_text(write_text(mesh)).extras.node_tags.back(), static_cast<long long>(mesh.num_nodes()));
+  EXPECT_EQ(read_abaqus_text(write_abaqus_text(mesh)).extras.node_tags.back(), static_cast<long long>(mesh.num_nodes()));
   const std::vector<std::string> notes = output_losses(mesh, "out.inp");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_EQ(notes[0], "the node numbers of the file cannot all be kept (each must be positive and distinct): abaqus "
@@ -312,9 +302,9 @@ TEST(AbaqusIo, ANewDeckListsManyPinsSixteenALineAndRenumbersWhatItCannotKeep) {
 
 TEST(AbaqusIo, SecondOrderTetsListTheirMidsideNodesInEdgeOrder) {
   const TetMesh mesh = testing::with_midsides(testing::cube_grid(2, 0.1));
-  const std::string text = write_text(mesh);
+  const std::string text = write_abaqus_text(mesh);
   ASSERT_NE(text.find("*ELEMENT, TYPE=C3D10\n"), std::string::npos);
-  const TetMesh back = read_text(text);
+  const TetMesh back = read_abaqus_text(text);
   EXPECT_EQ(back.tets, mesh.tets);
   EXPECT_EQ(back.midsides, mesh.midsides);
   EXPECT_EQ(back.xyz, mesh.xyz);
@@ -323,7 +313,7 @@ TEST(AbaqusIo, SecondOrderTetsListTheirMidsideNodesInEdgeOrder) {
   const std::string ten =
       "*NODE\n1,0,0,0\n2,2,0,0\n3,0,2,0\n4,0,0,2\n5,1,0,0\n6,1,1,0\n7,0,1,0\n8,0,0,1\n9,1,0,1\n10,0,1,1\n"
       "*ELEMENT, TYPE=C3D10MH\n1, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10\n";
-  EXPECT_EQ(read_text(ten).midsides, (std::vector<index_t>{4, 5, 6, 7, 8, 9}));
+  EXPECT_EQ(read_abaqus_text(ten).midsides, (std::vector<index_t>{4, 5, 6, 7, 8, 9}));
 }
 
 TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
@@ -338,7 +328,7 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   }
   const TetMesh mesh = read_abaqus_file(dir.file("job.inp"));
   EXPECT_EQ(mesh.num_nodes(), 4u);
-  EXPECT_EQ(write_text(mesh), "*HEADING\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+  EXPECT_EQ(write_abaqus_text(mesh), "*HEADING\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
                               "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*STEP\n");
   const std::vector<std::string> notes = output_losses(mesh, "out.inp");
   ASSERT_EQ(notes.size(), 1u);
@@ -394,14 +384,14 @@ TEST(AbaqusIo, ShortenedKeywordsAndParametersAndQuotedNames) {
   deck = replaced(deck, "*Elset, elset=Upper, generate", "*ELSET, ELSET=Upper, GEN");
   deck = replaced(deck, "*Solid Section, elset=Upper", "*Solid Sec, elset=Upper");
   deck = replaced(deck, "*Boundary\n6, 1, 3\n", "*BOUND\n\"Free, node\", 1, 3\n*NSET, NSET=\"Free, node\"\n6\n");
-  const TetMesh mesh = read_text(deck);
+  const TetMesh mesh = read_abaqus_text(deck);
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2, 1}));
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 1}));
   // A quoted name keeps its spaces and commas; an unquoted one loses its spaces.
-  EXPECT_NE(read_error(replaced(deck, "NSET=\"Free, node\"", "NSET=Freenode")).find("no node set FREE, NODE is defined"),
+  EXPECT_NE(abaqus_read_error(replaced(deck, "NSET=\"Free, node\"", "NSET=Freenode")).find("no node set FREE, NODE is defined"),
             std::string::npos);
   // A prefix of two keywords the reader knows is no abbreviation of either.
-  EXPECT_NE(read_error(replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*EL, type=C3D4"))
+  EXPECT_NE(abaqus_read_error(replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*EL, type=C3D4"))
                 .find("t.inp:11: keyword line: the keyword EL could be short for ELEMENT, ELSET, ELGEN or ELCOPY"),
             std::string::npos);
 }
@@ -410,10 +400,10 @@ TEST(AbaqusIo, EquationsAndMultiPointConstraintsPinTheirNodes) {
   const std::string base =
       "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,0.4,0.4,0.4\n7,0.3,0.3,0.3\n"
       "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n*NSET, NSET=Six\n6\n";
-  EXPECT_EQ(read_text(base + "*EQUATION\n2\n7, 1, 1.0, Six, 1, -1.0\n").fixed,
+  EXPECT_EQ(read_abaqus_text(base + "*EQUATION\n2\n7, 1, 1.0, Six, 1, -1.0\n").fixed,
             (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 1}));
-  EXPECT_EQ(read_text(base + "*MPC\nBEAM, 7, 0, 1\n").fixed, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0, 1}));
-  EXPECT_EQ(read_text(base + "*CFLOW\nSix, , 2.5\n").fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0}));
+  EXPECT_EQ(read_abaqus_text(base + "*MPC\nBEAM, 7, 0, 1\n").fixed, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0, 1}));
+  EXPECT_EQ(read_abaqus_text(base + "*CFLOW\nSix, , 2.5\n").fixed, (std::vector<std::uint8_t>{0, 0, 0, 0, 0, 1, 0}));
 }
 
 TEST(AbaqusIo, RegionsFromElementSetsAloneWhereTheDeckHasNothingElse) {
@@ -424,7 +414,7 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneWhereTheDeckHasNothingElse) {
       "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n3, 6, 1, 3, 2\n"
       "*ELEMENT, TYPE=COH3D6\n4, 1, 2, 3, 1, 2, 3\n"
       "*ELSET, ELSET=All\n1, 2, 3, 4\n*ELSET, ELSET=Rock\n2\n*ELSET, ELSET=Soil\n1, 3\n";
-  const TetMesh mesh = read_text(deck);
+  const TetMesh mesh = read_abaqus_text(deck);
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{1, 2, 1}));
   ASSERT_EQ(mesh.extras.blocks.size(), 1u);
   EXPECT_EQ(mesh.extras.blocks[0].kind, "wedge");
@@ -436,7 +426,7 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneTakeTheNamesOfTheSetsThatHoldThem) {
   // none, stays unnamed. All holds both regions and names neither.
   const std::string nodes = "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,-1,-1,-1\n";
   const std::string tets = "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n3, 6, 1, 3, 2\n";
-  const TetMesh named = read_text(nodes + tets +
+  const TetMesh named = read_abaqus_text(nodes + tets +
                                   "*ELSET, ELSET=All\n1, 2, 3\n*ELSET, ELSET=\"Hard rock\"\n2\n"
                                   "*ELSET, ELSET=granite, GENERATE\n1, 3, 2\n*ELSET, ELSET=AlsoGranite\n3, 1, 1\n");
   EXPECT_EQ(named.extras.tet_tags, (std::vector<int>{1, 2, 1}));
@@ -444,14 +434,14 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneTakeTheNamesOfTheSetsThatHoldThem) {
   EXPECT_EQ(*raw_section(named.extras, "$PhysicalNames"), "2\n3 2 \"Hard rock\"\n3 1 \"granite\"\n");
   // Tet 1 in A and B, tet 2 in B, tet 3 in none: no set holds tet 1 alone.
   const TetMesh unnamed =
-      read_text(nodes + tets + "*ELSET, ELSET=A\n1\n*ELSET, ELSET=B\n1, 2\n*ELSET, ELSET=C\n2, 3\n");
+      read_abaqus_text(nodes + tets + "*ELSET, ELSET=A\n1\n*ELSET, ELSET=B\n1, 2\n*ELSET, ELSET=C\n2, 3\n");
   EXPECT_EQ(unnamed.extras.tet_tags, (std::vector<int>{1, 2, 3}));
   EXPECT_EQ(*raw_section(unnamed.extras, "$PhysicalNames"), "1\n3 1 \"A\"\n");
-  const TetMesh none = read_text(nodes + tets + "*ELSET, ELSET=A\n1, 2\n*ELSET, ELSET=B\n2, 3\n");
+  const TetMesh none = read_abaqus_text(nodes + tets + "*ELSET, ELSET=A\n1, 2\n*ELSET, ELSET=B\n2, 3\n");
   EXPECT_EQ(none.extras.tet_tags, (std::vector<int>{1, 2, 3}));
   EXPECT_EQ(raw_section(none.extras, "$PhysicalNames"), nullptr);
   // The engineer's deck, in meshio's layout: the names reach MSH.
-  const TetMesh meshio_layout = read_text(nodes +
+  const TetMesh meshio_layout = read_abaqus_text(nodes +
                                           "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=C3D4\n2, 2, 3, 4, 5\n"
                                           "*ELSET, ELSET=granite\n1\n*ELSET, ELSET=clay\n2\n");
   EXPECT_EQ(*raw_section(meshio_layout.extras, "$PhysicalNames"), "2\n3 1 \"granite\"\n3 2 \"clay\"\n");
@@ -462,33 +452,33 @@ TEST(AbaqusIo, SetsByStepsByElementSetsAndSectionsThatOverlap) {
       "*NODE, SYSTEM=R\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,0.4,0.4,0.4\n7,0.3,0.3,0.3\n8,0.2,0.2,0.2\n"
       "9,0.1,0.1,0.1\n*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n";
   // GENERATE with a step of 3: nodes 2, 5 and 8.
-  EXPECT_EQ(read_text(base + "*NSET, NSET=S, GENERATE\n2, 8, 3\n*BOUNDARY\nS, 1\n").fixed,
+  EXPECT_EQ(read_abaqus_text(base + "*NSET, NSET=S, GENERATE\n2, 8, 3\n*BOUNDARY\nS, 1\n").fixed,
             (std::vector<std::uint8_t>{0, 1, 0, 0, 1, 0, 0, 1, 0}));
   // *NSET, ELSET: the data lines name element sets.
-  EXPECT_EQ(read_text(base + "*ELSET, ELSET=Second\n2\n*NSET, NSET=N, ELSET\nSecond\n*BOUNDARY\nN, 1\n").fixed,
+  EXPECT_EQ(read_abaqus_text(base + "*ELSET, ELSET=Second\n2\n*NSET, NSET=N, ELSET\nSecond\n*BOUNDARY\nN, 1\n").fixed,
             (std::vector<std::uint8_t>{0, 1, 1, 1, 1, 0, 0, 0, 0}));
   // A tet in two sections (Abaqus would refuse it) takes the first.
   const std::string sections = "*ELSET, ELSET=A\n1, 2\n*ELSET, ELSET=B\n2\n";
-  EXPECT_EQ(read_text(base + sections + "*SOLID SECTION, ELSET=B\n*SOLID SECTION, ELSET=A\n").extras.tet_tags,
+  EXPECT_EQ(read_abaqus_text(base + sections + "*SOLID SECTION, ELSET=B\n*SOLID SECTION, ELSET=A\n").extras.tet_tags,
             (std::vector<int>{2, 1}));
   // Regions from element sets alone, however many: sets that hold both
   // tets, or one each, keep them apart; those that hold one, together.
   std::string many = base;
   for (int s = 0; s < 300; ++s)
     many += "*ELSET, ELSET=E" + std::to_string(s) + "\n" + (s % 3 == 0 ? "1, 2" : std::to_string(1 + s % 2)) + "\n";
-  EXPECT_EQ(read_text(many).extras.tet_tags, (std::vector<int>{1, 2}));
-  EXPECT_EQ(read_text(base + "*ELSET, ELSET=All\n1, 2\n*ELSET, ELSET=Again\n2, 1\n").extras.tet_tags,
+  EXPECT_EQ(read_abaqus_text(many).extras.tet_tags, (std::vector<int>{1, 2}));
+  EXPECT_EQ(read_abaqus_text(base + "*ELSET, ELSET=All\n1, 2\n*ELSET, ELSET=Again\n2, 1\n").extras.tet_tags,
             (std::vector<int>{1, 1}));
   // A set numbered 0 is no tag of its own: 0 is that of tets without a set.
   const std::string zero =
       "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n*ELEMENT, TYPE=C3D4, ELSET=Volume0\n1, 1, 2, 3, 4\n"
       "*ELEMENT, TYPE=C3D4\n2, 2, 3, 4, 5\n";
-  EXPECT_EQ(read_text(zero).extras.tet_tags, (std::vector<int>{1, 0}));
+  EXPECT_EQ(read_abaqus_text(zero).extras.tet_tags, (std::vector<int>{1, 0}));
 }
 
 TEST(AbaqusIo, EveryRefusedKeywordSaysWhy) {
   for (const char* keyword : {"NGEN", "NFILL", "NCOPY", "NMAP", "SYSTEM", "ELGEN", "ELCOPY"}) {
-    const std::string message = read_error(replaced(kDeck, "*Step\n", "*" + std::string(keyword) + "\n"));
+    const std::string message = abaqus_read_error(replaced(kDeck, "*Step\n", "*" + std::string(keyword) + "\n"));
     EXPECT_NE(message.find("t.inp:28: *" + std::string(keyword) + ": "), std::string::npos) << message;
     EXPECT_NE(message.find(" not read"), std::string::npos) << message;
   }
@@ -532,11 +522,11 @@ TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
       {"6, 1, 3\n", "Lower, 1, 3\n", "t.inp:27: no node set LOWER is defined (LOWER is a set of elements)"},
   };
   for (const auto& c : cases) {
-    const std::string message = read_error(replaced(kDeck, c.from, c.to));
+    const std::string message = abaqus_read_error(replaced(kDeck, c.from, c.to));
     EXPECT_NE(message.find(c.message), std::string::npos) << "expected: " << c.message << "\ngot: " << message;
   }
-  EXPECT_NE(read_error("*HEADING\n*NODE\n1,0,0,0\n").find("t.inp: no tets (C3D4 or C3D10 elements)"), std::string::npos);
-  EXPECT_NE(read_error("*ELSET, ELSET=A\n10\n*ELSET, ELSET=B\nA\n*ELSET, ELSET=A\nB\n" + kDeck.substr(9) +
+  EXPECT_NE(abaqus_read_error("*HEADING\n*NODE\n1,0,0,0\n").find("t.inp: no tets (C3D4 or C3D10 elements)"), std::string::npos);
+  EXPECT_NE(abaqus_read_error("*ELSET, ELSET=A\n10\n*ELSET, ELSET=B\nA\n*ELSET, ELSET=A\nB\n" + kDeck.substr(9) +
                        "*SOLID SECTION, ELSET=A\n")
                 .find("element set A contains itself"),
             std::string::npos);
@@ -579,7 +569,7 @@ TEST(AbaqusIo, FormatByNameAndWhatOtherFormatsLose) {
   EXPECT_EQ(format_from_path("model.INP"), MeshFormat::Abaqus);
   EXPECT_EQ(parse_format("inp"), MeshFormat::Abaqus);
   EXPECT_STREQ(format_name(MeshFormat::Abaqus), "abaqus");
-  const TetMesh mesh = read_text(kDeck);
+  const TetMesh mesh = read_abaqus_text(kDeck);
   EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
   const std::vector<std::string> to_vtu = output_losses(mesh, "out.vtu");
   ASSERT_EQ(to_vtu.size(), 3u);

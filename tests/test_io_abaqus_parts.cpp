@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "input_error.hpp"
+#include "abaqus_text.hpp"
 #include "kernels/smoother.hpp"
 #include "mesh/io/abaqus_io.hpp"
 #include "mesh/io/number_text.hpp"
@@ -22,20 +22,9 @@
 namespace tetsmooth {
 namespace {
 
-TetMesh read_text(const std::string& text) {
-  std::istringstream in(text);
-  return read_abaqus(in, "t.inp");
-}
-
-std::string write_text(const TetMesh& mesh) {
-  std::ostringstream out;
-  write_abaqus(mesh, out);
-  return out.str();
-}
-
-std::string read_error(const std::string& text) {
-  return testing::input_error_message([&] { read_text(text); }, "read_abaqus:\n" + text);
-}
+using testing::abaqus_read_error;
+using testing::read_abaqus_text;
+using testing::write_abaqus_text;
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
@@ -105,7 +94,7 @@ std::vector<std::size_t> moved(const TetMesh& before, const TetMesh& after) {
 }
 
 TEST(AbaqusParts, InstancesArePlacedAndSmoothAsTheFlatDeck) {
-  const TetMesh parts = read_text(parts_deck());
+  const TetMesh parts = read_abaqus_text(parts_deck());
   ASSERT_EQ(parts.num_nodes(), kSoil.num_nodes() + kPile.num_nodes());
   ASSERT_EQ(parts.num_tets(), kSoil.num_tets() + kPile.num_tets());
   // Soil stays where its part is, bit for bit (no placement); Pile is
@@ -119,7 +108,7 @@ TEST(AbaqusParts, InstancesArePlacedAndSmoothAsTheFlatDeck) {
   // Each (part, section) is a region, named after both.
   EXPECT_EQ(parts.extras.tet_tags.front(), 1);
   EXPECT_EQ(parts.extras.tet_tags.back(), 2);
-  EXPECT_NE(write_text(parts).find("*End Assembly"), std::string::npos);
+  EXPECT_NE(write_abaqus_text(parts).find("*End Assembly"), std::string::npos);
 
   // The same bodies as a flat deck, at the assembly's coordinates.
   std::string flat = "*Heading\n*Node\n";
@@ -132,7 +121,7 @@ TEST(AbaqusParts, InstancesArePlacedAndSmoothAsTheFlatDeck) {
     for (int k = 0; k < 4; ++k) flat += ", " + std::to_string(parts.tets[4 * t + static_cast<std::size_t>(k)] + 1);
     flat += "\n";
   }
-  TetMesh flat_mesh = read_text(flat), parts_mesh = parts;
+  TetMesh flat_mesh = read_abaqus_text(flat), parts_mesh = parts;
   ASSERT_EQ(flat_mesh.tets, parts_mesh.tets);
   smooth(flat_mesh, serial(), Device::Cpu);
   smooth(parts_mesh, serial(), Device::Cpu);
@@ -142,12 +131,12 @@ TEST(AbaqusParts, InstancesArePlacedAndSmoothAsTheFlatDeck) {
 
 TEST(AbaqusParts, WrittenBackWithOnlyMovedNodesInPartCoordinates) {
   const std::string deck = parts_deck();
-  const TetMesh read = read_text(deck);
+  const TetMesh read = read_abaqus_text(deck);
   TetMesh smoothed = read;
   smooth(smoothed, serial(), Device::Cpu);
   const std::vector<std::size_t> nodes = moved(read, smoothed);
   ASSERT_FALSE(nodes.empty());
-  const std::vector<std::string> in = lines_of(deck), out = lines_of(write_text(smoothed));
+  const std::vector<std::string> in = lines_of(deck), out = lines_of(write_abaqus_text(smoothed));
   ASSERT_EQ(in.size(), out.size());
   // Node i's line: the heading and part header (4 lines) before Soil's
   // nodes; Soil's elements, section and part lines, and Pile's header
@@ -175,12 +164,12 @@ TEST(AbaqusParts, WrittenBackWithOnlyMovedNodesInPartCoordinates) {
   }
   EXPECT_EQ(changed, expected);
   // Read again, the deck gives the smoothed positions.
-  const TetMesh again = read_text(write_text(smoothed));
+  const TetMesh again = read_abaqus_text(write_abaqus_text(smoothed));
   for (std::size_t k = 0; k < again.xyz.size(); ++k) EXPECT_NEAR(again.xyz[k], smoothed.xyz[k], 1e-12);
 }
 
 TEST(AbaqusParts, PinsThroughEveryFormOfReference) {
-  TetMesh free_mesh = read_text(parts_deck());
+  TetMesh free_mesh = read_abaqus_text(parts_deck());
   const TetMesh before = free_mesh;
   smooth(free_mesh, serial(), Device::Cpu);
   std::vector<std::size_t> soil, pile;  // moved nodes of each instance, by their part's number
@@ -196,7 +185,7 @@ TEST(AbaqusParts, PinsThroughEveryFormOfReference) {
                                "\n*Nset, nset=Watched, instance=Pile-1\n" + n(pile[3]) + "\n";
   const std::string model = "*Step\n*Static\n*Boundary\nSoil-1." + n(soil[0]) + ", 1, 3\nPile-1.Head, ENCASTRE\n" +
                             "Anchor, 1\n*Cload\nOuter, 2, 1e3\n*Node Print, nset=Watched\nU\n*End Step\n";
-  TetMesh pinned = read_text(parts_deck(part_sets, assembly, model));
+  TetMesh pinned = read_abaqus_text(parts_deck(part_sets, assembly, model));
   ASSERT_EQ(pinned.fixed.size(), pinned.num_nodes());
   const std::size_t off = kSoil.num_nodes();
   for (std::size_t i : {soil[0] - 1, soil[1] - 1, off + pile[0] - 1, off + pile[1] - 1, off + pile[2] - 1})
@@ -216,17 +205,17 @@ TEST(AbaqusParts, APartWithoutInstanceIsNoBodyAndKeepsItsLines) {
   const std::string spare =
       part_text("Spare", testing::cube_grid(1), "*Element, type=S3, elset=Skin\n7, 1, 2, 3\n*Nset, nset=Corner\n1\n");
   const std::string deck = parts_deck("", "", "", spare);
-  const TetMesh with = read_text(deck), without = read_text(parts_deck());
+  const TetMesh with = read_abaqus_text(deck), without = read_abaqus_text(parts_deck());
   EXPECT_EQ(with.xyz, without.xyz);  // Pile still placed, after the part that left
   EXPECT_EQ(with.tets, without.tets);
   EXPECT_EQ(with.extras.tet_tags, without.extras.tet_tags);
   EXPECT_EQ(with.extras.node_tags, without.extras.node_tags);
   EXPECT_EQ(with.extras.tet_element_tags, without.extras.tet_element_tags);
   EXPECT_TRUE(with.extras.blocks.empty());
-  EXPECT_EQ(write_text(with), deck);  // every line, the part's among them
+  EXPECT_EQ(write_abaqus_text(with), deck);  // every line, the part's among them
   TetMesh smoothed = with;
   smooth(smoothed, serial(), Device::Cpu);
-  const std::string out = write_text(smoothed);
+  const std::string out = write_abaqus_text(smoothed);
   EXPECT_NE(out.find(spare), std::string::npos);
   EXPECT_NE(out, deck);
 }
@@ -236,20 +225,20 @@ TEST(AbaqusParts, ReferencePointsOfTheAssemblyStayAndPin) {
   // set that constraints and boundary conditions name, with its number.
   const std::string deck =
       parts_deck("", "*Node\n1, 9., 9., 9.\n*Nset, nset=RP-1\n 1,\n", "*Boundary\nRP-1, ENCASTRE\n1, 1\n");
-  TetMesh mesh = read_text(deck);
+  TetMesh mesh = read_abaqus_text(deck);
   ASSERT_EQ(mesh.num_nodes(), kSoil.num_nodes() + kPile.num_nodes() + 1);
   EXPECT_EQ(mesh.xyz.back(), 9.0);
   ASSERT_FALSE(mesh.fixed.empty());
   EXPECT_EQ(mesh.fixed.back(), 1);
   smooth(mesh, serial(), Device::Cpu);
-  const std::vector<std::string> in = lines_of(deck), out = lines_of(write_text(mesh));
+  const std::vector<std::string> in = lines_of(deck), out = lines_of(write_abaqus_text(mesh));
   ASSERT_EQ(in.size(), out.size());
   const auto rp = std::find(in.begin(), in.end(), "1, 9., 9., 9.") - in.begin();
   EXPECT_EQ(out[static_cast<std::size_t>(rp)], "1, 9, 9, 9");  // written anew, as every node line
 }
 
 TEST(AbaqusParts, PartsWithTheSameNumbersConvertRenumbered) {
-  const TetMesh mesh = read_text(parts_deck());
+  const TetMesh mesh = read_abaqus_text(parts_deck());
   // Both parts number their nodes and elements 1, 2, ...: kept as the
   // file's (the deck writes them back), but not distinct across the mesh.
   EXPECT_EQ(mesh.extras.node_tags.front(), 1);
@@ -305,17 +294,17 @@ TEST(AbaqusParts, RefusedStructuresNameTheLine) {
       {"*Material", "*Boundary\nPile-1.100000, 1\n*Material", "node Pile-1.100000 is not defined"},
   };
   for (const auto& c : cases) {
-    const std::string message = read_error(replaced(c.from, c.to));
+    const std::string message = abaqus_read_error(replaced(c.from, c.to));
     EXPECT_NE(message.find(c.message), std::string::npos) << "expected: " << c.message << "\ngot: " << message;
   }
   // A part without *END PART, and *NODE outside parts once there are some.
-  EXPECT_NE(read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n").find("t.inp:1: *PART without *END PART"),
+  EXPECT_NE(abaqus_read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n").find("t.inp:1: *PART without *END PART"),
             std::string::npos);
-  EXPECT_NE(read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n*End Part\n").find("t.inp:1: no part has an *INSTANCE"),
+  EXPECT_NE(abaqus_read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n*End Part\n").find("t.inp:1: no part has an *INSTANCE"),
             std::string::npos);
-  EXPECT_NE(read_error(deck + "*Node\n1, 0, 0, 0\n").find("*NODE outside *PART in a deck with parts"),
+  EXPECT_NE(abaqus_read_error(deck + "*Node\n1, 0, 0, 0\n").find("*NODE outside *PART in a deck with parts"),
             std::string::npos);
-  EXPECT_NE(read_error("*Node\n1, 0, 0, 0\n" + deck).find("*PART after nodes outside parts"), std::string::npos);
+  EXPECT_NE(abaqus_read_error("*Node\n1, 0, 0, 0\n" + deck).find("*PART after nodes outside parts"), std::string::npos);
 }
 
 }  // namespace

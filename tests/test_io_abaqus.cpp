@@ -124,8 +124,8 @@ TEST(AbaqusIo, WritesTheDeckBackWithOnlyItsCoordinatesChanged) {
 
 TEST(AbaqusIo, CommentsAmongNodeLinesStayInPlace) {
   const std::string deck = replaced(kDeck, "3, 0, 1, 0\n", "3, 0, 1, 0\n** the top\n\n");
-  EXPECT_EQ(write_abaqus_text(read_abaqus_text(deck)), replaced(replaced(deck, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n"),
-                                                  "6, 0.3, 0.3\n", "6, 0.3, 0.3, 0\n"));
+  EXPECT_EQ(write_abaqus_text(read_abaqus_text(deck)),
+            replaced(replaced(deck, "5, 1.0D0, 1., 1\n", "5, 1, 1, 1\n"), "6, 0.3, 0.3\n", "6, 0.3, 0.3, 0\n"));
 }
 
 TEST(AbaqusIo, ADeckIsWrittenOnlyForTheMeshItWasReadWith) {
@@ -293,7 +293,8 @@ TEST(AbaqusIo, ANewDeckListsManyPinsSixteenALineAndRenumbersWhatItCannotKeep) {
   EXPECT_TRUE(output_losses(mesh, "out.inp").empty());
   // A node number 0 cannot be kept: every node is numbered by position.
   for (std::size_t i = 0; i < mesh.num_nodes(); ++i) mesh.extras.node_tags.push_back(static_cast<long long>(i) * 5);
-  EXPECT_EQ(read_abaqus_text(write_abaqus_text(mesh)).extras.node_tags.back(), static_cast<long long>(mesh.num_nodes()));
+  EXPECT_EQ(read_abaqus_text(write_abaqus_text(mesh)).extras.node_tags.back(),
+            static_cast<long long>(mesh.num_nodes()));
   const std::vector<std::string> notes = output_losses(mesh, "out.inp");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_EQ(notes[0], "the node numbers of the file cannot all be kept (each must be positive and distinct): abaqus "
@@ -328,8 +329,9 @@ TEST(AbaqusIo, IncludedFilesAreReadInPlaceAndWrittenInline) {
   }
   const TetMesh mesh = read_abaqus_file(dir.file("job.inp"));
   EXPECT_EQ(mesh.num_nodes(), 4u);
-  EXPECT_EQ(write_abaqus_text(mesh), "*HEADING\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
-                              "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*STEP\n");
+  EXPECT_EQ(write_abaqus_text(mesh),
+            "*HEADING\n*NODE\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n"
+            "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*STEP\n");
   const std::vector<std::string> notes = output_losses(mesh, "out.inp");
   ASSERT_EQ(notes.size(), 1u);
   EXPECT_EQ(notes[0], "the *INCLUDE files (" + dir.file("mesh/model.inp") + ", " + dir.file("mesh/nodes.inp") +
@@ -388,7 +390,8 @@ TEST(AbaqusIo, ShortenedKeywordsAndParametersAndQuotedNames) {
   EXPECT_EQ(mesh.extras.tet_tags, (std::vector<int>{2, 1}));
   EXPECT_EQ(mesh.fixed, (std::vector<std::uint8_t>{1, 1, 1, 0, 0, 1}));
   // A quoted name keeps its spaces and commas; an unquoted one loses its spaces.
-  EXPECT_NE(abaqus_read_error(replaced(deck, "NSET=\"Free, node\"", "NSET=Freenode")).find("no node set FREE, NODE is defined"),
+  EXPECT_NE(abaqus_read_error(replaced(deck, "NSET=\"Free, node\"", "NSET=Freenode"))
+                .find("no node set FREE, NODE is defined"),
             std::string::npos);
   // A prefix of two keywords the reader knows is no abbreviation of either.
   EXPECT_NE(abaqus_read_error(replaced(kDeck, "*Element, type=C3D4, elset=Lower", "*EL, type=C3D4"))
@@ -426,9 +429,10 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneTakeTheNamesOfTheSetsThatHoldThem) {
   // none, stays unnamed. All holds both regions and names neither.
   const std::string nodes = "*NODE\n1,0,0,0\n2,1,0,0\n3,0,1,0\n4,0,0,1\n5,1,1,1\n6,-1,-1,-1\n";
   const std::string tets = "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n2, 2, 3, 4, 5\n3, 6, 1, 3, 2\n";
-  const TetMesh named = read_abaqus_text(nodes + tets +
-                                  "*ELSET, ELSET=All\n1, 2, 3\n*ELSET, ELSET=\"Hard rock\"\n2\n"
-                                  "*ELSET, ELSET=granite, GENERATE\n1, 3, 2\n*ELSET, ELSET=AlsoGranite\n3, 1, 1\n");
+  const TetMesh named =
+      read_abaqus_text(nodes + tets +
+                       "*ELSET, ELSET=All\n1, 2, 3\n*ELSET, ELSET=\"Hard rock\"\n2\n"
+                       "*ELSET, ELSET=granite, GENERATE\n1, 3, 2\n*ELSET, ELSET=AlsoGranite\n3, 1, 1\n");
   EXPECT_EQ(named.extras.tet_tags, (std::vector<int>{1, 2, 1}));
   ASSERT_NE(raw_section(named.extras, "$PhysicalNames"), nullptr);
   EXPECT_EQ(*raw_section(named.extras, "$PhysicalNames"), "2\n3 2 \"Hard rock\"\n3 1 \"granite\"\n");
@@ -441,9 +445,10 @@ TEST(AbaqusIo, RegionsFromElementSetsAloneTakeTheNamesOfTheSetsThatHoldThem) {
   EXPECT_EQ(none.extras.tet_tags, (std::vector<int>{1, 2, 3}));
   EXPECT_EQ(raw_section(none.extras, "$PhysicalNames"), nullptr);
   // The engineer's deck, in meshio's layout: the names reach MSH.
-  const TetMesh meshio_layout = read_abaqus_text(nodes +
-                                          "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=C3D4\n2, 2, 3, 4, 5\n"
-                                          "*ELSET, ELSET=granite\n1\n*ELSET, ELSET=clay\n2\n");
+  const TetMesh meshio_layout =
+      read_abaqus_text(nodes +
+                       "*ELEMENT, TYPE=C3D4\n1, 1, 2, 3, 4\n*ELEMENT, TYPE=C3D4\n2, 2, 3, 4, 5\n"
+                       "*ELSET, ELSET=granite\n1\n*ELSET, ELSET=clay\n2\n");
   EXPECT_EQ(*raw_section(meshio_layout.extras, "$PhysicalNames"), "2\n3 1 \"granite\"\n3 2 \"clay\"\n");
 }
 
@@ -525,9 +530,10 @@ TEST(AbaqusIo, ErrorsNameTheFileAndLine) {
     const std::string message = abaqus_read_error(replaced(kDeck, c.from, c.to));
     EXPECT_NE(message.find(c.message), std::string::npos) << "expected: " << c.message << "\ngot: " << message;
   }
-  EXPECT_NE(abaqus_read_error("*HEADING\n*NODE\n1,0,0,0\n").find("t.inp: no tets (C3D4 or C3D10 elements)"), std::string::npos);
+  EXPECT_NE(abaqus_read_error("*HEADING\n*NODE\n1,0,0,0\n").find("t.inp: no tets (C3D4 or C3D10 elements)"),
+            std::string::npos);
   EXPECT_NE(abaqus_read_error("*ELSET, ELSET=A\n10\n*ELSET, ELSET=B\nA\n*ELSET, ELSET=A\nB\n" + kDeck.substr(9) +
-                       "*SOLID SECTION, ELSET=A\n")
+                              "*SOLID SECTION, ELSET=A\n")
                 .find("element set A contains itself"),
             std::string::npos);
 }

@@ -300,8 +300,9 @@ TEST(AbaqusParts, RefusedStructuresNameTheLine) {
   // A part without *END PART, and *NODE outside parts once there are some.
   EXPECT_NE(abaqus_read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n").find("t.inp:1: *PART without *END PART"),
             std::string::npos);
-  EXPECT_NE(abaqus_read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n*End Part\n").find("t.inp:1: no part has an *INSTANCE"),
-            std::string::npos);
+  EXPECT_NE(
+      abaqus_read_error("*Part, name=A\n*Node\n1, 0, 0, 0\n*End Part\n").find("t.inp:1: no part has an *INSTANCE"),
+      std::string::npos);
   EXPECT_NE(abaqus_read_error(deck + "*Node\n1, 0, 0, 0\n").find("*NODE outside *PART in a deck with parts"),
             std::string::npos);
   EXPECT_NE(abaqus_read_error("*Node\n1, 0, 0, 0\n" + deck).find("*PART after nodes outside parts"), std::string::npos);

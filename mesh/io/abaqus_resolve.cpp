@@ -173,7 +173,9 @@ void DeckReader::resolve() {
 
 void DeckReader::place_instances() {
   FileExtras& e = mesh_.extras;
-  for (const auto& [section, first] : node_runs_) {
+  for (const auto& [section, run_first] : node_runs_) {
+    // A copy: a lambda may not capture a structured binding in C++17.
+    const std::size_t first = run_first;
     const auto part = std::find_if(parts_.begin(), parts_.end(),
                                    [&](const Part& p) { return p.node_first <= first && first < p.node_end; });
     if (part == parts_.end()) continue;

@@ -54,6 +54,71 @@ seed tetgen_ele "$data"/*.ele
 seed abaqus "$data"/*.inp
 seed nastran "$data"/*.bdf
 seed flac3d "$data"/*.f3grid
+# An Abaqus deck with parts and an assembly, as Abaqus/CAE writes one: two
+# parts of the same numbers, one instance translated and rotated, sets of
+# the parts and of the assembly, a reference point and loads through them.
+cat >"$seeds/abaqus/parts.inp" <<'INP'
+*Heading
+*Part, name=Rock
+*Node
+      1,           0.,           0.,           0.
+      2,           1.,           0.,           0.
+      3,           0.,           1.,           0.
+      4,           0.,           0.,           1.
+      5,          0.3,          0.3,          0.3
+*Element, type=C3D4
+1, 1, 2, 3, 5
+2, 1, 2, 5, 4
+3, 1, 5, 3, 4
+4, 5, 2, 3, 4
+*Nset, nset=Base
+ 1, 2, 3
+*Elset, elset=All, generate
+ 1, 4, 1
+** Section: Rock
+*Solid Section, elset=All, material=Granite
+,
+*End Part
+*Part, name=Pile
+*Node
+      1,           0.,           0.,           0.
+      2,           1.,           0.,           0.
+      3,           0.,           1.,           0.
+      4,           0.,           0.,           1.
+*Element, type=C3D4
+1, 1, 2, 3, 4
+*Elset, elset=Pile
+ 1,
+*Solid Section, elset=Pile, material=Steel
+,
+*End Part
+*Assembly, name=Assembly
+*Instance, name=Rock-1, part=Rock
+*End Instance
+*Instance, name=Pile-1, part=Pile
+          2.,           0.,           0.
+          2.,           0.,           0.,           2.,           0.,           1.,          90.
+*End Instance
+*Node
+      1,           5.,           5.,           5.
+*Nset, nset=Top, instance=Pile-1
+ 4,
+*End Assembly
+*Material, name=Granite
+*Elastic
+ 50000., 0.25
+*Material, name=Steel
+*Elastic
+ 210000., 0.3
+*Step, name=Load
+*Static
+*Boundary
+Rock-1.Base, ENCASTRE
+Rock-1.5, 1, 1
+Top, 3, 3, 0.01
+1, 1, 6
+*End Step
+INP
 # A deck in the three field formats besides Gmsh's small field.
 cat >"$seeds/nastran/fields.bdf" <<'BDF'
 SOL 101
